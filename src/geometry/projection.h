@@ -1,0 +1,27 @@
+#pragma once
+// Exercise 1 of the course: the orthogonal projection P of a point C on the line (AB), by the
+// dot product alone.
+#include "geometry/vec.h"
+
+namespace epure::geo {
+
+// Where P falls relative to the segment [AB].
+enum class Position { before, between, after };
+
+struct Projection {
+  Vec2 AB, AC;
+  double ab_dot_ac;  // AB·AC
+  double ab_dot_ab;  // AB·AB = ‖AB‖²
+  double t;          // AP = t·AB, t = AB·AC / AB·AB
+  Point2 P;          // A + t·AB
+  Position position; // t < 0: before A; 0 ≤ t ≤ 1: between; t > 1: after B
+};
+
+// Throws DegenerateFigure("B") when A and B coincide (no line). A t within rounding of 0 or 1
+// counts as between (P on an end of the segment is on the segment) and is reported as exactly
+// 0 or 1.
+Projection project(Point2 A, Point2 B, Point2 C);
+
+const char* to_string(Position p);
+
+}  // namespace epure::geo

@@ -1,0 +1,25 @@
+#include "geometry/ray_3d.h"
+
+#include "geometry/ray_ball.h"
+#include "geometry/ray_box.h"
+
+namespace epure::geo {
+
+RaySphere intersect(const Ray3& ray, const Sphere& sphere) {
+  return detail::intersect_ball<RaySphere, Hit3>(ray, sphere.C, sphere.r);
+}
+
+RayCube intersect_canonical_cube(const Ray3& ray) {
+  const Point3 A = ray.origin;
+  const Vec3 u = ray.direction;
+  auto box = detail::intersect_box<3>({A.x, A.y, A.z}, {u.x, u.y, u.z});
+  RayCube res{box.faces, box.inside, std::nullopt, box.face};
+  if (box.t) {
+    double n[3] = {0, 0, 0};
+    n[box.face->axis] = box.face->sign;
+    res.hit = Hit3{*box.t, {box.I[0], box.I[1], box.I[2]}, {n[0], n[1], n[2]}};
+  }
+  return res;
+}
+
+}  // namespace epure::geo

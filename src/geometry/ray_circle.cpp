@@ -1,0 +1,15 @@
+#include "geometry/ray_circle.h"
+
+#include "geometry/ray_ball.h"
+
+namespace epure::geo {
+
+const char* to_string(NoHit reason) { return reason == NoHit::behind ? "behind" : "miss"; }
+
+RayCircle intersect(const Ray2& ray, const Circle& circle) {
+  return detail::intersect_ball<RayCircle, Hit2>(ray, circle.C, circle.r);
+}
+
+RayCircle intersect_canonical_circle(const Ray2& ray) { return intersect(ray, Circle{{0, 0}, 1.0}); }
+
+}  // namespace epure::geo

@@ -1,0 +1,44 @@
+#pragma once
+// Exercise 3 of the course: ray/circle by projection and Pythagoras, and its 3D twin ray/sphere
+// (in ray_3d.h). P, the projection of C on the ray's line, is the middle of the chord [IJ]; the
+// triangles CPI and CPJ are right-angled at P, so PI² = r² − CP² (Pythagoras).
+//
+// The early rejections come in the course's order: a ray from outside that points away from the
+// centre (t_proj < 0) is `behind`; then one whose line passes farther than r from C is a `miss`.
+// The square root is taken only for a hit. Unlike the course's code, a ray that starts inside
+// the circle hits it on its way out. A ray starting on the circle is outside: heading in, it
+// hits at t = 0; heading out, it is behind. A tangent line counts as a hit (d² = r²).
+#include <optional>
+
+#include "geometry/ray.h"
+
+namespace epure::geo {
+
+enum class NoHit { behind, miss };
+const char* to_string(NoHit reason);
+
+struct Circle {
+  Point2 C;
+  double r;
+};
+
+struct RayCircle {
+  Vec2 AC;
+  double t_proj;  // parameter of P on the ray: u·AC / u·u (= û·AC for a unit direction)
+  Point2 P;       // the projection of C on the ray's line
+  double d2;      // CP², the squared distance from C to the line
+  bool inside;    // A strictly inside the circle
+  // Exactly one of these is present.
+  std::optional<Hit2> hit;
+  std::optional<NoHit> reason;
+  // PI = √(r² − d²), the third side of the Pythagoras triangle, in units of length: with a hit.
+  std::optional<double> half_chord;
+};
+
+// Throws DegenerateFigure("r") unless r > 0 and ("u") for a zero direction.
+RayCircle intersect(const Ray2& ray, const Circle& circle);
+
+// The course's canonical circle: centre O, radius 1.
+RayCircle intersect_canonical_circle(const Ray2& ray);
+
+}  // namespace epure::geo

@@ -1,0 +1,84 @@
+#pragma once
+// Points and vectors of the plane and of space. Points and vectors are distinct types, as in
+// pbrt: a point minus a point is a vector, a point plus a vector is a point, and a transform
+// moves a point with its translation but a vector without it.
+#include <cmath>
+#include <optional>
+
+#include "geometry/exact.h"
+
+namespace epure::geo {
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+struct Point2 {
+  double x = 0, y = 0;
+};
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+struct Point3 {
+  double x = 0, y = 0, z = 0;
+};
+
+// ---- 2D -------------------------------------------------------------------------------------
+constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+constexpr Vec2 operator*(double k, Vec2 a) { return {k * a.x, k * a.y}; }
+constexpr Vec2 operator*(Vec2 a, double k) { return {k * a.x, k * a.y}; }
+constexpr Vec2 operator/(Vec2 a, double k) { return {a.x / k, a.y / k}; }
+constexpr Vec2 operator-(Point2 b, Point2 a) { return {b.x - a.x, b.y - a.y}; }
+constexpr Point2 operator+(Point2 p, Vec2 v) { return {p.x + v.x, p.y + v.y}; }
+constexpr Point2 operator-(Point2 p, Vec2 v) { return {p.x - v.x, p.y - v.y}; }
+
+// u·v and u∧v = x_u·y_v − y_u·x_v, each rounded once (Kahan's fma trick), so that a nearly
+// perpendicular dot or a nearly parallel cross keeps its sign and its digits.
+inline double dot(Vec2 u, Vec2 v) { return exact::sum_of_products(u.x, v.x, u.y, v.y); }
+inline double cross(Vec2 u, Vec2 v) { return exact::difference_of_products(u.x, v.y, u.y, v.x); }
+inline double norm(Vec2 v) { return std::hypot(v.x, v.y); }
+inline double norm2(Vec2 v) { return dot(v, v); }
+// The vector turned a quarter turn counter-clockwise: u∧perp(u) = ‖u‖².
+constexpr Vec2 perp(Vec2 v) { return {-v.y, v.x}; }
+constexpr Vec2 to_vec(Point2 p) { return {p.x, p.y}; }
+constexpr Point2 to_point(Vec2 v) { return {v.x, v.y}; }
+
+// The unit vector along v; empty for the zero vector (and anything whose length is not a
+// finite positive number). Divides by the length rather than multiplying by its inverse, so
+// that a subnormal vector still normalises.
+inline std::optional<Vec2> normalized(Vec2 v) {
+  double n = norm(v);
+  if (!(n > 0) || !std::isfinite(n)) return std::nullopt;
+  return Vec2{v.x / n, v.y / n};
+}
+
+// ---- 3D -------------------------------------------------------------------------------------
+constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+constexpr Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+constexpr Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
+constexpr Vec3 operator*(double k, Vec3 a) { return {k * a.x, k * a.y, k * a.z}; }
+constexpr Vec3 operator*(Vec3 a, double k) { return {k * a.x, k * a.y, k * a.z}; }
+constexpr Vec3 operator/(Vec3 a, double k) { return {a.x / k, a.y / k, a.z / k}; }
+constexpr Vec3 operator-(Point3 b, Point3 a) { return {b.x - a.x, b.y - a.y, b.z - a.z}; }
+constexpr Point3 operator+(Point3 p, Vec3 v) { return {p.x + v.x, p.y + v.y, p.z + v.z}; }
+
+inline double dot(Vec3 u, Vec3 v) {
+  return exact::sum_of_products(u.x, v.x, u.y, v.y) + u.z * v.z;
+}
+inline Vec3 cross(Vec3 u, Vec3 v) {
+  return {exact::difference_of_products(u.y, v.z, u.z, v.y),
+          exact::difference_of_products(u.z, v.x, u.x, v.z),
+          exact::difference_of_products(u.x, v.y, u.y, v.x)};
+}
+inline double norm(Vec3 v) { return std::hypot(v.x, v.y, v.z); }
+inline double norm2(Vec3 v) { return dot(v, v); }
+constexpr Vec3 to_vec(Point3 p) { return {p.x, p.y, p.z}; }
+
+inline std::optional<Vec3> normalized(Vec3 v) {
+  double n = norm(v);
+  if (!(n > 0) || !std::isfinite(n)) return std::nullopt;
+  return Vec3{v.x / n, v.y / n, v.z / n};
+}
+
+}  // namespace epure::geo

@@ -1,0 +1,115 @@
+#pragma once
+// A small JSON text writer for the outputs other tools read (`epure solve`, key.json): keys in
+// the order they are written, numbers in their shortest round-trip form (fmt's Dragonbox), −0
+// folded into 0, strings escaped. Writing text directly keeps `epure solve` fast and its bytes
+// stable.
+#include <fmt/format.h>
+
+#include <string_view>
+
+namespace epure {
+
+class JsonWriter {
+ public:
+  explicit JsonWriter(fmt::memory_buffer& buffer) : buf_(buffer) {}
+
+  JsonWriter& begin_object() { return open('{'); }
+  JsonWriter& end_object() { return close('}'); }
+  JsonWriter& begin_array() { return open('['); }
+  JsonWriter& end_array() { return close(']'); }
+
+  JsonWriter& key(std::string_view k) {
+    separate();
+    string_literal(k);
+    buf_.push_back(':');
+    after_key_ = true;
+    return *this;
+  }
+  JsonWriter& number(double x) {
+    separate();
+    // Finite by contract: callers check non-finite values before they reach the text.
+    if (x == 0) x = 0;  // −0 and +0 are the same answer: print one spelling
+    fmt::format_to(std::back_inserter(buf_), "{}", x);
+    return *this;
+  }
+  JsonWriter& integer(long long x) {
+    separate();
+    fmt::format_to(std::back_inserter(buf_), "{}", x);
+    return *this;
+  }
+  JsonWriter& boolean(bool b) {
+    separate();
+    append(b ? "true" : "false");
+    return *this;
+  }
+  JsonWriter& string(std::string_view s) {
+    separate();
+    string_literal(s);
+    return *this;
+  }
+  // Already-valid JSON text (an object written by another JsonWriter), inserted as a value.
+  JsonWriter& raw(std::string_view json_text) {
+    separate();
+    append(json_text);
+    return *this;
+  }
+
+  template <class T>
+  JsonWriter& field(std::string_view k, const T& value) {
+    key(k);
+    write(value);
+    return *this;
+  }
+
+ private:
+  void write(double x) { number(x); }
+  void write(bool b) { boolean(b); }
+  void write(std::string_view s) { string(s); }
+  void write(const char* s) { string(s); }
+
+  JsonWriter& open(char c) {
+    separate();
+    buf_.push_back(c);
+    first_ = true;
+    return *this;
+  }
+  JsonWriter& close(char c) {
+    buf_.push_back(c);
+    first_ = false;
+    return *this;
+  }
+  void separate() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (!first_) buf_.push_back(',');
+    first_ = false;
+  }
+  void append(std::string_view s) { buf_.append(s.data(), s.data() + s.size()); }
+  void string_literal(std::string_view s);
+
+  fmt::memory_buffer& buf_;
+  bool first_ = true;
+  bool after_key_ = false;
+};
+
+inline void JsonWriter::string_literal(std::string_view s) {
+  buf_.push_back('"');
+  for (char ch : s) {
+    auto c = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '"': append("\\\""); break;
+      case '\\': append("\\\\"); break;
+      case '\n': append("\\n"); break;
+      case '\r': append("\\r"); break;
+      case '\t': append("\\t"); break;
+      default:
+        if (c < 0x20) fmt::format_to(std::back_inserter(buf_), "\\u{:04x}", c);
+        else buf_.push_back(ch);
+    }
+  }
+  buf_.push_back('"');
+}
+
+}  // namespace epure

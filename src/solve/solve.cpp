@@ -1,0 +1,290 @@
+#include "solve/solve.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "geometry/degenerate.h"
+#include "geometry/projection.h"
+#include "geometry/ray_3d.h"
+#include "geometry/ray_circle.h"
+#include "geometry/ray_square.h"
+#include "geometry/ray_transformed.h"
+#include "geometry/segments.h"
+#include "geometry/vectors.h"
+#include "solve/json_out.h"
+
+namespace epure::solve {
+
+namespace {
+
+using nlohmann::json;
+namespace geo = epure::geo;
+
+[[noreturn]] void fail(std::string_view field, std::string_view why) {
+  throw InputError(fmt::format("field '{}': {}", field, why));
+}
+
+const char* type_name(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array";
+    case json::value_t::object: return "an object";
+    default: return "a number";
+  }
+}
+
+// Reads the figure's fields, with an error that names the field for anything off.
+class Fields {
+ public:
+  explicit Fields(const json& figure) : figure_(figure) {}
+
+  const json& get(const char* name) const {
+    auto it = figure_.find(name);
+    if (it == figure_.end()) fail(name, "missing");
+    return *it;
+  }
+
+  double number(const char* name) const { return as_number(get(name), name, -1); }
+
+  template <std::size_t N>
+  std::array<double, N> numbers(const char* name) const {
+    const json& j = get(name);
+    if (!j.is_array()) fail(name, fmt::format("expected an array of {} numbers", N));
+    if (j.size() != N) fail(name, fmt::format("expected {} numbers, got {}", N, j.size()));
+    std::array<double, N> values{};
+    for (std::size_t i = 0; i < N; ++i) values[i] = as_number(j[i], name, static_cast<int>(i));
+    return values;
+  }
+
+  geo::Point2 point2(const char* name) const {
+    auto v = numbers<2>(name);
+    return {v[0], v[1]};
+  }
+  geo::Vec2 vec2(const char* name) const {
+    auto v = numbers<2>(name);
+    return {v[0], v[1]};
+  }
+  geo::Point3 point3(const char* name) const {
+    auto v = numbers<3>(name);
+    return {v[0], v[1], v[2]};
+  }
+  geo::Vec3 vec3(const char* name) const {
+    auto v = numbers<3>(name);
+    return {v[0], v[1], v[2]};
+  }
+
+ private:
+  static double as_number(const json& j, const char* name, int index) {
+    if (!j.is_number()) {
+      if (index < 0) fail(name, fmt::format("expected a number, got {}", type_name(j)));
+      fail(name, fmt::format("expected numbers, got {} at index {}", type_name(j), index));
+    }
+    double x = j.get<double>();
+    if (!std::isfinite(x)) fail(name, "not a finite number");
+    return x;
+  }
+  const json& figure_;
+};
+
+// Every number of a result is checked before it is written: data near the limits of double
+// (1e300 squared) overflows, and the text must never say inf or nan.
+class Result {
+ public:
+  Result(fmt::memory_buffer& out, std::string_view kind) : start_(out.size()), out_(out), w_(out) {
+    w_.begin_object().field("kind", kind);
+  }
+  Result& number(std::string_view k, double x) {
+    check(x, k);
+    w_.field(k, x);
+    return *this;
+  }
+  Result& boolean(std::string_view k, bool b) {
+    w_.field(k, b);
+    return *this;
+  }
+  Result& string(std::string_view k, std::string_view s) {
+    w_.field(k, s);
+    return *this;
+  }
+  template <class P>
+  Result& point(std::string_view k, const P& p) {
+    w_.key(k).begin_array();
+    for (double c : coordinates(p)) {
+      check(c, k);
+      w_.number(c);
+    }
+    w_.end_array();
+    return *this;
+  }
+  template <int Dim>
+  Result& faces(const geo::FaceSet<Dim>& set) {
+    w_.key("faces").begin_array();
+    set.for_each([&](geo::Face f) { w_.string(geo::face_name(f)); });
+    w_.end_array();
+    return *this;
+  }
+  template <class Hit>
+  Result& hit(const std::optional<Hit>& h) {
+    boolean("hit", h.has_value());
+    if (h) number("t", h->t).point("I", h->I).point("N", h->N);
+    return *this;
+  }
+  void end() { w_.end_object(); }
+
+ private:
+  static std::array<double, 2> coordinates(geo::Point2 p) { return {p.x, p.y}; }
+  static std::array<double, 2> coordinates(geo::Vec2 v) { return {v.x, v.y}; }
+  static std::array<double, 3> coordinates(geo::Point3 p) { return {p.x, p.y, p.z}; }
+  static std::array<double, 3> coordinates(geo::Vec3 v) { return {v.x, v.y, v.z}; }
+  void check(double x, std::string_view k) {
+    if (!std::isfinite(x)) {
+      out_.resize(start_);
+      fail(k, "result overflows a double: the figure's coordinates are too large");
+    }
+  }
+  std::size_t start_;
+  fmt::memory_buffer& out_;
+  JsonWriter w_;
+};
+
+void solve_vectors(const Fields& f, Result& r) {
+  auto v = geo::compare_vectors(f.vec2("u"), f.vec2("v"));
+  r.number("dot", v.dot).number("cross", v.cross).number("norm_u", v.norm_u).number("norm_v", v.norm_v);
+  r.number("cos", v.cos).number("sin", v.sin).number("angle_deg", v.angle_deg);
+}
+
+void solve_projection(const Fields& f, Result& r) {
+  auto p = geo::project(f.point2("A"), f.point2("B"), f.point2("C"));
+  r.number("t", p.t).point("P", p.P).string("position", geo::to_string(p.position));
+}
+
+void solve_segments(const Fields& f, Result& r) {
+  auto s = geo::intersect_segments(f.point2("A"), f.point2("B"), f.point2("C"), f.point2("D"));
+  r.boolean("intersects", s.intersects());
+  if (!s.intersects()) r.string("reason", geo::to_string(s.relation));
+  if (s.t_ab) r.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
+  if (s.I) r.point("I", *s.I);
+}
+
+template <class Round>
+void write_round(const Round& c, Result& r) {
+  r.number("t_proj", c.t_proj).number("d2", c.d2).boolean("inside", c.inside).hit(c.hit);
+  if (c.reason) r.string("reason", geo::to_string(*c.reason));
+}
+
+void solve_ray_circle(const Fields& f, Result& r) {
+  // Read every field before solving, so that a missing one is reported before a degenerate one.
+  auto A = f.point2("A");
+  auto u = f.vec2("u");
+  auto C = f.point2("C");
+  double radius = f.number("r");
+  write_round(geo::intersect(geo::Ray2::unit(A, u), geo::Circle{C, radius}), r);
+}
+
+void solve_ray_square(const Fields& f, Result& r) {
+  auto A = f.point2("A");
+  auto s = geo::intersect_canonical_square(geo::Ray2::unit(A, f.vec2("u")));
+  r.faces(s.faces).boolean("inside", s.inside).hit(s.hit);
+}
+
+void solve_ray_ellipse(const Fields& f, Result& r) {
+  auto A = f.point2("A");
+  auto u = f.vec2("u");
+  auto C = f.point2("C");
+  auto radii = f.numbers<2>("radii");
+  double angle = f.number("angle");
+  auto e = geo::intersect(geo::Ray2::unit(A, u), geo::Ellipse{C, radii[0], radii[1], angle});
+  r.boolean("inside", e.inside).hit(e.hit);
+}
+
+void solve_ray_rectangle(const Fields& f, Result& r) {
+  auto A = f.point2("A");
+  auto u = f.vec2("u");
+  auto C = f.point2("C");
+  auto half = f.numbers<2>("half");
+  double angle = f.number("angle");
+  auto e = geo::intersect(geo::Ray2::unit(A, u), geo::Rectangle{C, half[0], half[1], angle});
+  r.boolean("inside", e.inside).hit(e.hit);
+}
+
+void solve_ray_sphere(const Fields& f, Result& r) {
+  auto A = f.point3("A");
+  auto u = f.vec3("u");
+  auto C = f.point3("C");
+  double radius = f.number("r");
+  write_round(geo::intersect(geo::Ray3::unit(A, u), geo::Sphere{C, radius}), r);
+}
+
+void solve_ray_cube(const Fields& f, Result& r) {
+  auto A = f.point3("A");
+  auto c = geo::intersect_canonical_cube(geo::Ray3::unit(A, f.vec3("u")));
+  r.faces(c.faces).boolean("inside", c.inside).hit(c.hit);
+}
+
+using Solver = void (*)(const Fields&, Result&);
+
+Solver solver_for(std::string_view kind) {
+  static constexpr std::pair<std::string_view, Solver> table[] = {
+      {"vectors", solve_vectors},         {"projection", solve_projection},
+      {"segments", solve_segments},       {"ray_circle", solve_ray_circle},
+      {"ray_square", solve_ray_square},   {"ray_ellipse", solve_ray_ellipse},
+      {"ray_rectangle", solve_ray_rectangle}, {"ray_sphere", solve_ray_sphere},
+      {"ray_cube", solve_ray_cube},
+  };
+  for (const auto& [name, solver] : table)
+    if (name == kind) return solver;
+  return nullptr;
+}
+
+}  // namespace
+
+void solve_figure(const json& figure, fmt::memory_buffer& out) {
+  if (!figure.is_object()) throw InputError("line: expected a JSON object");
+  Fields fields(figure);
+  const json& kind = fields.get("kind");
+  if (!kind.is_string()) fail("kind", fmt::format("expected a string, got {}", type_name(kind)));
+  const auto& name = kind.get_ref<const std::string&>();
+  Solver solver = solver_for(name);
+  if (!solver) fail("kind", fmt::format("unknown kind '{}'", name));
+
+  const std::size_t start = out.size();
+  try {
+    Result result(out, name);
+    solver(fields, result);
+    result.end();
+  } catch (const geo::DegenerateFigure& e) {
+    out.resize(start);
+    fail(e.field(), e.what());
+  } catch (...) {
+    out.resize(start);
+    throw;
+  }
+}
+
+std::string solve_line(std::string_view line, fmt::memory_buffer& out) {
+  std::string message;
+  const std::size_t start = out.size();
+  try {
+    json figure = json::parse(line.begin(), line.end());
+    solve_figure(figure, out);
+    return {};
+  } catch (const json::parse_error& e) {
+    // nlohmann says "[json.exception.parse_error.101] parse error at line 1, column 30: ...":
+    // keep the part after the id.
+    std::string_view what = e.what();
+    if (auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
+    message = fmt::format("line: not valid JSON ({})", what);
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const std::exception& e) {
+    message = fmt::format("line: {}", e.what());
+  }
+  out.resize(start);
+  JsonWriter(out).begin_object().field("error", std::string_view(message)).end_object();
+  return message;
+}
+
+}  // namespace epure::solve

@@ -1,0 +1,33 @@
+#pragma once
+// The `epure solve` contract: one figure as a JSON object in, one JSON object out. Kinds, field
+// names and reasons are the contract that other tools and our answer keys rely on (README,
+// "epure solve").
+#include <fmt/format.h>
+#include <nlohmann/json_fwd.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace epure::solve {
+
+// Bad input: the message names the field at fault ("field 'r': must be > 0").
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Solves one figure and appends its result object to `out`. Throws InputError (never anything
+// else for bad data) when the figure is not a valid solve input.
+void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out);
+
+// One line of JSON Lines: parses, solves and appends the result object, or {"error": "..."}.
+// Never throws. Returns the error message, empty when the line was solved.
+std::string solve_line(std::string_view line, fmt::memory_buffer& out);
+
+// The kinds the contract knows, in the contract's order.
+inline constexpr std::string_view kKinds[] = {"vectors",     "projection",    "segments",
+                                              "ray_circle",  "ray_square",    "ray_ellipse",
+                                              "ray_rectangle", "ray_sphere",  "ray_cube"};
+
+}  // namespace epure::solve
