@@ -1,0 +1,14 @@
+#pragma once
+// The files of templates/ (texts per language, the built-in worksheet spec), compiled into the
+// binary so that `epure` runs from anywhere with no install step.
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace epure {
+
+// The file's text by its path under templates/ ("text/en.toml", "course.toml").
+std::optional<std::string_view> embedded_file(std::string_view name);
+std::vector<std::string_view> embedded_files();
+
+}  // namespace epure

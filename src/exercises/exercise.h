@@ -1,0 +1,92 @@
+#pragma once
+// An exercise kind is one unit: it draws a random, well-posed instance under the spec's
+// constraints, solves it with the geometry core, and says what is asked (questions with their
+// expected values, exact forms, tolerances and points), what the student sees (the sheet's
+// section: statement, data diagram, answer fields) and what the key shows (worked steps, the
+// construction diagram, the answers). Kinds know nothing of files or backends.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "exercises/numbers.h"
+#include "exercises/rng.h"
+#include "exercises/spec.h"
+#include "exercises/texts.h"
+#include "render/document.h"
+
+namespace epure {
+
+// How close an answer must be to earn its points. Recorded per question in key.json, so that
+// grading applies exactly the rule the generator derived.
+struct ToleranceRule {
+  enum class Kind {
+    exact,    // strings, booleans, face sets: equal (sets in any order)
+    isclose,  // |given − expected| ≤ max(rel·|expected|, abs)
+    distance  // the point (group) given is within abs of the expected point, as a whole
+  } kind = Kind::exact;
+  double rel = 0;
+  double abs = 0;
+  std::string why;  // how the numbers were derived, for the key
+};
+
+using Expected = std::variant<double, bool, std::string, std::vector<std::string>>;
+
+struct Question {
+  std::string field;  // as in the solve contract, coordinates as .x/.y: "t", "P.x", "faces", "Ac.y"
+  Expected expected;
+  std::optional<std::string> exact;         // machine form ("1/4", "(5-2*sqrt(2))/3")
+  std::optional<std::string> exact_pretty;  // for people ("(5 − 2√2)/3")
+  ToleranceRule tolerance;
+  double points = 1;
+  std::string point_group;  // "P" for P.x and P.y: a point marked coordinate by coordinate,
+                            // or as a whole when the rule is `distance`
+};
+
+struct ExerciseInstance {
+  int n = 0;             // place on the sheet, 1-based
+  std::string kind;
+  std::string branch;    // which case this instance shows ("between", "miss", …)
+  std::string instance;  // the solve input, JSON text
+  std::string solution;  // the solve output for it, JSON text
+  std::vector<Question> questions;
+  render::Section sheet;  // what the student gets
+  render::Section key;    // the worked solution
+  std::uint64_t fingerprint = 0;  // identity of the drawn data, for "no two sheets share one"
+};
+
+// What a kind needs to make one instance.
+struct ExerciseContext {
+  int n;                       // place on the sheet
+  const ExerciseSpec& spec;    // kind, difficulty, branch weights, points, constraints
+  const Texts& texts;
+  NumberStyle numbers;
+  int decimals;                // students round answers to this many decimals
+  std::string branch;          // the branch to draw (chosen by the sheet schedule)
+};
+
+class ExerciseKind {
+ public:
+  virtual ~ExerciseKind() = default;
+  virtual std::string_view name() const = 0;
+  // The branches the kind can draw, and their default weights: under the defaults a class set
+  // of 30 shows every branch (the schedule spreads them across consecutive sheets).
+  virtual std::vector<std::pair<std::string, double>> default_branches() const = 0;
+  // The constraint names the spec may set for this kind, with their defaults.
+  virtual std::map<std::string, double> default_constraints() const { return {}; }
+  // The question fields this kind can ask (for validating a spec's points table).
+  virtual std::vector<std::string> fields() const = 0;
+  // Draws until the constraints hold (throws std::runtime_error after too many attempts, naming
+  // the constraint that could not be met).
+  virtual ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const = 0;
+};
+
+// All kinds, in the course's order; nullptr for an unknown name.
+const ExerciseKind* find_kind(std::string_view name);
+std::vector<const ExerciseKind*> all_kinds();
+
+}  // namespace epure

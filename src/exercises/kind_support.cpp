@@ -1,0 +1,286 @@
+#include "exercises/kind_support.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "solve/json_out.h"
+#include "solve/solve.h"
+
+namespace epure::kinds {
+
+InstanceWriter::InstanceWriter(std::string_view kind) {
+  fmt::memory_buffer buf;
+  JsonWriter(buf).begin_object().field("kind", kind);
+  text_.assign(buf.data(), buf.size());  // "{"kind":"…"" — closed by finish()
+}
+
+namespace {
+std::string number_text(double x) {
+  if (x == 0) x = 0;  // one spelling for ±0
+  return fmt::format("{}", x);
+}
+}  // namespace
+
+InstanceWriter& InstanceWriter::number(std::string_view field, double x) {
+  text_ += fmt::format(",\"{}\":{}", field, number_text(x));
+  return *this;
+}
+InstanceWriter& InstanceWriter::pair(std::string_view field, double a, double b) {
+  text_ += fmt::format(",\"{}\":[{},{}]", field, number_text(a), number_text(b));
+  return *this;
+}
+InstanceWriter& InstanceWriter::point(std::string_view field, geo::Point2 p) { return pair(field, p.x, p.y); }
+InstanceWriter& InstanceWriter::vec(std::string_view field, geo::Vec2 v) { return pair(field, v.x, v.y); }
+std::string InstanceWriter::finish() { return text_ + "}"; }
+
+std::string solve_instance(std::string_view instance) {
+  fmt::memory_buffer out;
+  std::string error = solve::solve_line(instance, out);
+  if (!error.empty())
+    throw std::logic_error(fmt::format("generated instance refused by solve: {} ({})", error, instance));
+  return std::string(out.data(), out.size());
+}
+
+std::uint64_t fingerprint(std::string_view text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+Questions::Questions(const ExerciseContext& ctx) : ctx_(ctx) {}
+
+const QuestionSpec* Questions::spec_for(std::string_view field) const {
+  // "P.x" is configured under "P"
+  std::string base(field.substr(0, field.find('.')));
+  auto it = ctx_.spec.questions.find(base);
+  return it == ctx_.spec.questions.end() ? nullptr : &it->second;
+}
+
+double Questions::points_for(std::string_view field) const {
+  const QuestionSpec* q = spec_for(field);
+  return q && q->points ? *q->points : ctx_.spec.points;
+}
+
+std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", ctx_.n, field); }
+
+std::string Questions::prompt(std::string_view field) const {
+  return ctx_.texts.get(fmt::format("{}.q.{}", ctx_.spec.kind, field));
+}
+
+std::string Questions::answer_text(double value, const std::optional<exact::Surd>& exact) const {
+  const std::string rounded = ctx_.numbers.rounded(value, ctx_.decimals);
+  if (!exact) return fmt::format("≈ {}", rounded);
+  const std::string pretty = ctx_.numbers.localise(exact->pretty());
+  if (!exact->is_rational()) return fmt::format("{} ≈ {}", pretty, rounded);
+  const std::int64_t den = exact->a().den();
+  if (den == 1) return pretty;
+  // a fraction whose decimal expansion stops within the asked precision is written out exactly
+  std::int64_t pow10 = 1;
+  for (int i = 0; i < ctx_.decimals; ++i) pow10 *= 10;
+  if (pow10 % den == 0) return fmt::format("{} = {}", pretty, ctx_.numbers.datum(value, ctx_.decimals));
+  return fmt::format("{} ≈ {}", pretty, rounded);
+}
+
+void Questions::number(std::string_view field, double value, double abs_tolerance,
+                       std::optional<exact::Surd> exact) {
+  Question q;
+  q.field = std::string(field);
+  q.expected = value;
+  if (exact) {
+    try {
+      q.exact = exact->machine();
+      q.exact_pretty = exact->pretty();
+    } catch (const exact::ExactOverflow&) {
+      exact.reset();
+    }
+  }
+  const QuestionSpec* spec = spec_for(field);
+  q.tolerance = isclose_rule(abs_tolerance, ctx_.decimals, spec);
+  if (q.tolerance.kind == ToleranceRule::Kind::distance) q.tolerance.kind = ToleranceRule::Kind::isclose;
+  q.points = points_for(field);
+  questions_.push_back(q);
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::number, {}});
+  lines_.push_back({id(field), prompt(field), answer_text(value, exact)});
+}
+
+void Questions::point(std::string_view field, geo::Point2 value, double abs_x, double abs_y,
+                      std::optional<exact::Surd> exact_x, std::optional<exact::Surd> exact_y) {
+  const QuestionSpec* spec = spec_for(field);
+  const double coords[2] = {value.x, value.y};
+  const double tols[2] = {abs_x, abs_y};
+  const std::optional<exact::Surd> exacts[2] = {exact_x, exact_y};
+  std::string shown[2];
+  for (int i = 0; i < 2; ++i) {
+    Question q;
+    q.field = fmt::format("{}.{}", field, i == 0 ? "x" : "y");
+    q.expected = coords[i];
+    q.point_group = std::string(field);
+    std::optional<exact::Surd> e = exacts[i];
+    if (e) {
+      try {
+        q.exact = e->machine();
+        q.exact_pretty = e->pretty();
+      } catch (const exact::ExactOverflow&) {
+        e.reset();
+      }
+    }
+    q.tolerance = isclose_rule(tols[i], ctx_.decimals, spec);
+    if (q.tolerance.kind == ToleranceRule::Kind::distance) {
+      // as a whole: within the distance that both coordinates' tolerances allow together
+      q.tolerance.abs = spec && spec->abs ? *spec->abs : std::hypot(tols[0], tols[1]);
+      q.tolerance.rel = 0;
+      q.tolerance.why = "the point is marked as a whole, by its distance to the expected point";
+    }
+    q.points = points_for(field) / 2;
+    questions_.push_back(q);
+    shown[i] = answer_text(coords[i], e);
+  }
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::point, {}});
+  lines_.push_back({id(field), prompt(field),
+                    fmt::format("({}{} {})", shown[0], ctx_.numbers.decimal_comma ? " ;" : ",", shown[1])});
+}
+
+void Questions::boolean(std::string_view field, bool value) {
+  Question q;
+  q.field = std::string(field);
+  q.expected = value;
+  q.tolerance = exact_rule();
+  q.points = points_for(field);
+  questions_.push_back(q);
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::boolean,
+                     {ctx_.texts.get("common.yes"), ctx_.texts.get("common.no")}});
+  lines_.push_back({id(field), prompt(field), ctx_.texts.get(value ? "common.yes" : "common.no")});
+}
+
+void Questions::choice(std::string_view field, std::string_view value,
+                       const std::vector<std::string>& choices) {
+  Question q;
+  q.field = std::string(field);
+  q.expected = std::string(value);
+  q.tolerance = exact_rule();
+  q.points = points_for(field);
+  questions_.push_back(q);
+  std::vector<std::string> shown;
+  for (const auto& c : choices) shown.push_back(ctx_.texts.get(fmt::format("choice.{}", c)));
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::choice, shown});
+  lines_.push_back({id(field), prompt(field), ctx_.texts.get(fmt::format("choice.{}", value))});
+}
+
+void Questions::faces(std::string_view field, const std::vector<std::string>& value,
+                      const std::vector<std::string>& all) {
+  Question q;
+  q.field = std::string(field);
+  q.expected = value;
+  q.tolerance = exact_rule();
+  q.points = points_for(field);
+  questions_.push_back(q);
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, all});
+  std::string shown;
+  for (const auto& f : value) shown += fmt::format("{}{}", shown.empty() ? "" : ", ", f);
+  if (shown.empty()) shown = ctx_.texts.get("common.none");
+  lines_.push_back({id(field), prompt(field), shown});
+}
+
+render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size,
+                        double step) {
+  double x0 = points.front().x, x1 = x0, y0 = points.front().y, y1 = y0;
+  for (const auto& p : points) {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  x0 -= margin, x1 += margin, y0 -= margin, y1 += margin;
+  if (x1 - x0 < min_size) {
+    const double grow = (min_size - (x1 - x0)) / 2;
+    x0 -= grow, x1 += grow;
+  }
+  if (y1 - y0 < min_size) {
+    const double grow = (min_size - (y1 - y0)) / 2;
+    y0 -= grow, y1 += grow;
+  }
+  return {std::floor(x0 / step) * step, std::floor(y0 / step) * step, std::ceil(x1 / step) * step,
+          std::ceil(y1 / step) * step};
+}
+
+render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key) {
+  render::Section s;
+  s.add(render::Heading{ctx.texts.format("common.exercise_heading",
+                                         {{"n", std::to_string(ctx.n)},
+                                          {"title", ctx.texts.get(title_key)}}),
+                        1});
+  return s;
+}
+
+render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key) {
+  render::Section s;
+  s.add(render::Heading{ctx.texts.format("common.exercise_heading",
+                                         {{"n", std::to_string(ctx.n)},
+                                          {"title", ctx.texts.get(title_key)}}),
+                        1});
+  return s;
+}
+
+void add_fields(render::Section& s, const Questions& q) {
+  for (const auto& f : q.fields()) s.add(f);
+}
+
+void add_lines(render::Section& s, const Questions& q) {
+  for (const auto& l : q.lines()) s.add(l);
+}
+
+double constraint(const ExerciseContext& ctx, const ExerciseKind& kind, const std::string& name) {
+  auto it = ctx.spec.constraints.find(name);
+  if (it != ctx.spec.constraints.end()) return it->second;
+  return kind.default_constraints().at(name);
+}
+
+}  // namespace epure::kinds
+
+namespace epure::kinds {
+
+std::optional<exact::Rational> rational_of(double x) {
+  double scale = 1;
+  for (int k = 0; k <= 6; ++k, scale *= 10) {
+    const double scaled = x * scale;
+    if (std::abs(scaled) > 9e15) return std::nullopt;
+    const double whole = std::nearbyint(scaled);
+    // the datum was written with k decimals exactly when scaling lands on an integer (to
+    // rounding of the scaling itself)
+    if (std::abs(scaled - whole) <= 1e-9 * std::max(1.0, std::abs(scaled)))
+      return exact::Rational(static_cast<std::int64_t>(whole), static_cast<std::int64_t>(scale));
+  }
+  return std::nullopt;
+}
+
+std::string shown(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {
+  if (exact) {
+    try {
+      const std::string pretty = exact->pretty();
+      if (pretty.size() <= 16) return ctx.numbers.localise(pretty);
+    } catch (const exact::ExactOverflow&) {
+    }
+  }
+  return ctx.numbers.rounded(value, ctx.decimals);
+}
+
+std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
+                        const std::optional<exact::Surd>& ex, const std::optional<exact::Surd>& ey) {
+  return fmt::format("({}{} {})", shown(ctx, p.x, ex), ctx.numbers.decimal_comma ? " ;" : ",",
+                     shown(ctx, p.y, ey));
+}
+
+double grid_value(Rng& rng, double lo, double hi, Difficulty d) {
+  if (d == Difficulty::hard)
+    return static_cast<double>(rng.integer(static_cast<std::int64_t>(std::ceil(lo * 10)),
+                                           static_cast<std::int64_t>(std::floor(hi * 10)))) / 10.0;
+  return static_cast<double>(rng.integer(static_cast<std::int64_t>(std::ceil(lo)),
+                                         static_cast<std::int64_t>(std::floor(hi))));
+}
+
+}  // namespace epure::kinds

@@ -1,0 +1,130 @@
+#pragma once
+// What every exercise kind does the same way: writing its solve input, asking the contract for
+// the solution, turning answers into questions (with exact forms and derived tolerances),
+// answer fields for the sheet and answer lines for the key. A kind only says what is specific
+// to it: how to draw, the method, the texts, the diagrams.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exercises/exact.h"
+#include "exercises/exercise.h"
+#include "exercises/tolerance.h"
+#include "geometry/vec.h"
+#include "render/scene.h"
+
+namespace epure::kinds {
+
+// The instance as a solve input, written field by field in the contract's names.
+class InstanceWriter {
+ public:
+  explicit InstanceWriter(std::string_view kind);
+  InstanceWriter& number(std::string_view field, double x);
+  InstanceWriter& point(std::string_view field, geo::Point2 p);
+  InstanceWriter& vec(std::string_view field, geo::Vec2 v);
+  InstanceWriter& pair(std::string_view field, double a, double b);
+  std::string finish();
+
+ private:
+  std::string text_;
+  bool first_ = true;
+};
+
+// The solve output for an instance: the one `epure solve` prints for it. Throws
+// std::logic_error if the contract refuses the instance (a generator bug).
+std::string solve_instance(std::string_view instance);
+
+// 64-bit FNV-1a of the instance text: equal data, equal fingerprint.
+std::uint64_t fingerprint(std::string_view text);
+
+// Collects the questions of one instance together with the sheet's answer fields and the key's
+// answer lines, in the order they are asked.
+class Questions {
+ public:
+  explicit Questions(const ExerciseContext& ctx);
+
+  // A numeric answer; `exact` when the instance has an exact form of it.
+  void number(std::string_view field, double value, double abs_tolerance,
+              std::optional<exact::Surd> exact = std::nullopt);
+  // A 2D point asked as .x and .y (marked separately, or as a whole when the spec says so).
+  void point(std::string_view field, geo::Point2 value, double abs_x, double abs_y,
+             std::optional<exact::Surd> exact_x = std::nullopt,
+             std::optional<exact::Surd> exact_y = std::nullopt);
+  void vector(std::string_view field, geo::Vec2 value, double abs_x, double abs_y,
+              std::optional<exact::Surd> exact_x = std::nullopt,
+              std::optional<exact::Surd> exact_y = std::nullopt) {
+    point(field, {value.x, value.y}, abs_x, abs_y, exact_x, exact_y);
+  }
+  void boolean(std::string_view field, bool value);
+  // One of `choices` (contract words: "before", "miss", …), shown localised.
+  void choice(std::string_view field, std::string_view value, const std::vector<std::string>& choices);
+  // A set of face names ("+x", "-y"), to tick among `all`.
+  void faces(std::string_view field, const std::vector<std::string>& value,
+             const std::vector<std::string>& all);
+
+  std::vector<Question> take_questions() { return std::move(questions_); }
+  // Fields for the sheet and lines for the key, in order.
+  const std::vector<render::AnswerField>& fields() const { return fields_; }
+  const std::vector<render::AnswerLine>& lines() const { return lines_; }
+
+ private:
+  const QuestionSpec* spec_for(std::string_view field) const;
+  double points_for(std::string_view field) const;
+  std::string id(std::string_view field) const;
+  std::string prompt(std::string_view field) const;
+  std::string answer_text(double value, const std::optional<exact::Surd>& exact) const;
+
+  const ExerciseContext& ctx_;
+  std::vector<Question> questions_;
+  std::vector<render::AnswerField> fields_;
+  std::vector<render::AnswerLine> lines_;
+};
+
+// The conversion every kind needs between the core's points and the scene's.
+inline render::P2 p2(geo::Point2 p) { return {p.x, p.y}; }
+inline render::P2 p2(geo::Vec2 v) { return {v.x, v.y}; }
+
+// A view box around the given points with a margin, at least `min_size` wide and high, snapped
+// outward to whole grid steps.
+render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size = 4,
+                        double step = 1);
+
+// Draws until `ok` accepts or `attempts` run out; throws std::runtime_error naming `what`.
+template <class Draw>
+auto draw_until(int attempts, std::string_view what, Draw&& draw) {
+  for (int i = 0; i < attempts; ++i)
+    if (auto instance = draw()) return *instance;
+  throw std::runtime_error(std::string("could not draw an instance meeting the constraints: ") +
+                           std::string(what));
+}
+
+// The two sections every exercise has, begun with their headings.
+render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key);
+render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key);
+
+// Adds the answer fields (sheet) or the answer lines (key).
+void add_fields(render::Section& s, const Questions& q);
+void add_lines(render::Section& s, const Questions& q);
+
+// A constraint's value: the spec's override or the kind's default.
+double constraint(const ExerciseContext& ctx, const ExerciseKind& kind, const std::string& name);
+
+}  // namespace epure::kinds
+
+namespace epure::kinds {
+
+// The exact rational a datum denotes, when it has at most 6 decimals (data on a grid always do).
+std::optional<exact::Rational> rational_of(double x);
+
+// A value as the key's worked steps show it: its exact form when it has a short one, else
+// rounded ("1/4", "5 − 2√2", "≈ 2.17" → "2.17").
+std::string shown(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact);
+std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
+                        const std::optional<exact::Surd>& ex, const std::optional<exact::Surd>& ey);
+
+// A random coordinate on the difficulty's grid: integers for easy and standard, one decimal for
+// hard.
+double grid_value(Rng& rng, double lo, double hi, Difficulty d);
+
+}  // namespace epure::kinds

@@ -1,0 +1,201 @@
+// Exercise 1 of the course: the projection P of C on the line (AB), t = AB·AC / AB·AB, and
+// where P falls (before A, between A and B, after B).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "exercises/kind_support.h"
+#include "exercises/kinds/registry.h"
+#include "geometry/projection.h"
+
+namespace epure::kinds {
+
+namespace {
+
+using geo::Point2;
+using geo::Vec2;
+
+struct Data {
+  Point2 A, B, C;
+};
+
+// Directions whose squared length divides 100, so that t = AB·AC / AB·AB is a terminating
+// decimal: the easy level's hand-computable answers.
+constexpr Vec2 kEasyDirections[] = {{2, 0}, {4, 0}, {5, 0}, {0, 2}, {0, 4}, {0, 5},
+                                    {3, 4}, {4, 3}, {6, 8}, {8, 6}, {1, 2}, {2, 1}};
+
+class Projection final : public ExerciseKind {
+ public:
+  std::string_view name() const override { return "projection"; }
+  std::vector<std::pair<std::string, double>> default_branches() const override {
+    return {{"before", 1}, {"between", 2}, {"after", 1}};
+  }
+  std::map<std::string, double> default_constraints() const override {
+    // t at least this far from 0 and 1; C at least this far from the line; |AB| at least
+    return {{"t_margin", 0.15}, {"min_distance", 1.0}, {"min_length", 3.0}, {"max_t", 2.0}};
+  }
+  std::vector<std::string> fields() const override { return {"t", "P", "position"}; }
+
+  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
+    const Difficulty level = ctx.spec.difficulty;
+    const bool hard = level == Difficulty::hard;
+    // hard: close to the degenerate cases, but safely away from them
+    const double t_margin = constraint(ctx, *this, "t_margin") / (hard ? 3 : 1);
+    const double min_distance = constraint(ctx, *this, "min_distance") / (hard ? 3 : 1);
+    const double min_length = constraint(ctx, *this, "min_length");
+    const double max_t = constraint(ctx, *this, "max_t");
+
+    const Data d = draw_until(20000, "projection (t range, distance of C, length of AB)", [&]() -> std::optional<Data> {
+      Data x;
+      x.A = {grid_value(rng, 0, 10, level), grid_value(rng, 0, 8, level)};
+      Vec2 AB;
+      if (level == Difficulty::easy) {
+        AB = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
+        if (rng.chance(0.5)) AB = -AB;
+      } else {
+        AB = {grid_value(rng, -8, 8, level), grid_value(rng, -8, 8, level)};
+      }
+      x.B = x.A + AB;
+      x.C = {grid_value(rng, 0, 10, level), grid_value(rng, 0, 8, level)};
+      if (x.B.x < 0 || x.B.x > 10 || x.B.y < 0 || x.B.y > 8) return std::nullopt;
+      if (geo::norm(AB) < min_length) return std::nullopt;
+      const auto p = geo::project(x.A, x.B, x.C);
+      if (geo::norm(x.C - p.P) < min_distance) return std::nullopt;
+      const double t = p.t;
+      bool ok = false;
+      if (ctx.branch == "before") ok = t <= -t_margin && t >= -(max_t - 1);
+      if (ctx.branch == "between") ok = t >= t_margin && t <= 1 - t_margin;
+      if (ctx.branch == "after") ok = t >= 1 + t_margin && t <= max_t;
+      if (!ok) return std::nullopt;
+      // P must stay in the drawing area with room for its label
+      if (p.P.x < -1 || p.P.x > 11 || p.P.y < -1 || p.P.y > 9) return std::nullopt;
+      return x;
+    });
+    return build(d, ctx);
+  }
+
+ private:
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+    const auto& T = ctx.texts;
+    const auto& N = ctx.numbers;
+    const auto p = geo::project(d.A, d.B, d.C);
+
+    ExerciseInstance inst;
+    inst.n = ctx.n;
+    inst.kind = std::string(name());
+    inst.branch = ctx.branch;
+    inst.instance = InstanceWriter("projection").point("A", d.A).point("B", d.B).point("C", d.C).finish();
+    inst.solution = solve_instance(inst.instance);
+    inst.fingerprint = fingerprint(inst.instance);
+
+    // Exact forms from the rational data: a second computation of every answer.
+    std::optional<exact::Surd> t_exact, px_exact, py_exact, ab_ac_exact, ab_ab_exact;
+    auto ax = rational_of(d.A.x), ay = rational_of(d.A.y), bx = rational_of(d.B.x),
+         by = rational_of(d.B.y), cx = rational_of(d.C.x), cy = rational_of(d.C.y);
+    if (ax && ay && bx && by && cx && cy) {
+      try {
+        const auto abx = *bx - *ax, aby = *by - *ay, acx = *cx - *ax, acy = *cy - *ay;
+        const auto ab_ac = abx * acx + aby * acy, ab_ab = abx * abx + aby * aby;
+        const auto t = ab_ac / ab_ab;
+        t_exact = exact::Surd(t);
+        px_exact = exact::Surd(*ax + t * abx);
+        py_exact = exact::Surd(*ay + t * aby);
+        ab_ac_exact = exact::Surd(ab_ac);
+        ab_ab_exact = exact::Surd(ab_ab);
+      } catch (const exact::ExactOverflow&) {
+      }
+    }
+
+    // The student's method: t is rounded, then P = A + t·AB.
+    const StudentMethod method = [&](const Nudge& nudge) {
+      const Vec2 AB = d.B - d.A, AC = d.C - d.A;
+      const double t = nudge.at(0, geo::dot(AB, AC) / geo::dot(AB, AB));
+      const Point2 P = d.A + t * AB;
+      return std::vector<double>{t, P.x, P.y};
+    };
+    const auto tol = derive_abs_tolerances(method, 1, ctx.decimals);
+
+    Questions q(ctx);
+    q.number("t", p.t, tol[0], t_exact);
+    q.point("P", p.P, tol[1], tol[2], px_exact, py_exact);
+    q.choice("position", geo::to_string(p.position), {"before", "between", "after"});
+    inst.questions = q.take_questions();
+
+    const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
+                                {"B", N.point(d.B.x, d.B.y)},
+                                {"C", N.point(d.C.x, d.C.y)}};
+    // ---- the sheet
+    inst.sheet = begin_sheet_section(ctx, "projection.title");
+    inst.sheet.add(render::Paragraph{T.format("projection.statement", data_vars)});
+    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
+    add_fields(inst.sheet, q);
+
+    // ---- the key
+    inst.key = begin_key_section(ctx, "projection.title");
+    inst.key.add(render::Paragraph{T.format("projection.statement", data_vars)});
+    const Vec2 AB = p.AB, AC = p.AC;
+    inst.key.add(render::Paragraph{T.format(
+        "projection.step.vectors", {{"AB", N.point(AB.x, AB.y)}, {"AC", N.point(AC.x, AC.y)}})});
+    inst.key.add(render::Paragraph{T.format(
+        "projection.step.dots", {{"ab_ac", shown(ctx, p.ab_dot_ac, ab_ac_exact)},
+                                 {"ab_ab", shown(ctx, p.ab_dot_ab, ab_ab_exact)}})});
+    inst.key.add(render::Paragraph{T.format("projection.step.t", {{"t", shown(ctx, p.t, t_exact)}})});
+    inst.key.add(render::Paragraph{
+        T.format("projection.step.P", {{"P", shown_point(ctx, p.P, px_exact, py_exact)}})});
+    inst.key.add(render::Paragraph{T.get(fmt::format("projection.step.position.{}", geo::to_string(p.position)))});
+    inst.key.add(render::Figure{key_scene(d, p, ctx), 0.6});
+    add_lines(inst.key, q);
+    return inst;
+  }
+
+  static render::Panel data_panel(const Data& d, const geo::Projection& p) {
+    render::Panel panel;
+    panel.view = view_around({p2(d.A), p2(d.B), p2(d.C), p2(p.P)}, 1.0, 5.0);
+    panel.add(render::Grid{1, true});
+    return panel;
+  }
+
+  render::Scene question_scene(const Data& d, const ExerciseContext& ctx) const {
+    const auto p = geo::project(d.A, d.B, d.C);
+    render::Scene s;
+    s.title = ctx.texts.get("projection.title");
+    s.description = ctx.texts.format("projection.figure.question", {});
+    render::Panel panel = data_panel(d, p);
+    panel.add(render::Segment{p2(d.A), p2(d.B), render::Role::data});
+    panel.add(render::PointMark{p2(d.A), render::Role::data, render::Label{"A", p2(d.A)}});
+    panel.add(render::PointMark{p2(d.B), render::Role::data, render::Label{"B", p2(d.B)}});
+    panel.add(render::PointMark{p2(d.C), render::Role::data, render::Label{"C", p2(d.C)}});
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+
+  render::Scene key_scene(const Data& d, const geo::Projection& p, const ExerciseContext& ctx) const {
+    render::Scene s;
+    s.title = ctx.texts.get("projection.title");
+    s.description = ctx.texts.format("projection.figure.key", {});
+    render::Panel panel = data_panel(d, p);
+    panel.add(render::Line{p2(d.A), p2(d.B), render::Role::construction});
+    panel.add(render::Segment{p2(d.A), p2(d.B), render::Role::data});
+    panel.add(render::Segment{p2(d.C), p2(p.P), render::Role::construction, true});
+    panel.add(render::RightAngle{p2(p.P), p2(d.C - p.P), p2(p.AB), render::Role::construction});
+    panel.add(render::Tick{p2(d.A), p2(p.AB), "0", render::Role::construction});
+    panel.add(render::Tick{p2(d.B), p2(p.AB), "1", render::Role::construction});
+    panel.add(render::Tick{p2(p.P), p2(p.AB),
+                           "t = " + ctx.numbers.rounded(p.t, ctx.decimals), render::Role::result});
+    panel.add(render::PointMark{p2(d.A), render::Role::data, render::Label{"A", p2(d.A)}});
+    panel.add(render::PointMark{p2(d.B), render::Role::data, render::Label{"B", p2(d.B)}});
+    panel.add(render::PointMark{p2(d.C), render::Role::data, render::Label{"C", p2(d.C)}});
+    panel.add(render::PointMark{p2(p.P), render::Role::result, render::Label{"P", p2(p.P), render::Side::auto_, render::Role::result}});
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+};
+
+}  // namespace
+
+const ExerciseKind& projection_kind() {
+  static const Projection kind;
+  return kind;
+}
+
+}  // namespace epure::kinds

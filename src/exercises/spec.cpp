@@ -1,0 +1,243 @@
+#include "exercises/spec.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <set>
+
+#include "embed/embedded.h"
+#include "exercises/exercise.h"
+#include "exercises/texts.h"
+
+namespace epure {
+
+std::string_view to_string(Difficulty d) {
+  switch (d) {
+    case Difficulty::easy: return "easy";
+    case Difficulty::standard: return "standard";
+    case Difficulty::hard: return "hard";
+  }
+  return "?";
+}
+
+std::optional<Difficulty> parse_difficulty(std::string_view s) {
+  if (s == "easy") return Difficulty::easy;
+  if (s == "standard") return Difficulty::standard;
+  if (s == "hard") return Difficulty::hard;
+  return std::nullopt;
+}
+
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string_view source) : source_(source) {}
+
+  [[noreturn]] void fail(const toml::node& node, std::string_view key, std::string_view why) const {
+    const auto& at = node.source().begin;
+    throw SpecError(fmt::format("{}:{}:{}: key '{}': {}", source_, at.line, at.column, key, why));
+  }
+
+  // Every key of `table` must be one of `known`: a typo is an error, not a silent default.
+  void only(const toml::table& table, std::string_view prefix,
+            std::initializer_list<std::string_view> known) const {
+    for (const auto& [k, node] : table) {
+      bool ok = false;
+      for (auto name : known) ok = ok || k.str() == name;
+      if (!ok) {
+        std::string names;
+        for (auto name : known) names += fmt::format("{}{}", names.empty() ? "" : ", ", name);
+        fail(node, qualified(prefix, k.str()), fmt::format("unknown key (known: {})", names));
+      }
+    }
+  }
+
+  std::string string(const toml::table& t, std::string_view prefix, std::string_view key,
+                     std::string fallback) const {
+    const toml::node* node = t.get(key);
+    if (!node) return fallback;
+    if (!node->is_string()) fail(*node, qualified(prefix, key), "expected a string");
+    return node->as_string()->get();
+  }
+
+  double number(const toml::node& node, std::string_view key) const {
+    if (auto i = node.as_integer()) return static_cast<double>(i->get());
+    if (auto f = node.as_floating_point()) {
+      if (!std::isfinite(f->get())) fail(node, key, "expected a finite number");
+      return f->get();
+    }
+    fail(node, key, "expected a number");
+  }
+
+  static std::string qualified(std::string_view prefix, std::string_view key) {
+    return prefix.empty() ? std::string(key) : fmt::format("{}.{}", prefix, key);
+  }
+
+ private:
+  std::string source_;
+};
+
+ExerciseSpec read_exercise(const Reader& r, const toml::table& t, std::string_view prefix,
+                           Difficulty default_difficulty, const toml::node& where) {
+  r.only(t, prefix, {"kind", "difficulty", "branches", "points", "questions", "constraints"});
+  ExerciseSpec e;
+  e.kind = r.string(t, prefix, "kind", "");
+  if (e.kind.empty()) r.fail(where, Reader::qualified(prefix, "kind"), "missing");
+  const ExerciseKind* kind = find_kind(e.kind);
+  if (!kind) {
+    std::string names;
+    for (auto* k : all_kinds()) names += fmt::format("{}{}", names.empty() ? "" : ", ", k->name());
+    r.fail(*t.get("kind"), Reader::qualified(prefix, "kind"),
+           fmt::format("unknown exercise kind '{}' (kinds: {})", e.kind, names));
+  }
+
+  e.difficulty = default_difficulty;
+  if (const toml::node* d = t.get("difficulty")) {
+    auto parsed = d->is_string() ? parse_difficulty(d->as_string()->get()) : std::nullopt;
+    if (!parsed) r.fail(*d, Reader::qualified(prefix, "difficulty"), "expected easy, standard or hard");
+    e.difficulty = *parsed;
+  }
+  if (const toml::node* p = t.get("points")) {
+    e.points = r.number(*p, Reader::qualified(prefix, "points"));
+    if (!(e.points >= 0)) r.fail(*p, Reader::qualified(prefix, "points"), "must be ≥ 0");
+  }
+
+  if (const toml::node* b = t.get("branches")) {
+    const std::string key = Reader::qualified(prefix, "branches");
+    const auto* table = b->as_table();
+    if (!table) r.fail(*b, key, "expected a table of weights, e.g. { hit = 2, miss = 1 }");
+    const auto known = kind->default_branches();
+    double total = 0;
+    for (const auto& [name, node] : *table) {
+      bool ok = false;
+      for (const auto& [k, w] : known) ok = ok || k == name.str();
+      if (!ok) {
+        std::string names;
+        for (const auto& [k, w] : known) names += fmt::format("{}{}", names.empty() ? "" : ", ", k);
+        r.fail(node, Reader::qualified(key, name.str()),
+               fmt::format("no branch '{}' for {} (branches: {})", name.str(), e.kind, names));
+      }
+      double w = r.number(node, Reader::qualified(key, name.str()));
+      if (!(w >= 0)) r.fail(node, Reader::qualified(key, name.str()), "weight must be ≥ 0");
+      total += w;
+    }
+    if (!(total > 0)) r.fail(*b, key, "at least one branch needs a positive weight");
+    // keep the kind's order, so that the schedule does not depend on the file's key order
+    for (const auto& [k, w] : known)
+      if (const toml::node* node = table->get(k)) e.branches.emplace_back(k, r.number(*node, k));
+  }
+
+  if (const toml::node* q = t.get("questions")) {
+    const std::string key = Reader::qualified(prefix, "questions");
+    const auto* table = q->as_table();
+    if (!table) r.fail(*q, key, "expected a table, e.g. { t = { points = 2 } }");
+    const auto fields = kind->fields();
+    for (const auto& [name, node] : *table) {
+      const std::string qkey = Reader::qualified(key, name.str());
+      bool ok = false;
+      for (const auto& f : fields) ok = ok || f == name.str();
+      if (!ok) {
+        std::string names;
+        for (const auto& f : fields) names += fmt::format("{}{}", names.empty() ? "" : ", ", f);
+        r.fail(node, qkey, fmt::format("{} asks no '{}' (fields: {})", e.kind, name.str(), names));
+      }
+      const auto* qt = node.as_table();
+      if (!qt) r.fail(node, qkey, "expected a table, e.g. { points = 2, abs = 0.01 }");
+      r.only(*qt, qkey, {"points", "rel", "abs", "whole_point"});
+      QuestionSpec qs;
+      if (auto* p = qt->get("points")) qs.points = r.number(*p, qkey + ".points");
+      if (auto* p = qt->get("rel")) qs.rel = r.number(*p, qkey + ".rel");
+      if (auto* p = qt->get("abs")) qs.abs = r.number(*p, qkey + ".abs");
+      if (auto* p = qt->get("whole_point")) {
+        if (!p->is_boolean()) r.fail(*p, qkey + ".whole_point", "expected true or false");
+        qs.whole_point = p->as_boolean()->get();
+      }
+      if ((qs.points && *qs.points < 0) || (qs.rel && *qs.rel < 0) || (qs.abs && *qs.abs < 0))
+        r.fail(node, qkey, "points and tolerances must be ≥ 0");
+      e.questions.emplace(std::string(name.str()), qs);
+    }
+  }
+
+  if (const toml::node* c = t.get("constraints")) {
+    const std::string key = Reader::qualified(prefix, "constraints");
+    const auto* table = c->as_table();
+    if (!table) r.fail(*c, key, "expected a table of numbers");
+    const auto known = kind->default_constraints();
+    for (const auto& [name, node] : *table) {
+      if (!known.count(std::string(name.str()))) {
+        std::string names;
+        for (const auto& [k, v] : known) names += fmt::format("{}{}", names.empty() ? "" : ", ", k);
+        r.fail(node, Reader::qualified(key, name.str()),
+               fmt::format("no constraint '{}' for {} (constraints: {})", name.str(), e.kind,
+                           names.empty() ? "none" : names));
+      }
+      e.constraints[std::string(name.str())] = r.number(node, Reader::qualified(key, name.str()));
+    }
+  }
+  return e;
+}
+
+}  // namespace
+
+WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    throw SpecError(fmt::format("{}:{}:{}: {}", source_name, e.source().begin.line,
+                                e.source().begin.column, e.description()));
+  }
+  Reader r(source_name);
+  r.only(root, "", {"title", "course", "author", "subject", "language", "page", "decimals",
+                    "difficulty", "follow_through", "exercise"});
+  WorksheetSpec spec;
+  spec.source = std::string(source_name);
+  spec.text = std::string(toml_text);
+  spec.title = r.string(root, "", "title", "Worksheet");
+  spec.course = r.string(root, "", "course", "");
+  spec.author = r.string(root, "", "author", "");
+  spec.subject = r.string(root, "", "subject", "");
+  spec.language = r.string(root, "", "language", "en");
+  {
+    bool known = false;
+    for (const auto& l : builtin_languages()) known = known || l == spec.language;
+    if (!known) r.fail(*root.get("language"), "language", "expected en or fr");
+  }
+  spec.page = r.string(root, "", "page", "A4");
+  if (spec.page != "A4" && spec.page != "letter")
+    r.fail(*root.get("page"), "page", "expected \"A4\" or \"letter\"");
+  if (const toml::node* d = root.get("decimals")) {
+    auto* i = d->as_integer();
+    if (!i || i->get() < 0 || i->get() > 6) r.fail(*d, "decimals", "expected an integer from 0 to 6");
+    spec.decimals = static_cast<int>(i->get());
+  }
+  if (const toml::node* f = root.get("follow_through")) {
+    if (!f->is_boolean()) r.fail(*f, "follow_through", "expected true or false");
+    spec.follow_through = f->as_boolean()->get();
+  }
+  Difficulty difficulty = Difficulty::standard;
+  if (const toml::node* d = root.get("difficulty")) {
+    auto parsed = d->is_string() ? parse_difficulty(d->as_string()->get()) : std::nullopt;
+    if (!parsed) r.fail(*d, "difficulty", "expected easy, standard or hard");
+    difficulty = *parsed;
+  }
+  const toml::node* exercises = root.get("exercise");
+  if (!exercises) throw SpecError(fmt::format("{}: no [[exercise]]: a worksheet needs at least one", source_name));
+  const auto* array = exercises->as_array();
+  if (!array || array->empty()) r.fail(*exercises, "exercise", "expected [[exercise]] tables");
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& node = *array->get(i);
+    const auto* t = node.as_table();
+    const std::string prefix = fmt::format("exercise[{}]", i + 1);
+    if (!t) r.fail(node, prefix, "expected a table");
+    spec.exercises.push_back(read_exercise(r, *t, prefix, difficulty, node));
+  }
+  return spec;
+}
+
+WorksheetSpec builtin_spec() {
+  static const WorksheetSpec spec = parse_spec(*embedded_file("course.toml"), "templates/course.toml");
+  return spec;
+}
+
+}  // namespace epure

@@ -1,0 +1,60 @@
+#pragma once
+// A worksheet spec: the hand-edited TOML file a teacher writes (templates/course.toml is the
+// built-in one). Parsing validates everything against the exercise kinds, and an error names the
+// file, the line and the key, so that a typo never silently becomes a default.
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace epure {
+
+enum class Difficulty { easy, standard, hard };
+std::string_view to_string(Difficulty d);
+std::optional<Difficulty> parse_difficulty(std::string_view s);
+
+// Per-question settings, by the question's field ("t", "P" for both P.x and P.y, "faces").
+struct QuestionSpec {
+  std::optional<double> points;
+  std::optional<double> rel;  // overrides the derived relative tolerance
+  std::optional<double> abs;  // overrides the derived absolute tolerance (a floor)
+  bool whole_point = false;   // mark a point by its distance to the expected point, as a whole
+};
+
+struct ExerciseSpec {
+  std::string kind;
+  Difficulty difficulty = Difficulty::standard;
+  std::vector<std::pair<std::string, double>> branches;  // empty: the kind's defaults
+  std::map<std::string, QuestionSpec> questions;
+  std::map<std::string, double> constraints;  // overrides of the kind's defaults
+  double points = 1;  // default points of each question
+};
+
+struct WorksheetSpec {
+  std::string source;  // where it was read from, for messages
+  std::string title;
+  std::string course;
+  std::string author;
+  std::string subject;
+  std::string language = "en";
+  std::string page = "A4";  // "A4" or "letter"
+  int decimals = 2;         // students round data-derived answers to this many decimals
+  bool follow_through = true;
+  std::vector<ExerciseSpec> exercises;
+  std::string text;  // the spec's own text, as read (travels in key.json)
+};
+
+class SpecError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws SpecError "<source>:<line>:<column>: key '<key>': <why>".
+WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_name);
+// The course's worksheet, built in (templates/course.toml).
+WorksheetSpec builtin_spec();
+
+}  // namespace epure
