@@ -2,6 +2,7 @@
 # looked up by epure::embedded_file("text/en.toml"). Run at build time, so an edited template is
 # rebuilt into the binary.
 set(content "// Generated from templates/ by src/embed/embed.cmake: do not edit.\n#include \"embed/embedded.h\"\n\nnamespace epure {\nnamespace {\nstruct Entry { std::string_view name, text; };\nconstexpr Entry kEntries[] = {\n")
+string(REPLACE "|" ";" INPUTS "${INPUTS}")
 foreach(file ${INPUTS})
   file(RELATIVE_PATH name ${BASE} ${file})
   file(READ ${file} text)

@@ -9,18 +9,18 @@ namespace epure::exact {
 
 namespace {
 
-__int128 gcd128(__int128 a, __int128 b) {
+Wide gcd128(Wide a, Wide b) {
   if (a < 0) a = -a;
   if (b < 0) b = -b;
   while (b != 0) {
-    __int128 t = a % b;
+    Wide t = a % b;
     a = b;
     b = t;
   }
   return a;
 }
 
-constexpr __int128 kMax = INT64_MAX;
+constexpr Wide kMax = INT64_MAX;
 
 std::int64_t isqrt(std::int64_t n) {
   auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(n)));
@@ -31,13 +31,13 @@ std::int64_t isqrt(std::int64_t n) {
 
 }  // namespace
 
-Rational Rational::from_wide(__int128 n, __int128 d) {
+Rational Rational::from_wide(Wide n, Wide d) {
   if (d == 0) throw std::domain_error("division by zero");
   if (d < 0) {
     n = -n;
     d = -d;
   }
-  __int128 g = gcd128(n, d);
+  Wide g = gcd128(n, d);
   if (g > 1) {
     n /= g;
     d /= g;
@@ -52,19 +52,19 @@ Rational Rational::from_wide(__int128 n, __int128 d) {
 Rational::Rational(std::int64_t n, std::int64_t d) { *this = from_wide(n, d); }
 
 Rational operator+(Rational a, Rational b) {
-  return Rational::from_wide(__int128(a.num_) * b.den_ + __int128(b.num_) * a.den_,
-                             __int128(a.den_) * b.den_);
+  return Rational::from_wide(Wide(a.num_) * b.den_ + Wide(b.num_) * a.den_,
+                             Wide(a.den_) * b.den_);
 }
 Rational operator-(Rational a, Rational b) { return a + (-b); }
 Rational operator*(Rational a, Rational b) {
-  return Rational::from_wide(__int128(a.num_) * b.num_, __int128(a.den_) * b.den_);
+  return Rational::from_wide(Wide(a.num_) * b.num_, Wide(a.den_) * b.den_);
 }
 Rational operator/(Rational a, Rational b) {
   if (b.num_ == 0) throw std::domain_error("division by zero");
-  return Rational::from_wide(__int128(a.num_) * b.den_, __int128(a.den_) * b.num_);
+  return Rational::from_wide(Wide(a.num_) * b.den_, Wide(a.den_) * b.num_);
 }
 bool operator<(Rational a, Rational b) {
-  return __int128(a.num_) * b.den_ < __int128(b.num_) * a.den_;
+  return Wide(a.num_) * b.den_ < Wide(b.num_) * a.den_;
 }
 
 std::optional<Rational> Rational::sqrt() const {
@@ -100,7 +100,7 @@ Surd Surd::sqrt(Rational r) {
   if (r.sign() < 0) throw std::domain_error("square root of a negative number");
   if (auto s = r.sqrt()) return Surd(*s);
   // √(n/d) = √(n·d)/d
-  const __int128 nd = __int128(r.num()) * r.den();
+  const Wide nd = Wide(r.num()) * r.den();
   if (nd > kMax) throw ExactOverflow();
   return Surd(Rational(0), Rational(1, r.den()), static_cast<std::int64_t>(nd));
 }
@@ -135,10 +135,10 @@ struct Parts {  // (p + q√c)/d, d > 0
 };
 
 Parts parts(const Surd& s) {
-  const __int128 d = std::lcm(s.a().den(), s.b().den());
+  const Wide d = std::lcm(s.a().den(), s.b().den());
   if (d > kMax) throw ExactOverflow();
-  const __int128 p = __int128(s.a().num()) * (d / s.a().den());
-  const __int128 q = __int128(s.b().num()) * (d / s.b().den());
+  const Wide p = Wide(s.a().num()) * (d / s.a().den());
+  const Wide q = Wide(s.b().num()) * (d / s.b().den());
   if (p > kMax || p < -kMax || q > kMax || q < -kMax) throw ExactOverflow();
   return {static_cast<std::int64_t>(p), static_cast<std::int64_t>(q), s.c(),
           static_cast<std::int64_t>(d)};

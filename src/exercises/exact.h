@@ -13,6 +13,9 @@
 
 namespace epure::exact {
 
+// 128-bit intermediates (a GCC/Clang extension, hence __extension__ for -Wpedantic).
+__extension__ typedef __int128 Wide;
+
 struct ExactOverflow : std::overflow_error {
   ExactOverflow() : std::overflow_error("exact value out of 64-bit range") {}
 };
@@ -41,7 +44,7 @@ class Rational {
   std::optional<Rational> sqrt() const;
 
  private:
-  static Rational from_wide(__int128 n, __int128 d);
+  static Rational from_wide(Wide n, Wide d);
   std::int64_t num_ = 0, den_ = 1;
 };
 

@@ -142,7 +142,7 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
   }
   fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::point, {}});
   lines_.push_back({id(field), prompt(field),
-                    fmt::format("({}{} {})", shown[0], ctx_.numbers.decimal_comma ? " ;" : ",", shown[1])});
+                    fmt::format("({}{} {})", shown[0], ctx_.numbers.decimal_comma ? "\u00a0;" : ",", shown[1])});
 }
 
 void Questions::boolean(std::string_view field, bool value) {
@@ -271,7 +271,7 @@ std::string shown(const ExerciseContext& ctx, double value, const std::optional<
 
 std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
                         const std::optional<exact::Surd>& ex, const std::optional<exact::Surd>& ey) {
-  return fmt::format("({}{} {})", shown(ctx, p.x, ex), ctx.numbers.decimal_comma ? " ;" : ",",
+  return fmt::format("({}{} {})", shown(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
                      shown(ctx, p.y, ey));
 }
 
@@ -281,6 +281,28 @@ double grid_value(Rng& rng, double lo, double hi, Difficulty d) {
                                            static_cast<std::int64_t>(std::floor(hi * 10)))) / 10.0;
   return static_cast<double>(rng.integer(static_cast<std::int64_t>(std::ceil(lo)),
                                          static_cast<std::int64_t>(std::floor(hi))));
+}
+
+std::string equals_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {
+  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
+  std::string pretty;
+  if (exact) {
+    try {
+      pretty = exact->pretty();
+    } catch (const exact::ExactOverflow&) {
+    }
+  }
+  // the same length limit as shown(): a longer exact form does not help a reader
+  if (pretty.empty() || pretty.size() > 16) return fmt::format("≈ {}", rounded);
+  pretty = ctx.numbers.localise(pretty);
+  if (!exact->is_rational()) return fmt::format("= {} ≈ {}", pretty, rounded);
+  const std::int64_t den = exact->a().den();
+  if (den == 1) return fmt::format("= {}", pretty);
+  std::int64_t pow10 = 1;
+  for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
+  // a fraction that stops within the asked decimals is written out exactly
+  if (pow10 % den == 0) return fmt::format("= {} = {}", pretty, ctx.numbers.datum(value, ctx.decimals));
+  return fmt::format("= {} ≈ {}", pretty, rounded);
 }
 
 }  // namespace epure::kinds

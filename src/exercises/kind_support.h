@@ -127,4 +127,8 @@ std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
 // hard.
 double grid_value(Rng& rng, double lo, double hi, Difficulty d);
 
+// A worked step's result with its relation sign, as the key writes it after a formula: "= 5",
+// "= 1/4 = 0.25", "= √13 ≈ 3.61", or "≈ 2.17" when there is no short exact form.
+std::string equals_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact);
+
 }  // namespace epure::kinds

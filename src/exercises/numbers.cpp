@@ -47,23 +47,23 @@ std::string NumberStyle::rounded(double x, int decimals) const {
 }
 
 std::string NumberStyle::point(double x, double y, int max_decimals) const {
-  return fmt::format("({}{} {})", datum(x, max_decimals), decimal_comma ? " ;" : ",",
+  return fmt::format("({}{} {})", datum(x, max_decimals), decimal_comma ? "\u00a0;" : ",",
                      datum(y, max_decimals));
 }
 
 std::string NumberStyle::point(double x, double y, double z, int max_decimals) const {
-  const char* sep = decimal_comma ? " ;" : ",";
+  const char* sep = decimal_comma ? "\u00a0;" : ",";
   return fmt::format("({}{} {}{} {})", datum(x, max_decimals), sep, datum(y, max_decimals), sep,
                      datum(z, max_decimals));
 }
 
 std::string NumberStyle::rounded_point(double x, double y, int decimals) const {
-  return fmt::format("({}{} {})", rounded(x, decimals), decimal_comma ? " ;" : ",",
+  return fmt::format("({}{} {})", rounded(x, decimals), decimal_comma ? "\u00a0;" : ",",
                      rounded(y, decimals));
 }
 
 std::string NumberStyle::rounded_point(double x, double y, double z, int decimals) const {
-  const char* sep = decimal_comma ? " ;" : ",";
+  const char* sep = decimal_comma ? "\u00a0;" : ",";
   return fmt::format("({}{} {}{} {})", rounded(x, decimals), sep, rounded(y, decimals), sep,
                      rounded(z, decimals));
 }

@@ -1,0 +1,107 @@
+#include "exercises/worksheet.h"
+
+#include <fmt/format.h>
+
+#include "exercises/numbers.h"
+#include "exercises/texts.h"
+
+namespace epure {
+
+WorksheetSet::WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOptions& options)
+    : spec_(std::move(spec)), seed_(seed) {
+  if (seed_ > kMaxSeed)
+    throw SpecError(fmt::format("seed {} is out of range: sheet ids hold seeds from 0 to {}", seed_, kMaxSeed));
+  language_ = options.language.value_or(spec_.language);
+  Texts::builtin(language_);  // throws for a language without texts
+  if (options.difficulty)
+    for (auto& e : spec_.exercises) e.difficulty = *options.difficulty;
+  for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {
+    const auto& e = spec_.exercises[slot];
+    auto weights = e.branches.empty() ? find_kind(e.kind)->default_branches() : e.branches;
+    schedules_.emplace_back(std::move(weights), mix64(seed_ ^ (0x5EEDULL + slot)));
+  }
+  used_.resize(spec_.exercises.size());
+}
+
+ExerciseContext WorksheetSet::context(int slot, int n, const std::string& branch) const {
+  const auto& texts = Texts::builtin(language_);
+  return ExerciseContext{n, spec_.exercises[slot], texts, NumberStyle::for_language(language_),
+                         spec_.decimals, branch};
+}
+
+ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch) const {
+  const std::uint64_t sheet_seed = mix64(mix64(seed_) + static_cast<std::uint64_t>(index));
+  Rng rng(sheet_seed, (static_cast<std::uint64_t>(slot) << 16) | static_cast<std::uint64_t>(attempt));
+  const ExerciseContext ctx = context(slot, slot + 1, branch);
+  return find_kind(spec_.exercises[slot].kind)->make(rng, ctx);
+}
+
+Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
+  const int index = next_index_++;
+  Sheet sheet;
+  sheet.id = SheetId{kDrawVersion, seed_, index};
+  for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {
+    const std::string b = branch(index, static_cast<int>(slot));
+    int attempt = 0;
+    ExerciseInstance inst = first_attempts ? std::move((*first_attempts)[slot])
+                                           : draw(index, static_cast<int>(slot), attempt, b);
+    while (used_[slot].count(inst.fingerprint)) inst = draw(index, static_cast<int>(slot), ++attempt, b);
+    used_[slot].insert(inst.fingerprint);
+    sheet.exercises.push_back(std::move(inst));
+  }
+  return sheet;
+}
+
+Sheet WorksheetSet::rebuild(const SheetId& id) {
+  if (id.version != kDrawVersion)
+    throw SpecError(fmt::format("sheet {} was drawn by generator version {}; this epure draws version {} "
+                                "and would build a different sheet: use the epure that made it",
+                                id.str(), id.version, kDrawVersion));
+  if (id.seed != seed_)
+    throw SpecError(fmt::format("sheet {} belongs to the set of seed {}, not {}", id.str(), id.seed, seed_));
+  if (id.index < next_index_) {
+    // replay from the start: the fingerprints of earlier sheets decide collisions
+    for (auto& u : used_) u.clear();
+    next_index_ = 0;
+  }
+  while (next_index_ < id.index) next();
+  return next();
+}
+
+namespace {
+
+render::PageSize page_size(const std::string& page) {
+  return page == "letter" ? render::PageSize::letter() : render::PageSize::a4();
+}
+
+}  // namespace
+
+render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
+  const auto& texts = Texts::builtin(language_);
+  render::Document doc;
+  doc.title = texts.format("common.sheet_title", {{"title", spec_.title}});
+  doc.course = spec_.course;
+  doc.sheet_id = sheet.id.str();
+  doc.language = language_;
+  doc.header_note = texts.get("common.name_fields");
+  doc.page = page_size(spec_.page);
+  render::Section intro;
+  intro.add(render::Paragraph{texts.format("common.rounding", {{"decimals", std::to_string(spec_.decimals)}}), true});
+  doc.sections.push_back(std::move(intro));
+  for (const auto& e : sheet.exercises) doc.sections.push_back(e.sheet);
+  return doc;
+}
+
+render::Document WorksheetSet::key_document(const Sheet& sheet) const {
+  const auto& texts = Texts::builtin(language_);
+  render::Document doc;
+  doc.title = texts.format("common.key_title", {{"title", spec_.title}});
+  doc.course = spec_.course;
+  doc.sheet_id = sheet.id.str();
+  doc.language = language_;
+  doc.page = page_size(spec_.page);
+  for (const auto& e : sheet.exercises) doc.sections.push_back(e.key);
+  return doc;
+}
+
+}  // namespace epure

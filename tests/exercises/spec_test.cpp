@@ -1,0 +1,92 @@
+// Worksheet specs: the built-in course worksheet parses; every mistake is reported with file,
+// line and key.
+#include <doctest/doctest.h>
+
+#include "exercises/spec.h"
+
+using epure::parse_spec;
+using epure::SpecError;
+
+namespace {
+std::string error_of(const std::string& toml) {
+  try {
+    parse_spec(toml, "my.toml");
+  } catch (const SpecError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("a minimal spec takes the defaults") {
+  auto spec = parse_spec("[[exercise]]\nkind = \"projection\"\n", "min.toml");
+  CHECK(spec.language == "en");
+  CHECK(spec.decimals == 2);
+  REQUIRE(spec.exercises.size() == 1);
+  CHECK(spec.exercises[0].difficulty == epure::Difficulty::standard);
+  CHECK(spec.exercises[0].branches.empty());
+}
+
+TEST_CASE("spec settings are read") {
+  auto spec = parse_spec(R"(
+title = "T"
+language = "fr"
+decimals = 3
+difficulty = "easy"
+[[exercise]]
+kind = "projection"
+difficulty = "hard"
+branches = { after = 1, before = 2 }
+questions = { t = { points = 3, abs = 0.02 }, P = { whole_point = true } }
+constraints = { t_margin = 0.2 }
+)", "s.toml");
+  CHECK(spec.language == "fr");
+  CHECK(spec.decimals == 3);
+  const auto& e = spec.exercises.at(0);
+  CHECK(e.difficulty == epure::Difficulty::hard);
+  // the kind's order, not the file's
+  REQUIRE(e.branches.size() == 2);
+  CHECK(e.branches[0].first == "before");
+  CHECK(e.questions.at("t").points == 3);
+  CHECK(e.questions.at("P").whole_point);
+  CHECK(e.constraints.at("t_margin") == doctest::Approx(0.2).epsilon(1e-15));
+}
+
+TEST_CASE("every mistake names the file, the line and the key") {
+  SUBCASE("1. not TOML") { CHECK(error_of("title = \n").find("my.toml:1:") == 0); }
+  SUBCASE("2. unknown top-level key") {
+    const auto e = error_of("titel = \"x\"\n[[exercise]]\nkind = \"projection\"\n");
+    CHECK(e.find("my.toml:1:") == 0);
+    CHECK(e.find("'titel'") != std::string::npos);
+  }
+  SUBCASE("3. unknown kind") {
+    const auto e = error_of("[[exercise]]\nkind = \"ray_torus\"\n");
+    CHECK(e.find("my.toml:2:") == 0);
+    CHECK(e.find("exercise[1].kind") != std::string::npos);
+  }
+  SUBCASE("4. unknown branch") {
+    const auto e = error_of("[[exercise]]\nkind = \"projection\"\nbranches = { inside = 1 }\n");
+    CHECK(e.find("my.toml:3:") == 0);
+    CHECK(e.find("exercise[1].branches.inside") != std::string::npos);
+  }
+  SUBCASE("5. unknown question field") {
+    const auto e = error_of("[[exercise]]\nkind = \"projection\"\nquestions = { I = { points = 1 } }\n");
+    CHECK(e.find("exercise[1].questions.I") != std::string::npos);
+  }
+  SUBCASE("6. bad difficulty") {
+    CHECK(error_of("difficulty = \"medium\"\n[[exercise]]\nkind = \"projection\"\n").find("'difficulty'") != std::string::npos);
+  }
+  SUBCASE("7. bad language, page, decimals") {
+    CHECK(error_of("language = \"de\"\n[[exercise]]\nkind = \"projection\"\n").find("'language'") != std::string::npos);
+    CHECK(error_of("page = \"A5\"\n[[exercise]]\nkind = \"projection\"\n").find("'page'") != std::string::npos);
+    CHECK(error_of("decimals = 9\n[[exercise]]\nkind = \"projection\"\n").find("'decimals'") != std::string::npos);
+  }
+  SUBCASE("8. no exercise") { CHECK(error_of("title = \"x\"\n").find("no [[exercise]]") != std::string::npos); }
+  SUBCASE("9. negative weight, zero total") {
+    CHECK(error_of("[[exercise]]\nkind = \"projection\"\nbranches = { before = -1 }\n").find("≥ 0") != std::string::npos);
+    CHECK(error_of("[[exercise]]\nkind = \"projection\"\nbranches = { before = 0 }\n").find("positive") != std::string::npos);
+  }
+  SUBCASE("10. unknown constraint") {
+    CHECK(error_of("[[exercise]]\nkind = \"projection\"\nconstraints = { speed = 1 }\n").find("constraints.speed") != std::string::npos);
+  }
+}

@@ -1,0 +1,78 @@
+// A set of worksheets: deterministic, no instance repeated within a set, sheets rebuilt from
+// their ids alone, ids of another draw version or set refused.
+#include <doctest/doctest.h>
+
+#include <set>
+
+#include "exercises/worksheet.h"
+
+namespace {
+epure::WorksheetSpec two_projections() {
+  return epure::parse_spec(R"(
+title = "Test"
+[[exercise]]
+kind = "projection"
+difficulty = "easy"
+[[exercise]]
+kind = "projection"
+)", "test.toml");
+}
+}  // namespace
+
+TEST_CASE("same spec and seed give the same sheets") {
+  epure::WorksheetSet a(two_projections(), 5), b(two_projections(), 5), c(two_projections(), 6);
+  bool differs = false;
+  for (int i = 0; i < 20; ++i) {
+    auto sa = a.next(), sb = b.next(), sc = c.next();
+    CHECK(sa.id.str() == sb.id.str());
+    for (std::size_t e = 0; e < sa.exercises.size(); ++e) {
+      CHECK(sa.exercises[e].instance == sb.exercises[e].instance);
+      CHECK(sa.exercises[e].solution == sb.exercises[e].solution);
+      differs = differs || sa.exercises[e].instance != sc.exercises[e].instance;
+    }
+  }
+  CHECK(differs);  // another seed, other sheets
+}
+
+TEST_CASE("no two sheets of a set share an instance of an exercise") {
+  epure::WorksheetSet set(two_projections(), 9);
+  std::set<std::string> seen[2];
+  for (int i = 0; i < 300; ++i) {
+    auto sheet = set.next();
+    for (int e = 0; e < 2; ++e) CHECK(seen[e].insert(sheet.exercises[e].instance).second);
+  }
+}
+
+TEST_CASE("a sheet is rebuilt from its id, and only under its own draw version and seed") {
+  epure::WorksheetSet set(two_projections(), 11);
+  std::vector<epure::Sheet> sheets;
+  for (int i = 0; i < 40; ++i) sheets.push_back(set.next());
+  epure::WorksheetSet fresh(two_projections(), 11);
+  for (int i : {37, 3, 0, 39}) {
+    CAPTURE(i);
+    auto rebuilt = fresh.rebuild(sheets[i].id);
+    CHECK(rebuilt.id.str() == sheets[i].id.str());
+    for (std::size_t e = 0; e < 2; ++e) CHECK(rebuilt.exercises[e].instance == sheets[i].exercises[e].instance);
+  }
+  epure::SheetId other_version = sheets[0].id;
+  other_version.version = epure::kDrawVersion + 1;
+  CHECK_THROWS_AS(fresh.rebuild(other_version), epure::SpecError);
+  epure::SheetId other_seed = sheets[0].id;
+  other_seed.seed = 12;
+  CHECK_THROWS_AS(fresh.rebuild(other_seed), epure::SpecError);
+}
+
+TEST_CASE("parallel first attempts give the same sheets as sequential drawing") {
+  epure::WorksheetSet sequential(two_projections(), 13), parallel(two_projections(), 13);
+  for (int i = 0; i < 50; ++i) {
+    std::vector<epure::ExerciseInstance> first;
+    for (int s = 0; s < 2; ++s) first.push_back(parallel.draw(i, s, 0, parallel.branch(i, s)));
+    auto a = sequential.next();
+    auto b = parallel.next(&first);
+    for (int s = 0; s < 2; ++s) CHECK(a.exercises[s].instance == b.exercises[s].instance);
+  }
+}
+
+TEST_CASE("a seed beyond what an id can hold is refused") {
+  CHECK_THROWS_AS(epure::WorksheetSet(two_projections(), epure::kMaxSeed + 1), epure::SpecError);
+}
