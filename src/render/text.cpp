@@ -1,0 +1,177 @@
+#include "render/text.h"
+
+#include <cstddef>
+#include <utility>
+
+#include "render/font_metrics.h"
+#include "render/utf8.h"
+
+namespace epure::render {
+namespace {
+
+constexpr std::size_t npos = std::string_view::npos;
+
+bool escapable(char c) { return c == '{' || c == '}' || c == '\\'; }
+
+// Index of the '}' closing the '{' at s[open], skipping escapes and nested groups; npos when the
+// group is never closed (its markup is then taken literally).
+std::size_t closing_brace(std::string_view s, std::size_t open) {
+  int depth = 0;
+  for (std::size_t j = open; j < s.size(); ++j) {
+    if (s[j] == '\\' && j + 1 < s.size() && escapable(s[j + 1])) {
+      ++j;
+    } else if (s[j] == '{') {
+      ++depth;
+    } else if (s[j] == '}' && --depth == 0) {
+      return j;
+    }
+  }
+  return npos;
+}
+
+class Parser {
+ public:
+  Parser(std::string_view s, bool bold) : s_(s), bold_(bold) {}
+
+  std::vector<TextRun> run() && {
+    parse(0, s_.size(), Shift::none, false);
+    return std::move(out_);
+  }
+
+ private:
+  void emit(std::string_view text, Shift shift, bool arrow) {
+    if (out_.empty() || out_.back().shift != shift || out_.back().arrow != arrow) {
+      out_.push_back(TextRun{std::string(), shift, arrow, bold_});
+    }
+    out_.back().text += text;
+  }
+
+  // Parses s_[begin, end); a group inherits its parent's shift (no script of a script) and arrow.
+  void parse(std::size_t begin, std::size_t end, Shift shift, bool arrow) {
+    constexpr std::string_view kVec = "\\vec{";
+    std::size_t i = begin;
+    while (i < end) {
+      const char c = s_[i];
+      if (c == '\\' && i + 1 < end && escapable(s_[i + 1])) {
+        emit(s_.substr(i + 1, 1), shift, arrow);
+        i += 2;
+        continue;
+      }
+      if (c == '\\' && s_.substr(i, kVec.size()) == kVec) {
+        const std::size_t close = closing_brace(s_, i + kVec.size() - 1);
+        if (close != npos && close < end) {
+          parse(i + kVec.size(), close, shift, true);
+          i = close + 1;
+          continue;
+        }
+      }
+      if ((c == '_' || c == '^') && i + 1 < end && s_[i + 1] == '{') {
+        const std::size_t close = closing_brace(s_, i + 1);
+        if (close != npos && close < end) {
+          const Shift inner = shift != Shift::none ? shift : c == '_' ? Shift::sub : Shift::super;
+          parse(i + 2, close, inner, arrow);
+          i = close + 1;
+          continue;
+        }
+      }
+      emit(s_.substr(i, 1), shift, arrow);
+      ++i;
+    }
+  }
+
+  std::string_view s_;
+  bool bold_;
+  std::vector<TextRun> out_;
+};
+
+double advance_sum(std::string_view text, Face face) {
+  double em = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const utf8::Decoded d = utf8::decode(text, i);
+    em += advance_em(d.cp, face);
+    i += d.length;
+  }
+  return em;
+}
+
+// The words of one line of `rich` (no '\n' in it): split at spaces outside markup groups.
+std::vector<std::string_view> words(std::string_view rich) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  const auto flush = [&](std::size_t end) {
+    if (end > start) out.push_back(rich.substr(start, end - start));
+  };
+  for (std::size_t j = 0; j < rich.size(); ++j) {
+    const char c = rich[j];
+    if (c == '\\' && j + 1 < rich.size() && escapable(rich[j + 1])) {
+      ++j;
+    } else if (c == '{') {
+      const std::size_t close = closing_brace(rich, j);
+      if (close != npos) j = close;
+    } else if (c == ' ') {
+      flush(j);
+      start = j + 1;
+    }
+  }
+  flush(rich.size());
+  return out;
+}
+
+}  // namespace
+
+std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight) {
+  return Parser(rich, weight == Weight::bold).run();
+}
+
+double text_width(const std::vector<TextRun>& runs, double font_size) {
+  double width = 0;
+  for (const TextRun& r : runs) {
+    const double scale = r.shift == Shift::none ? 1.0 : kScriptScale;
+    width += advance_sum(r.text, r.bold ? Face::bold : Face::regular) * scale;
+  }
+  return width * font_size;
+}
+
+double text_width(std::string_view rich, double font_size, Weight weight) {
+  return text_width(parse_rich_text(rich, weight), font_size);
+}
+
+std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double font_size,
+                                                 double max_width, Weight weight) {
+  std::vector<std::vector<TextRun>> lines;
+  if (rich.empty()) return lines;
+  const double space = advance_em(U' ', weight == Weight::bold ? Face::bold : Face::regular) * font_size;
+  const auto finish = [&](const std::string& line) { lines.push_back(parse_rich_text(line, weight)); };
+
+  std::size_t start = 0;
+  for (;;) {
+    // A '\n' is a hard break: each piece between them is wrapped on its own.
+    const std::size_t nl = rich.find('\n', start);
+    const std::string_view piece = rich.substr(start, nl == npos ? npos : nl - start);
+    std::string line;
+    double line_width = 0;
+    bool any = false;
+    for (std::string_view w : words(piece)) {
+      const double ww = text_width(w, font_size, weight);
+      if (any && line_width + space + ww > max_width) {
+        finish(line);
+        line.clear();
+        line_width = 0;
+        any = false;
+      }
+      if (any) {
+        line += ' ';
+        line_width += space;
+      }
+      line += w;
+      line_width += ww;
+      any = true;
+    }
+    finish(line);  // an empty piece (two '\n' in a row) gives an empty line
+    if (nl == npos) break;
+    start = nl + 1;
+  }
+  return lines;
+}
+
+}  // namespace epure::render

@@ -1,0 +1,168 @@
+#include "render/text.h"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "render/font_metrics.h"
+#include "render/utf8.h"
+
+using namespace epure::render;
+
+namespace {
+
+// Widths are sums of a few table entries: exact up to rounding in the last bits.
+constexpr double kEps = 1e-12;
+
+// DejaVu Sans advances at 2048 units per em, from the font (FreeType, unhinted).
+constexpr double kN = 1298.0 / 2048.0;
+constexpr double kA = 1255.0 / 2048.0;
+
+std::string joined(const std::vector<TextRun>& runs) {
+  std::string s;
+  for (const auto& r : runs) s += r.text;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("parse_rich_text: the three markups, escapes, and literal leftovers") {
+  SUBCASE("1. plain text is one run") {
+    auto runs = parse_rich_text("AB = 3");
+    REQUIRE(runs.size() == 1);
+    CHECK(runs[0].text == "AB = 3");
+    CHECK(runs[0].shift == Shift::none);
+    CHECK_FALSE(runs[0].arrow);
+  }
+  SUBCASE("2. subscript") {
+    auto runs = parse_rich_text("t_{ab} = 0");
+    REQUIRE(runs.size() == 3);
+    CHECK(runs[0].text == "t");
+    CHECK(runs[1].text == "ab");
+    CHECK(runs[1].shift == Shift::sub);
+    CHECK(runs[2].text == " = 0");
+  }
+  SUBCASE("3. superscript") {
+    auto runs = parse_rich_text("r^{2}");
+    REQUIRE(runs.size() == 2);
+    CHECK(runs[1].shift == Shift::super);
+    CHECK(runs[1].text == "2");
+  }
+  SUBCASE("4. vector arrow") {
+    auto runs = parse_rich_text("\\vec{AB}·\\vec{AC}");
+    REQUIRE(runs.size() == 3);
+    CHECK(runs[0].arrow);
+    CHECK(runs[0].text == "AB");
+    CHECK_FALSE(runs[1].arrow);
+    CHECK(runs[2].arrow);
+  }
+  SUBCASE("5. escaped braces and backslash are literal") {
+    auto runs = parse_rich_text("\\{x\\} \\\\ a_\\{b\\}");
+    REQUIRE(runs.size() == 1);
+    CHECK(runs[0].text == "{x} \\ a_{b}");
+  }
+  SUBCASE("6. unbalanced braces are taken literally") {
+    CHECK(joined(parse_rich_text("a_{b")) == "a_{b");
+    CHECK(joined(parse_rich_text("\\vec{AB")) == "\\vec{AB");
+    CHECK(joined(parse_rich_text("}{")) == "}{");
+    CHECK(parse_rich_text("a_{b").size() == 1);
+  }
+  SUBCASE("7. nested groups combine: a script keeps its shift, an arrow inside it too") {
+    auto runs = parse_rich_text("x_{\\vec{u}2^{3}}");
+    REQUIRE(runs.size() == 3);
+    CHECK(runs[1].text == "u");
+    CHECK(runs[1].shift == Shift::sub);
+    CHECK(runs[1].arrow);
+    CHECK(runs[2].text == "23");
+    CHECK(runs[2].shift == Shift::sub);
+  }
+  SUBCASE("8. empty text and empty groups give no empty runs") {
+    CHECK(parse_rich_text("").empty());
+    CHECK(joined(parse_rich_text("a_{}b")) == "ab");
+  }
+  SUBCASE("9. weight is carried to every run") {
+    for (const auto& r : parse_rich_text("t_{ab}", Weight::bold)) CHECK(r.bold);
+  }
+}
+
+TEST_CASE("text_width: DejaVu Sans advances, scripts scaled") {
+  CHECK(text_width("n", 10) == doctest::Approx(10 * kN).epsilon(kEps));
+  CHECK(text_width("an", 12) == doctest::Approx(12 * (kA + kN)).epsilon(kEps));
+  // A subscript is set at kScriptScale of the size.
+  CHECK(text_width("n_{n}", 10) == doctest::Approx(10 * kN * (1 + kScriptScale)).epsilon(kEps));
+  // The arrow of \vec sits above its run and takes no width.
+  CHECK(text_width("\\vec{an}", 10) == doctest::Approx(text_width("an", 10)).epsilon(kEps));
+  CHECK(text_width("n", 10, Weight::bold) > text_width("n", 10));
+  CHECK(text_width("", 10) == doctest::Approx(0).epsilon(kEps));
+  // A character outside the table (a CJK ideograph) is measured as a typical glyph.
+  CHECK(text_width("\u4E00", 10) == doctest::Approx(10 * kFallbackAdvanceEm).epsilon(kEps));
+  // Invalid UTF-8 is measured too (one fallback glyph per bad byte), never crashes.
+  CHECK(text_width(std::string("a\xff"), 10) == doctest::Approx(10 * (kA + kFallbackAdvanceEm)).epsilon(kEps));
+}
+
+TEST_CASE("font metrics cover the characters of the course's texts") {
+  const std::string needed =
+      "éèêàçùôîïœÉÈÀÇŒëüâû«»·∧√≈‖→←⇒²³⁻¹∈≤≥−×∘θπ∞⊥∠αβγδλμΔ…–—’ ";
+  for (std::size_t i = 0; i < needed.size();) {
+    const auto d = epure::render::utf8::decode(needed, i);
+    CAPTURE(std::string(needed.substr(i, d.length)));
+    CHECK(d.valid);
+    CHECK(has_glyph(d.cp));
+    i += d.length;
+  }
+  const auto v = vertical_metrics();
+  CHECK(v.cap_height == doctest::Approx(1493.0 / 2048).epsilon(kEps));
+  CHECK(v.ascent > v.cap_height);
+  CHECK(v.descent > 0);
+}
+
+TEST_CASE("wrap_rich_text: greedy, at spaces, never inside a group") {
+  const double size = 10;
+  SUBCASE("1. every line fits, and the words come back in order") {
+    const std::string text =
+        "The projection of C on the line AB is the point P such that \\vec{PC}·\\vec{AB} = 0; "
+        "its parameter t_{P} is found from the dot products.";
+    for (double width : {40.0, 80.0, 120.0, 200.0, 1000.0}) {
+      CAPTURE(width);
+      auto lines = wrap_rich_text(text, size, width);
+      REQUIRE_FALSE(lines.empty());
+      std::string back;
+      for (const auto& l : lines) {
+        if (l.size() > 0 && text_width(l, size) > width) {
+          // Only a single word may overflow.
+          CHECK(joined(l).find(' ') == std::string::npos);
+        }
+        back += (back.empty() ? "" : " ") + joined(l);
+      }
+      CHECK(back == joined(parse_rich_text(text)));
+    }
+  }
+  SUBCASE("2. a word wider than the line gets its own line") {
+    auto lines = wrap_rich_text("a Supercalifragilistic b", size, 30);
+    REQUIRE(lines.size() == 3);
+    CHECK(joined(lines[1]) == "Supercalifragilistic");
+  }
+  SUBCASE("3. a space inside markup does not break") {
+    auto lines = wrap_rich_text("x \\vec{A B} y", size, 1);
+    REQUIRE(lines.size() == 3);
+    CHECK(joined(lines[1]) == "A B");
+    CHECK(lines[1][0].arrow);
+  }
+  SUBCASE("4. a greedy line takes as many words as fit") {
+    const double w = text_width("aa aa", size);
+    auto lines = wrap_rich_text("aa aa aa aa", size, w + 1e-9);
+    REQUIRE(lines.size() == 2);
+    CHECK(joined(lines[0]) == "aa aa");
+  }
+  SUBCASE("5. newlines force breaks; empty text gives no line") {
+    auto lines = wrap_rich_text("a\n\nb", size, 1000);
+    REQUIRE(lines.size() == 3);
+    CHECK(lines[1].empty());
+    CHECK(wrap_rich_text("", size, 100).empty());
+  }
+  SUBCASE("6. repeated spaces collapse") {
+    auto lines = wrap_rich_text("  a   b  ", size, 1000);
+    REQUIRE(lines.size() == 1);
+    CHECK(joined(lines[0]) == "a b");
+  }
+}
