@@ -3,8 +3,10 @@
 // the order they are written, numbers in their shortest round-trip form (fmt's Dragonbox), −0
 // folded into 0, strings escaped. Writing text directly keeps `epure solve` fast and its bytes
 // stable.
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <string_view>
 
 namespace epure {
@@ -29,7 +31,8 @@ class JsonWriter {
     separate();
     // Finite by contract: callers check non-finite values before they reach the text.
     if (x == 0) x = 0;  // −0 and +0 are the same answer: print one spelling
-    fmt::format_to(std::back_inserter(buf_), "{}", x);
+    // Compiled "{}": the same shortest text, without parsing the format string per number.
+    fmt::format_to(fmt::appender(buf_), FMT_COMPILE("{}"), x);
     return *this;
   }
   JsonWriter& integer(long long x) {
@@ -96,6 +99,15 @@ class JsonWriter {
 
 inline void JsonWriter::string_literal(std::string_view s) {
   buf_.push_back('"');
+  // Keys and names need no escape: copy them whole.
+  const bool plain = std::all_of(s.begin(), s.end(), [](char ch) {
+    return static_cast<unsigned char>(ch) >= 0x20 && ch != '"' && ch != '\\';
+  });
+  if (plain) {
+    append(s);
+    buf_.push_back('"');
+    return;
+  }
   for (char ch : s) {
     auto c = static_cast<unsigned char>(ch);
     switch (ch) {

@@ -2,7 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include "geometry/degenerate.h"
 #include "geometry/projection.h"
@@ -25,37 +31,230 @@ namespace geo = epure::geo;
   throw InputError(fmt::format("field '{}': {}", field, why));
 }
 
-const char* type_name(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
+// ---- A figure's fields, whichever reader took them from the line ----------------------------
+
+// The JSON types, as far as the contract's checks tell them apart.
+enum class Type { null, boolean, number, string, array, object };
+
+const char* type_name(Type t) {
+  switch (t) {
+    case Type::null: return "null";
+    case Type::boolean: return "a boolean";
+    case Type::string: return "a string";
+    case Type::array: return "an array";
+    case Type::object: return "an object";
     default: return "a number";
   }
 }
 
+Type type_of(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return Type::null;
+    case json::value_t::boolean: return Type::boolean;
+    case json::value_t::string: return Type::string;
+    case json::value_t::array: return Type::array;
+    case json::value_t::object: return Type::object;
+    default: return Type::number;
+  }
+}
+
+// One field's value, with what the checks need: a number, a string, or an array's size and its
+// first elements (no figure has a longer array: a longer one is refused on its size alone).
+struct Value {
+  static constexpr std::size_t kItems = 3;
+  Type type = Type::null;
+  double number = 0;
+  std::string_view string;
+  std::size_t size = 0;
+  std::array<Type, kItems> item_types{};
+  std::array<double, kItems> items{};
+};
+
+struct Field {
+  std::string_view key;
+  Value value;
+};
+
+Value value_of(const json& j) {
+  Value v;
+  v.type = type_of(j);
+  if (v.type == Type::number) v.number = j.get<double>();
+  if (v.type == Type::string) v.string = j.get_ref<const std::string&>();
+  if (v.type == Type::array) {
+    v.size = j.size();
+    for (std::size_t i = 0; i < std::min(v.size, Value::kItems); ++i) {
+      v.item_types[i] = type_of(j[i]);
+      if (v.item_types[i] == Type::number) v.items[i] = j[i].get<double>();
+    }
+  }
+  return v;
+}
+
+// The fields of a parsed JSON object (its keys are unique: nlohmann::json keeps the last value
+// of a key given twice).
+std::vector<Field> fields_of(const json& object) {
+  std::vector<Field> fields;
+  for (auto it = object.begin(); it != object.end(); ++it) fields.push_back({it.key(), value_of(*it)});
+  return fields;
+}
+
+// The figure's field named `key`, or null. A key given twice means its last value, as
+// nlohmann::json reads it.
+const Value* find(std::span<const Field> fields, std::string_view key) {
+  for (auto it = fields.rbegin(); it != fields.rend(); ++it)
+    if (it->key == key) return &it->value;
+  return nullptr;
+}
+
+// ---- The flat reader ------------------------------------------------------------------------
+
+// Reads the shape of every well-formed solve line (one flat object whose values are numbers,
+// plain strings or arrays of at most three numbers) straight from the text, allocating nothing:
+// a DOM per line would cost more than the geometry. Anything else (escapes, non-ASCII, nesting,
+// other values, numbers beyond a double, bad syntax) it declines, and nlohmann::json reads the
+// line: it knows every case and words the errors. What it accepts, it reads to the same values.
+class FlatReader {
+ public:
+  static constexpr std::size_t kMaxFields = 16;
+
+  explicit FlatReader(std::string_view line) : p_(line.data()), end_(line.data() + line.size()) {}
+
+  // The fields in the order of the line, or nothing when the line is not of the flat shape.
+  std::optional<std::span<const Field>> read() {
+    if (!object()) return std::nullopt;
+    return std::span<const Field>(fields_.data(), count_);
+  }
+
+ private:
+  bool object() {
+    space();
+    if (!eat('{')) return false;
+    space();
+    if (!eat('}')) {
+      do {
+        if (count_ == kMaxFields) return false;
+        Field& f = fields_[count_++];
+        space();
+        if (!string(f.key)) return false;
+        space();
+        if (!eat(':')) return false;
+        space();
+        if (!value(f.value)) return false;
+        space();
+      } while (eat(','));
+      if (!eat('}')) return false;
+    }
+    space();
+    return p_ == end_;
+  }
+
+  bool value(Value& v) {
+    if (p_ != end_ && *p_ == '"') {
+      v.type = Type::string;
+      return string(v.string);
+    }
+    if (eat('[')) {
+      v.type = Type::array;
+      space();
+      if (eat(']')) return true;
+      do {
+        if (v.size == Value::kItems) return false;
+        space();
+        v.item_types[v.size] = Type::number;
+        if (!number(v.items[v.size])) return false;
+        ++v.size;
+        space();
+      } while (eat(','));
+      return eat(']');
+    }
+    v.type = Type::number;
+    return number(v.number);
+  }
+
+  // Printable ASCII only: no escape to decode, no UTF-8 to validate.
+  bool string(std::string_view& s) {
+    if (!eat('"')) return false;
+    const char* begin = p_;
+    for (; p_ != end_ && *p_ != '"'; ++p_) {
+      const auto c = static_cast<unsigned char>(*p_);
+      if (c < 0x20 || c >= 0x80 || c == '\\') return false;
+    }
+    if (p_ == end_) return false;
+    s = {begin, static_cast<std::size_t>(p_ - begin)};
+    ++p_;
+    return true;
+  }
+
+  // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?, correctly rounded as strtod rounds it.
+  bool number(double& x) {
+    const char* begin = p_;
+    bool integer = true;
+    eat('-');
+    if (!eat('0') && !digits()) return false;
+    if (eat('.')) {
+      integer = false;
+      if (!digits()) return false;
+    }
+    if (eat('e') || eat('E')) {
+      integer = false;
+      if (!eat('+')) eat('-');
+      if (!digits()) return false;
+    }
+    // Out of range (1e400, 1e-400): nlohmann's own wording and value.
+    auto [end, error] = std::from_chars(begin, p_, x);
+    if (error != std::errc() || end != p_) return false;
+    // nlohmann reads "-0" as the integer 0, which is +0.0.
+    if (integer && x == 0) x = 0;
+    return true;
+  }
+
+  bool digits() {
+    const char* begin = p_;
+    while (p_ != end_ && *p_ >= '0' && *p_ <= '9') ++p_;
+    return p_ != begin;
+  }
+  bool eat(char c) {
+    if (p_ == end_ || *p_ != c) return false;
+    ++p_;
+    return true;
+  }
+  void space() {
+    while (p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\n' || *p_ == '\r')) ++p_;
+  }
+
+  const char* p_;
+  const char* end_;
+  std::array<Field, kMaxFields> fields_;
+  std::size_t count_ = 0;
+};
+
+// ---- Solving --------------------------------------------------------------------------------
+
 // Reads the figure's fields, with an error that names the field for anything off.
 class Fields {
  public:
-  explicit Fields(const json& figure) : figure_(figure) {}
+  explicit Fields(std::span<const Field> figure) : figure_(figure) {}
 
-  const json& get(const char* name) const {
-    auto it = figure_.find(name);
-    if (it == figure_.end()) fail(name, "missing");
-    return *it;
+  const Value& get(const char* name) const {
+    const Value* v = find(figure_, name);
+    if (!v) fail(name, "missing");
+    return *v;
   }
 
-  double number(const char* name) const { return as_number(get(name), name, -1); }
+  double number(const char* name) const {
+    const Value& v = get(name);
+    return as_number(v.type, v.number, name, -1);
+  }
 
   template <std::size_t N>
   std::array<double, N> numbers(const char* name) const {
-    const json& j = get(name);
-    if (!j.is_array()) fail(name, fmt::format("expected an array of {} numbers", N));
-    if (j.size() != N) fail(name, fmt::format("expected {} numbers, got {}", N, j.size()));
+    static_assert(N <= Value::kItems);
+    const Value& v = get(name);
+    if (v.type != Type::array) fail(name, fmt::format("expected an array of {} numbers", N));
+    if (v.size != N) fail(name, fmt::format("expected {} numbers, got {}", N, v.size));
     std::array<double, N> values{};
-    for (std::size_t i = 0; i < N; ++i) values[i] = as_number(j[i], name, static_cast<int>(i));
+    for (std::size_t i = 0; i < N; ++i)
+      values[i] = as_number(v.item_types[i], v.items[i], name, static_cast<int>(i));
     return values;
   }
 
@@ -77,16 +276,15 @@ class Fields {
   }
 
  private:
-  static double as_number(const json& j, const char* name, int index) {
-    if (!j.is_number()) {
-      if (index < 0) fail(name, fmt::format("expected a number, got {}", type_name(j)));
-      fail(name, fmt::format("expected numbers, got {} at index {}", type_name(j), index));
+  static double as_number(Type type, double x, const char* name, int index) {
+    if (type != Type::number) {
+      if (index < 0) fail(name, fmt::format("expected a number, got {}", type_name(type)));
+      fail(name, fmt::format("expected numbers, got {} at index {}", type_name(type), index));
     }
-    double x = j.get<double>();
     if (!std::isfinite(x)) fail(name, "not a finite number");
     return x;
   }
-  const json& figure_;
+  std::span<const Field> figure_;
 };
 
 // Every number of a result is checked before it is written: data near the limits of double
@@ -239,14 +437,12 @@ Solver solver_for(std::string_view kind) {
   return nullptr;
 }
 
-}  // namespace
-
-void solve_figure(const json& figure, fmt::memory_buffer& out) {
-  if (!figure.is_object()) throw InputError("line: expected a JSON object");
+void solve(std::span<const Field> figure, fmt::memory_buffer& out) {
   Fields fields(figure);
-  const json& kind = fields.get("kind");
-  if (!kind.is_string()) fail("kind", fmt::format("expected a string, got {}", type_name(kind)));
-  const auto& name = kind.get_ref<const std::string&>();
+  const Value& kind = fields.get("kind");
+  if (kind.type != Type::string)
+    fail("kind", fmt::format("expected a string, got {}", type_name(kind.type)));
+  const std::string_view name = kind.string;
   Solver solver = solver_for(name);
   if (!solver) fail("kind", fmt::format("unknown kind '{}'", name));
 
@@ -264,12 +460,25 @@ void solve_figure(const json& figure, fmt::memory_buffer& out) {
   }
 }
 
+}  // namespace
+
+void solve_figure(const json& figure, fmt::memory_buffer& out) {
+  if (!figure.is_object()) throw InputError("line: expected a JSON object");
+  // Views into `figure`, which outlives them.
+  solve(fields_of(figure), out);
+}
+
 std::string solve_line(std::string_view line, fmt::memory_buffer& out) {
   std::string message;
   const std::size_t start = out.size();
   try {
-    json figure = json::parse(line.begin(), line.end());
-    solve_figure(figure, out);
+    FlatReader reader(line);
+    if (auto fields = reader.read()) {
+      solve(*fields, out);
+    } else {
+      json figure = json::parse(line.begin(), line.end());
+      solve_figure(figure, out);
+    }
     return {};
   } catch (const json::parse_error& e) {
     // nlohmann says "[json.exception.parse_error.101] parse error at line 1, column 30: ...":
