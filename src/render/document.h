@@ -1,0 +1,87 @@
+#pragma once
+// A printed page's content, as exercises and keys describe it: headings, paragraphs, diagrams,
+// answer fields. Knows nothing of exercises (they fill it) nor of the backend (layout.h places
+// it, the SVG and PDF backends draw the placed result).
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "render/scene.h"
+
+namespace epure::render {
+
+struct Heading {
+  RichText text;
+  int level = 1;  // 1: exercise title; 2: sub-heading ("Worked solution")
+};
+
+struct Paragraph {
+  RichText text;
+  bool emphasis = false;  // set apart (the exercise's hint, a "given" box)
+};
+
+// An empty field where the student writes an answer, sized to what it should hold.
+struct AnswerField {
+  std::string question_id;  // "2.t_ab": printed small beside the field, so a scan can be read
+  RichText prompt;          // "t_{ab} ="
+  enum class Kind { number, point, point3, choice, faces, boolean } kind = Kind::number;
+  std::vector<std::string> choices;  // for `choice` and `faces`: the options to tick
+};
+
+// In a key: a question and its expected answer.
+struct AnswerLine {
+  std::string question_id;
+  RichText prompt;
+  RichText answer;  // "≈ 2.17 (exact: 5 − 2√2)"
+};
+
+struct Figure {
+  Scene scene;
+  double width_fraction = 0.6;  // of the text width; height follows the panels' aspect ratios
+};
+
+using Block = std::variant<Heading, Paragraph, AnswerField, AnswerLine, Figure>;
+
+// One exercise (or the preamble): a unit that layout keeps together where it can, and never
+// separates a Figure from the Paragraph just before it.
+struct Section {
+  std::vector<Block> blocks;
+  template <class T>
+  Section& add(T block) {
+    blocks.emplace_back(std::move(block));
+    return *this;
+  }
+};
+
+struct PageSize {
+  double width_pt = 595.276, height_pt = 841.89;  // A4 by default
+  static PageSize a4() { return {595.276, 841.89}; }
+  static PageSize letter() { return {612, 792}; }
+};
+
+// The words the page furniture prints (header, name fields, yes/no boxes), taken from the
+// templates of the sheet's language: no sentence is written in C++. Punctuation belongs to the
+// word, since it differs by language ("Name:" / "Nom :").
+struct PageWords {
+  std::string name = "Name:";
+  std::string student_number = "Student number:";
+  std::string page = "page";  // "page 1/2"
+  std::string yes = "yes";
+  std::string no = "no";
+};
+
+struct Document {
+  std::string title;     // "Ray tracer utilities — worksheet"
+  std::string course;    // "Computer graphics, M1"
+  std::string sheet_id;  // printed in every page header
+  std::string language;  // "en" or "fr": the SVG/PDF language tag
+  std::string header_note;  // RichText at the top of the first page, under the name fields
+  // The first page's name and student number fields, drawn as writing lines with
+  // words.name and words.student_number: set for a student's sheet, left off for a key.
+  bool student_fields = false;
+  PageWords words;
+  PageSize page;
+  std::vector<Section> sections;
+};
+
+}  // namespace epure::render

@@ -1,0 +1,503 @@
+#include "render/layout.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+#include <fmt/format.h>
+
+namespace epure::render {
+namespace {
+
+// Baseline of a text line below the top of its line box, × font size: DejaVu Sans's ascent is
+// 0.93 em and an arrow over AB sits just above the capitals, both inside the line box.
+constexpr double kBaseline = 1.02;
+// Baseline that centres capitals and digits (cap height 0.73 em) on a box's middle, × font size.
+constexpr double kCentredBaseline = 0.36;
+// Page space is compared in points summed from a few dozen terms; this much rounding never
+// decides a page break.
+constexpr double kFitSlack = 1e-6;
+
+// Horizontal gaps, in points.
+constexpr double kPromptGap = 8;    // after a prompt column
+constexpr double kIdGap = 10;       // before a question id at the right edge
+constexpr double kBoxGap = 3;       // between a box and the "(", ";" around it
+constexpr double kTickGap = 4;      // between a tick box and its option
+constexpr double kOptionGap = 16;   // between two options
+constexpr double kHeaderGap = 12;   // between the header's left and right columns
+
+std::vector<TextRun> plain(std::string text, bool bold = false) {
+  TextRun run;
+  run.text = std::move(text);
+  run.bold = bold;
+  return {std::move(run)};
+}
+
+// Everything one atom puts on the page; x in page coordinates, y from the atom's top.
+struct Fragment {
+  std::vector<PlacedBox> boxes;
+  std::vector<PlacedRule> rules;
+  std::vector<PlacedFigure> figures;
+  std::vector<PlacedText> texts;
+
+  void text(std::vector<TextRun> runs, double x, double baseline, double size, Ink ink = Ink::text) {
+    const double width = text_width(runs, size);
+    texts.push_back({{x, baseline}, size, std::move(runs), ink, width});
+  }
+  // Right-aligned on `right`.
+  void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
+    const double width = text_width(runs, size);
+    texts.push_back({{right - width, baseline}, size, std::move(runs), ink, width});
+  }
+
+  void move_into(LaidOutPage& page, double dy) {
+    for (auto& b : boxes) {
+      b.rect.y += dy;
+      page.boxes.push_back(std::move(b));
+    }
+    for (auto& r : rules) {
+      r.a.y += dy;
+      r.b.y += dy;
+      page.rules.push_back(r);
+    }
+    for (auto& f : figures) {
+      f.rect.y += dy;
+      page.figures.push_back(f);
+    }
+    for (auto& t : texts) {
+      t.baseline.y += dy;
+      page.texts.push_back(std::move(t));
+    }
+  }
+};
+
+// The unit of page breaking: a line of a paragraph, a heading, a row of fields, a figure.
+struct Atom {
+  double height = 0;
+  double space_before = 0;   // dropped at the top of a page
+  bool break_before = true;  // a page may end just before this atom
+  bool section_start = false;
+  int section = -1, block = -1;
+  Fragment content;
+};
+
+// TODO(render): replace by the scene drawer's own measure once svg_scene lands, so that the
+// rectangle given here is the one draw_scene fills.
+double figure_height(const Scene& scene, double width) {
+  if (scene.panels.empty()) return 0;
+  double aspects = 0;
+  bool captions = false;
+  for (const auto& p : scene.panels) {
+    aspects += p.view.height() > 0 ? p.view.width() / p.view.height() : 1;
+    captions = captions || !p.caption.empty();
+  }
+  const double gaps = 40 * static_cast<double>(scene.panels.size() - 1);
+  return std::max(width - gaps, width * 0.2) / aspects + (captions ? 14 : 0);
+}
+
+class Builder {
+ public:
+  Builder(const Document& doc, const LayoutStyle& style)
+      : doc_(doc),
+        s_(style),
+        left_(style.margin_left),
+        right_(doc.page.width_pt - style.margin_right),
+        width_(right_ - left_),
+        top_(style.margin_top + style.header_height + style.header_gap),
+        bottom_(doc.page.height_pt - style.margin_bottom),
+        body_line_(style.body_size * style.line_height) {}
+
+  std::vector<LaidOutPage> run() {
+    first_page();
+    for (std::size_t s = 0; s < doc_.sections.size(); ++s) section(static_cast<int>(s));
+    flow();
+    for (auto& page : pages_) header(page);
+    return std::move(pages_);
+  }
+
+ private:
+  // ---- measuring: Document → atoms -------------------------------------------------------
+
+  void push(Atom atom) {
+    if (after_heading_) atom.break_before = false;  // a heading never ends a page
+    after_heading_ = false;
+    atoms_.push_back(std::move(atom));
+  }
+
+  void first_page() {
+    if (doc_.student_fields) {
+      Atom a;
+      a.height = 26;
+      const double baseline = 16;
+      const double size = s_.body_size;
+      const double line_y = baseline + 3;
+      auto name = plain(doc_.words.name);
+      auto number = plain(doc_.words.student_number);
+      const double name_w = text_width(name, size);
+      const double number_w = text_width(number, size);
+      // The name gets the larger share of the line: names are longer than student numbers.
+      const double split = left_ + width_ * 0.6;
+      a.content.text(std::move(name), left_, baseline, size);
+      a.content.rules.push_back({{left_ + name_w + 4, line_y}, {split - 14, line_y}, 0.6, Ink::text});
+      a.content.text(std::move(number), split, baseline, size);
+      a.content.rules.push_back({{split + number_w + 4, line_y}, {right_, line_y}, 0.6, Ink::text});
+      push(std::move(a));
+    }
+    if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);
+  }
+
+  void section(int si) {
+    const auto& blocks = doc_.sections[static_cast<std::size_t>(si)].blocks;
+    section_begin_ = atoms_.size();
+    for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
+      const Block& block = blocks[bi];
+      const Block* before = bi > 0 ? &blocks[bi - 1] : nullptr;
+      const int b = static_cast<int>(bi);
+      if (const auto* h = std::get_if<Heading>(&block)) {
+        heading(si, b, *h);
+      } else if (const auto* p = std::get_if<Paragraph>(&block)) {
+        paragraph(si, b, p->text, p->emphasis);
+      } else if (const auto* f = std::get_if<Figure>(&block)) {
+        figure(si, b, *f, before && std::holds_alternative<Paragraph>(*before));
+      } else if (const auto* field = std::get_if<AnswerField>(&block)) {
+        const bool follows = before && std::holds_alternative<AnswerField>(*before);
+        if (!follows) field_column_ = field_prompt_column(blocks, bi);
+        answer_field(si, b, *field, follows);
+      } else if (const auto* line = std::get_if<AnswerLine>(&block)) {
+        const bool follows = before && std::holds_alternative<AnswerLine>(*before);
+        if (!follows) key_column_ = key_prompt_column(blocks, bi);
+        answer_line(si, b, *line, follows);
+      }
+    }
+    if (atoms_.size() > section_begin_) atoms_[section_begin_].section_start = true;
+  }
+
+  void heading(int si, int bi, const Heading& h) {
+    const bool major = h.level <= 1;
+    const double size = major ? s_.heading1_size : s_.heading2_size;
+    const double line = size * s_.line_height;
+    Atom a;
+    a.section = si;
+    a.block = bi;
+    a.space_before = major ? s_.heading1_space : s_.heading2_space;
+    double y = 0;
+    for (auto& runs : wrap_rich_text(h.text, size, width_, Weight::bold)) {
+      a.content.text(std::move(runs), left_, y + size * kBaseline, size);
+      y += line;
+    }
+    a.height = y;
+    push(std::move(a));
+    after_heading_ = true;
+  }
+
+  // A plain paragraph gives one atom per line, breakable but never leaving a single line on
+  // either side of a break; an emphasised one is one atom on its shade.
+  void paragraph(int si, int bi, const RichText& text, bool emphasis) {
+    const double size = s_.body_size;
+    if (emphasis) {
+      const double pad = s_.shade_padding;
+      auto lines = wrap_rich_text(text, size, width_ - 2 * pad);
+      Atom a;
+      a.section = si;
+      a.block = bi;
+      a.space_before = s_.block_space;
+      a.height = static_cast<double>(lines.size()) * body_line_ + 2 * pad;
+      a.content.boxes.push_back({{left_, 0, width_, a.height}, BoxKind::shade, {}, {}});
+      double y = pad;
+      for (auto& runs : lines) {
+        a.content.text(std::move(runs), left_ + pad, y + size * kBaseline, size);
+        y += body_line_;
+      }
+      push(std::move(a));
+      return;
+    }
+    auto lines = wrap_rich_text(text, size, width_);
+    const std::size_t n = lines.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      Atom a;
+      a.section = si;
+      a.block = bi;
+      a.height = body_line_;
+      if (i == 0) {
+        a.space_before = s_.block_space;
+      } else {
+        a.break_before = i >= 2 && n - i >= 2;  // no orphan, no widow
+      }
+      a.content.text(std::move(lines[i]), left_, size * kBaseline, size);
+      push(std::move(a));
+    }
+  }
+
+  void figure(int si, int bi, const Figure& f, bool follows_paragraph) {
+    double w = width_ * std::clamp(f.width_fraction, 0.05, 1.0);
+    double h = figure_height(f.scene, w);
+    const double max_h = (bottom_ - top_) * s_.figure_max_height;
+    if (h > max_h) {
+      w *= max_h / h;  // a figure's height grows with its width
+      h = figure_height(f.scene, w);
+    }
+    Atom a;
+    a.section = si;
+    a.block = bi;
+    a.space_before = s_.block_space;
+    a.height = h;
+    a.break_before = !follows_paragraph;
+    a.content.figures.push_back({{left_ + (width_ - w) / 2, 0, w, h}, &f.scene});
+    push(std::move(a));
+  }
+
+  // The prompt column shared by a run of consecutive fields, so that their boxes line up.
+  double field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+    double widest = 0;
+    for (std::size_t i = from; i < blocks.size(); ++i) {
+      const auto* f = std::get_if<AnswerField>(&blocks[i]);
+      if (!f) break;
+      widest = std::max(widest, text_width(f->prompt, s_.body_size));
+    }
+    return std::min(widest + kPromptGap, width_ * s_.prompt_column_max);
+  }
+
+  double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+    double widest = 0;
+    for (std::size_t i = from; i < blocks.size(); ++i) {
+      const auto* l = std::get_if<AnswerLine>(&blocks[i]);
+      if (!l) break;
+      widest = std::max(widest, text_width(l->prompt, s_.body_size));
+    }
+    return std::min(widest + kPromptGap, width_ * s_.key_prompt_column_max);
+  }
+
+  void answer_field(int si, int bi, const AnswerField& f, bool follows_field) {
+    const double size = s_.body_size;
+    Atom a;
+    a.section = si;
+    a.block = bi;
+    a.space_before = follows_field ? s_.row_space : s_.block_space;
+
+    auto id = plain(f.question_id);
+    const double id_w = f.question_id.empty() ? 0 : text_width(id, s_.id_size);
+    const double limit = right_ - (id_w > 0 ? id_w + kIdGap : 0);
+    const double x0 = left_ + field_column_;
+
+    using K = AnswerField::Kind;
+    const bool ticks = f.kind == K::choice || f.kind == K::faces || f.kind == K::boolean;
+    const double row_h = ticks ? s_.tick_row_height : s_.field_box_height;
+    const double baseline = row_h / 2 + size * kCentredBaseline;
+    double body_h = row_h;
+
+    if (!ticks) {
+      const double bh = s_.field_box_height;
+      auto box = [&](double x, double w, std::string value) {
+        a.content.boxes.push_back({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
+      };
+      auto glyph = [&](const char* s, double x) {
+        auto runs = plain(s);
+        const double w = text_width(runs, size);
+        a.content.text(std::move(runs), x, baseline, size);
+        return x + w;
+      };
+      if (f.kind == K::number) {
+        box(x0, s_.number_box_width, {});
+      } else {
+        const bool three = f.kind == K::point3;
+        const double w = three ? s_.point3_box_width : s_.point_box_width;
+        static constexpr const char* kAxes[] = {"x", "y", "z"};
+        double x = glyph("(", x0) + kBoxGap;
+        for (int k = 0; k < (three ? 3 : 2); ++k) {
+          if (k > 0) x = glyph(";", x + kBoxGap) + kBoxGap;
+          box(x, w, kAxes[k]);
+          x += w;
+        }
+        glyph(")", x + kBoxGap);
+      }
+    } else {
+      std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
+      if (f.kind == K::boolean) {
+        options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
+      } else {
+        for (const auto& c : f.choices) options.emplace_back(c, c);
+      }
+      double x = x0;
+      double top = 0;
+      for (auto& [printed, value] : options) {
+        auto runs = parse_rich_text(printed);
+        const double item_w = s_.tick_size + kTickGap + text_width(runs, size);
+        if (x > x0 && x + item_w > limit) {  // wrap onto the next row, under the first option
+          x = x0;
+          top += s_.tick_row_height;
+        }
+        const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
+        a.content.boxes.push_back(
+            {{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id, std::move(value)});
+        a.content.text(std::move(runs), x + s_.tick_size + kTickGap, top + baseline, size);
+        x += item_w + kOptionGap;
+      }
+      body_h = top + s_.tick_row_height;
+    }
+
+    // The prompt, right of nothing and left of the boxes; wrapped if wider than its column.
+    double prompt_h = 0;
+    double y = baseline;
+    for (auto& runs : wrap_rich_text(f.prompt, size, field_column_ - kPromptGap)) {
+      a.content.text(std::move(runs), left_, y, size);
+      prompt_h = y + size * (s_.line_height - kBaseline);
+      y += body_line_;
+    }
+    if (id_w > 0) a.content.text_right(std::move(id), right_, baseline, s_.id_size, Ink::muted);
+    a.height = std::max(body_h, prompt_h);
+    push(std::move(a));
+  }
+
+  void answer_line(int si, int bi, const AnswerLine& l, bool follows_line) {
+    const double size = s_.body_size;
+    const double pad = s_.key_row_padding;
+    Atom a;
+    a.section = si;
+    a.block = bi;
+    a.space_before = follows_line ? 0 : s_.block_space;
+
+    auto id = plain(l.question_id);
+    const double id_w = l.question_id.empty() ? 0 : text_width(id, s_.id_size);
+    const double answer_x = left_ + key_column_;
+    const double answer_w = right_ - answer_x - (id_w > 0 ? id_w + kIdGap : 0);
+
+    double y = pad + size * kBaseline;
+    std::size_t rows = 0;
+    for (auto& runs : wrap_rich_text(l.prompt, size, key_column_ - kPromptGap)) {
+      a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
+    }
+    std::size_t answer_rows = 0;
+    for (auto& runs : wrap_rich_text(l.answer, size, answer_w)) {
+      a.content.text(std::move(runs), answer_x, y + static_cast<double>(answer_rows++) * body_line_,
+                     size, Ink::answer);
+    }
+    if (id_w > 0) a.content.text_right(std::move(id), right_, y, s_.id_size, Ink::muted);
+    a.height = static_cast<double>(std::max<std::size_t>({rows, answer_rows, 1})) * body_line_ + 2 * pad;
+    // A table: a rule above the first row and under every row.
+    if (!follows_line) a.content.rules.push_back({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
+    a.content.rules.push_back({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});
+    push(std::move(a));
+  }
+
+  // ---- placing: atoms → pages ------------------------------------------------------------
+
+  void new_page() {
+    LaidOutPage page;
+    page.number = static_cast<int>(pages_.size()) + 1;
+    page.size = doc_.page;
+    pages_.push_back(std::move(page));
+    y_ = top_;
+    empty_ = true;
+  }
+
+  // Height from the start of atoms[from] to the end of atoms[to - 1], on a page already begun.
+  double span(std::size_t from, std::size_t to) const {
+    double h = 0;
+    for (std::size_t i = from; i < to; ++i) h += (i > from ? atoms_[i].space_before : 0) + atoms_[i].height;
+    return h;
+  }
+
+  bool fits(double h) const { return y_ + h <= bottom_ + kFitSlack; }
+
+  void flow() {
+    new_page();
+    std::size_t group_end = 0;
+    for (std::size_t i = 0; i < atoms_.size(); ++i) {
+      Atom& atom = atoms_[i];
+      const double space = empty_ ? 0 : atom.space_before;
+      if (i >= group_end) {
+        // A new group: the atoms up to the next place a page may end.
+        group_end = i + 1;
+        while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
+        if (!empty_) {
+          bool fresh = !fits(space + span(i, group_end));
+          if (!fresh && atom.section_start) {
+            // Keep a section whole when a fresh page would hold it.
+            std::size_t end = i + 1;
+            while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+            const double whole = span(i, end);
+            fresh = !fits(space + whole) && whole <= bottom_ - top_ + kFitSlack;
+          }
+          if (fresh) new_page();
+        }
+      } else if (!empty_ && !fits(space + atom.height)) {
+        new_page();  // a group taller than a page: broken where it must be
+      }
+      place(atom);
+    }
+  }
+
+  void place(Atom& atom) {
+    LaidOutPage& page = pages_.back();
+    const double y = y_ + (empty_ ? 0 : atom.space_before);
+    atom.content.move_into(page, y);
+    const PageRect rect{left_, y, width_, atom.height};
+    auto& blocks = page.blocks;
+    if (!blocks.empty() && blocks.back().section == atom.section && blocks.back().block == atom.block) {
+      blocks.back().rect.height = rect.bottom() - blocks.back().rect.y;
+    } else {
+      blocks.push_back({rect, atom.section, atom.block});
+    }
+    y_ = y + atom.height;
+    empty_ = false;
+  }
+
+  // Course and title on the left, sheet id and "page i/n" on the right, a rule under them.
+  void header(LaidOutPage& page) {
+    page.count = static_cast<int>(pages_.size());
+    const double top = s_.margin_top;
+    const double big = s_.header_title_size, small = s_.header_small_size;
+    const double first = top + big * kBaseline;
+    const double second = first + small * s_.line_height + 2;
+
+    Fragment f;
+    auto id = plain(doc_.sheet_id, true);
+    auto count = plain(fmt::format("{} {}/{}", doc_.words.page, page.number, page.count));
+    const double right_w = std::max(text_width(id, big), text_width(count, small));
+    f.text_right(std::move(id), right_, first, big, Ink::text);
+    f.text_right(std::move(count), right_, second, small, Ink::muted);
+
+    // A long title or course is set smaller rather than run into the right column.
+    const double room = width_ - right_w - kHeaderGap;
+    auto fitted = [&](std::vector<TextRun> runs, double size) {
+      const double w = text_width(runs, size);
+      return std::pair{std::move(runs), w > room && w > 0 ? size * room / w : size};
+    };
+    auto [title, title_size] = fitted(plain(doc_.title, true), big);
+    auto [course, course_size] = fitted(plain(doc_.course), small);
+    f.text(std::move(title), left_, first, title_size);
+    f.text(std::move(course), left_, second, course_size, Ink::muted);
+    const double rule_y = top + s_.header_height;
+    f.rules.push_back({{left_, rule_y}, {right_, rule_y}, 0.6, Ink::muted});
+
+    // The header goes first, so that it is also first in every list of the page.
+    LaidOutPage head;
+    f.move_into(head, 0);
+    page.texts.insert(page.texts.begin(), head.texts.begin(), head.texts.end());
+    page.rules.insert(page.rules.begin(), head.rules.begin(), head.rules.end());
+    page.blocks.insert(page.blocks.begin(), PlacedBlock{{left_, top, width_, s_.header_height}, -1, -1});
+  }
+
+  const Document& doc_;
+  const LayoutStyle& s_;
+  const double left_, right_, width_, top_, bottom_, body_line_;
+
+  std::vector<Atom> atoms_;
+  bool after_heading_ = false;
+  std::size_t section_begin_ = 0;
+  double field_column_ = 0, key_column_ = 0;
+
+  std::vector<LaidOutPage> pages_;
+  double y_ = 0;
+  bool empty_ = true;
+};
+
+}  // namespace
+
+std::vector<LaidOutPage> layout_document(const Document& doc, const LayoutStyle& style) {
+  return Builder(doc, style).run();
+}
+
+}  // namespace epure::render

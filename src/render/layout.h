@@ -1,0 +1,131 @@
+#pragma once
+// Pages placed, not drawn: a Document's blocks broken into lines and put on pages of the
+// document's size, in points, y down from the page's top-left corner. Every backend (SVG now,
+// cairo for the PDF) draws these pages as they are: no backend measures, wraps or breaks pages,
+// so both draw the same thing.
+//
+// The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
+// with the name and student number fields; a section starts on a fresh page when it would fit
+// there whole but not in what is left of the current one; otherwise it flows, breaking only
+// between lines of text, rows of fields or blocks: never right after a Heading, never between a
+// Figure and the Paragraph just before it, never leaving one line of a paragraph alone.
+#include <string>
+#include <vector>
+
+#include "render/document.h"
+#include "render/text.h"
+
+namespace epure::render {
+
+// A rectangle on the page, in points, y down.
+struct PageRect {
+  double x = 0, y = 0, width = 0, height = 0;
+  double right() const { return x + width; }
+  double bottom() const { return y + height; }
+};
+
+// What a placed thing is, not how it looks: the backend's style gives the colour (as Role does
+// for scenes), so a key's answers can stand out and ids stay discreet.
+enum class Ink {
+  text,    // statements, prompts, headings
+  muted,   // page furniture and question ids
+  answer,  // a key's expected answers
+};
+
+// One line of text, already broken into runs; backends set it as it is, from the left end of
+// its baseline.
+struct PlacedText {
+  P2 baseline;
+  double size = 10;  // font size, points
+  std::vector<TextRun> runs;
+  Ink ink = Ink::text;
+  double width = 0;  // advance width (text_width), which right-aligned texts were placed with
+};
+
+struct PlacedRule {
+  P2 a, b;
+  double width = 0.5;  // stroke width, points
+  Ink ink = Ink::text;
+};
+
+enum class BoxKind {
+  answer,  // a box the student writes a value in
+  tick,    // a small square to tick, one per option
+  shade,   // the light background of an emphasised paragraph
+};
+
+struct PlacedBox {
+  PageRect rect;
+  BoxKind kind = BoxKind::answer;
+  // For answer and tick boxes, where a scan would read the answer: the field's question id and
+  // what this box stands for: "x", "y", "z" for a point's coordinates, the option for a tick
+  // ("before", a face name, "true"/"false"), empty for a single number.
+  std::string question_id;
+  std::string value;
+};
+
+// A Scene drawn into a rectangle whose aspect ratio follows its panels (figure_height).
+// Points into the Document: the Document must outlive the pages.
+struct PlacedFigure {
+  PageRect rect;
+  const Scene* scene = nullptr;
+};
+
+// Where a block (or its part on this page) sits; section and block index the Document, -1 for
+// the page furniture (header, name fields, the note under them).
+struct PlacedBlock {
+  PageRect rect;
+  int section = -1;
+  int block = -1;
+};
+
+struct LaidOutPage {
+  int number = 1;  // 1-based
+  int count = 1;   // pages in the document
+  PageSize size;
+  // Backends draw boxes, then rules, figures and texts, so that shades lie under the text.
+  std::vector<PlacedBox> boxes;
+  std::vector<PlacedRule> rules;
+  std::vector<PlacedFigure> figures;
+  std::vector<PlacedText> texts;
+  std::vector<PlacedBlock> blocks;
+};
+
+// Sizes of the printed page, in points. The defaults are a plain A4/Letter worksheet.
+struct LayoutStyle {
+  double margin_left = 56.7, margin_right = 56.7;  // 20 mm
+  double margin_top = 42.5, margin_bottom = 42.5;  // 15 mm
+
+  double header_title_size = 10, header_small_size = 8.5;
+  double header_height = 28;        // from the top margin to the rule under the header
+  double header_gap = 14;           // from that rule to the content
+
+  double body_size = 10.5;
+  double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript
+  double heading1_size = 13, heading2_size = 11;
+  double heading1_space = 16, heading2_space = 10;  // above a heading (dropped at a page top)
+  double block_space = 7;           // between blocks
+  double shade_padding = 5;         // around an emphasised paragraph's text
+
+  double id_size = 6.5;             // question ids beside fields
+  double field_box_height = 20;
+  double number_box_width = 88;
+  double point_box_width = 62;      // each coordinate of a point
+  double point3_box_width = 54;
+  double tick_size = 9;
+  double tick_row_height = 17;
+  double row_space = 5;             // between consecutive field rows
+  double prompt_column_max = 0.4;   // × text width, for the shared prompt column of fields
+
+  double key_prompt_column_max = 0.38;
+  double key_row_padding = 3;
+
+  // A figure never takes more than this share of a page's text height, so that the paragraph
+  // it belongs to still fits above it.
+  double figure_max_height = 0.75;
+};
+
+// Lays out the whole document. Deterministic: the same Document and style give the same pages.
+std::vector<LaidOutPage> layout_document(const Document& doc, const LayoutStyle& style = {});
+
+}  // namespace epure::render

@@ -1,0 +1,341 @@
+#include "render/layout.h"
+
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <set>
+#include <string>
+#include <utility>
+#include <variant>
+
+using namespace epure::render;
+
+namespace {
+
+// Placement is summed from a few dozen lengths in points; a thousandth of a point is far below
+// anything a printer or a reader would see.
+constexpr double kPt = 1e-3;
+
+std::string joined(const PlacedText& t) {
+  std::string s;
+  for (const auto& r : t.runs) s += r.text;
+  return s;
+}
+
+bool page_has_text(const LaidOutPage& page, const std::string& text) {
+  return std::any_of(page.texts.begin(), page.texts.end(),
+                     [&](const PlacedText& t) { return joined(t) == text; });
+}
+
+Scene square_scene(double w = 8, double h = 5) {
+  Scene scene;
+  scene.title = "Projection of C on (AB)";
+  Panel panel;
+  panel.view = {-1, -1, w - 1, h - 1};
+  panel.add(Grid{1, true});
+  panel.add(Segment{{0, 0}, {5, 2}, Role::data, false});
+  panel.add(PointMark{{2, 3}, Role::data, Label{"C", {2, 3}, Side::above, Role::data}});
+  scene.panels.push_back(std::move(panel));
+  return scene;
+}
+
+const std::string kText =
+    "Les points A, B et C sont donnés. Calculer le paramètre t_{ab} de la projection orthogonale "
+    "P de C sur la droite (AB), à l'aide du produit scalaire \\vec{AB}·\\vec{AC}, puis en déduire "
+    "les coordonnées de P et la distance CP. Arrondir chaque résultat intermédiaire à deux "
+    "décimales.";
+
+Section exercise(int n, bool with_figure = true, int paragraphs = 1) {
+  Section s;
+  s.add(Heading{fmt::format("Exercise {} — projection", n), 1});
+  for (int i = 0; i < paragraphs; ++i) s.add(Paragraph{kText, false});
+  if (with_figure) s.add(Figure{square_scene(), 0.6});
+  s.add(AnswerField{fmt::format("{}.t", n), "t =", AnswerField::Kind::number, {}});
+  s.add(AnswerField{fmt::format("{}.P", n), "P =", AnswerField::Kind::point, {}});
+  s.add(AnswerField{fmt::format("{}.position", n), "Position of P:", AnswerField::Kind::choice,
+                    {"before", "between", "after"}});
+  return s;
+}
+
+Document sample(int sections, int paragraphs = 1) {
+  Document doc;
+  doc.title = "Ray tracer utilities — worksheet";
+  doc.course = "Computer graphics, M1";
+  doc.sheet_id = "K7QF-3M2X";
+  doc.language = "en";
+  doc.header_note = "Give every answer with two decimals.";
+  doc.student_fields = true;
+  for (int i = 1; i <= sections; ++i) doc.sections.push_back(exercise(i, true, paragraphs));
+  return doc;
+}
+
+const Block& block_of(const Document& doc, const PlacedBlock& b) {
+  return doc.sections[static_cast<std::size_t>(b.section)].blocks[static_cast<std::size_t>(b.block)];
+}
+
+// Every page of `pages` shown as text, down to the last coordinate: two layouts are the same
+// exactly when these strings are.
+std::string dump(const std::vector<LaidOutPage>& pages) {
+  std::string out;
+  for (const auto& p : pages) {
+    out += fmt::format("page {}/{} {}x{}\n", p.number, p.count, p.size.width_pt, p.size.height_pt);
+    for (const auto& b : p.boxes)
+      out += fmt::format("box {} {} {} {} {} {} {}\n", static_cast<int>(b.kind), b.rect.x, b.rect.y,
+                         b.rect.width, b.rect.height, b.question_id, b.value);
+    for (const auto& r : p.rules)
+      out += fmt::format("rule {} {} {} {} {}\n", r.a.x, r.a.y, r.b.x, r.b.y, r.width);
+    for (const auto& f : p.figures)
+      out += fmt::format("figure {} {} {} {}\n", f.rect.x, f.rect.y, f.rect.width, f.rect.height);
+    for (const auto& t : p.texts)
+      out += fmt::format("text {} {} {} {} {}\n", t.baseline.x, t.baseline.y, t.size,
+                         static_cast<int>(t.ink), joined(t));
+  }
+  return out;
+}
+
+void check_inside(const LaidOutPage& page, const LayoutStyle& style) {
+  const double left = style.margin_left, right = page.size.width_pt - style.margin_right;
+  const double top = style.margin_top, bottom = page.size.height_pt - style.margin_bottom;
+  auto inside = [&](double x0, double y0, double x1, double y1) {
+    CHECK(x0 >= left - kPt);
+    CHECK(x1 <= right + kPt);
+    CHECK(y0 >= top - kPt);
+    CHECK(y1 <= bottom + kPt);
+  };
+  for (const auto& b : page.boxes) inside(b.rect.x, b.rect.y, b.rect.right(), b.rect.bottom());
+  for (const auto& f : page.figures) inside(f.rect.x, f.rect.y, f.rect.right(), f.rect.bottom());
+  for (const auto& r : page.rules)
+    inside(std::min(r.a.x, r.b.x), std::min(r.a.y, r.b.y), std::max(r.a.x, r.b.x), std::max(r.a.y, r.b.y));
+  for (const auto& t : page.texts) {
+    CAPTURE(joined(t));
+    // The line's ink, from the top of its tallest glyph to the bottom of a descender.
+    inside(t.baseline.x, t.baseline.y - 0.93 * t.size, t.baseline.x + t.width, t.baseline.y + 0.24 * t.size);
+  }
+  for (const auto& b : page.blocks) inside(b.rect.x, b.rect.y, b.rect.right(), b.rect.bottom());
+}
+
+}  // namespace
+
+TEST_CASE("layout: a header on every page, the name fields on the first only") {
+  const Document doc = sample(6);
+  const auto pages = layout_document(doc);
+  REQUIRE(pages.size() >= 2);
+  for (const auto& page : pages) {
+    CAPTURE(page.number);
+    CHECK(page.count == static_cast<int>(pages.size()));
+    CHECK(page_has_text(page, doc.title));
+    CHECK(page_has_text(page, doc.course));
+    CHECK(page_has_text(page, doc.sheet_id));
+    CHECK(page_has_text(page, fmt::format("page {}/{}", page.number, pages.size())));
+    CHECK(page_has_text(page, "Name:") == (page.number == 1));
+    CHECK(page_has_text(page, "Student number:") == (page.number == 1));
+  }
+  CHECK(page_has_text(pages[0], doc.header_note));
+
+  SUBCASE("a key has no name fields, and its words come from the document") {
+    Document key = doc;
+    key.student_fields = false;
+    key.words.page = "feuille";
+    const auto key_pages = layout_document(key);
+    CHECK_FALSE(page_has_text(key_pages[0], "Name:"));
+    CHECK(page_has_text(key_pages[0], fmt::format("feuille 1/{}", key_pages.size())));
+  }
+}
+
+TEST_CASE("layout: everything lies inside the margins, blocks never overlap") {
+  const LayoutStyle style;
+  for (PageSize size : {PageSize::a4(), PageSize::letter()}) {
+    for (int paragraphs : {1, 3, 7}) {
+      Document doc = sample(5, paragraphs);
+      doc.page = size;
+      CAPTURE(size.height_pt);
+      CAPTURE(paragraphs);
+      for (const auto& page : layout_document(doc, style)) {
+        CAPTURE(page.number);
+        check_inside(page, style);
+        for (std::size_t i = 1; i < page.blocks.size(); ++i) {
+          // Placed top to bottom: each block starts below the end of the one before.
+          CHECK(page.blocks[i].rect.y >= page.blocks[i - 1].rect.bottom() - kPt);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("layout: page breaks") {
+  SUBCASE("1. a heading never ends a page, a figure stays with its paragraph") {
+    for (int paragraphs = 1; paragraphs <= 12; ++paragraphs) {
+      CAPTURE(paragraphs);
+      const Document doc = sample(4, paragraphs);
+      const auto pages = layout_document(doc);
+      for (const auto& page : pages) {
+        const auto& last = page.blocks.back();
+        if (page.number < page.count && last.section >= 0) {
+          CHECK_FALSE(std::holds_alternative<Heading>(block_of(doc, last)));
+        }
+        for (const auto& b : page.blocks) {
+          if (b.section < 0 || !std::holds_alternative<Figure>(block_of(doc, b))) continue;
+          REQUIRE(b.block > 0);
+          // The paragraph just before the figure ends on this page, right above it.
+          const bool with_paragraph =
+              std::any_of(page.blocks.begin(), page.blocks.end(), [&](const PlacedBlock& o) {
+                return o.section == b.section && o.block == b.block - 1;
+              });
+          CHECK(with_paragraph);
+        }
+      }
+    }
+  }
+
+  SUBCASE("2. a section that fits on a page is not split") {
+    const Document doc = sample(7);
+    std::set<int> seen;
+    for (const auto& page : layout_document(doc)) {
+      std::set<int> here;
+      for (const auto& b : page.blocks)
+        if (b.section >= 0) here.insert(b.section);
+      for (int s : here) {
+        CAPTURE(s);
+        CHECK(seen.count(s) == 0);  // never continued from an earlier page
+      }
+      seen.insert(here.begin(), here.end());
+    }
+    CHECK(seen.size() == doc.sections.size());
+  }
+
+  SUBCASE("3. a section taller than a page flows, with no line of a paragraph alone") {
+    const LayoutStyle style;
+    const Document doc = sample(2, 14);
+    const auto pages = layout_document(doc, style);
+    REQUIRE(pages.size() >= 3);
+    const double line = style.body_size * style.line_height;
+    for (const auto& page : pages) {
+      for (const auto& b : page.blocks) {
+        if (b.section < 0 || !std::holds_alternative<Paragraph>(block_of(doc, b))) continue;
+        CHECK(b.rect.height >= 2 * line - kPt);  // the sample's paragraphs have 4 lines or more
+      }
+    }
+  }
+
+  SUBCASE("4. a figure taller than a page is scaled to fit") {
+    Document doc = sample(1);
+    std::get<Figure>(doc.sections[0].blocks[2]) = Figure{square_scene(2, 40), 1.0};
+    const auto pages = layout_document(doc);
+    int figures = 0;
+    for (const auto& page : pages) {
+      check_inside(page, LayoutStyle{});
+      figures += static_cast<int>(page.figures.size());
+    }
+    CHECK(figures == 1);
+  }
+
+  SUBCASE("5. an empty document is one page with its header") {
+    Document doc = sample(0);
+    const auto pages = layout_document(doc);
+    REQUIRE(pages.size() == 1);
+    CHECK(page_has_text(pages[0], "page 1/1"));
+  }
+}
+
+TEST_CASE("layout: answer fields are sized to what they hold") {
+  const LayoutStyle style;
+  Document doc = sample(0);
+  Section s;
+  using K = AnswerField::Kind;
+  s.add(AnswerField{"1.t", "t =", K::number, {}});
+  s.add(AnswerField{"1.P", "P =", K::point, {}});
+  s.add(AnswerField{"1.Q", "Q =", K::point3, {}});
+  s.add(AnswerField{"1.position", "P is", K::choice, {"before", "between", "after"}});
+  s.add(AnswerField{"1.faces", "Faces hit:", K::faces,
+                    {"x = −1", "x = 1", "y = −1", "y = 1", "z = −1", "z = 1"}});
+  s.add(AnswerField{"1.hit", "Does the ray hit?", K::boolean, {}});
+  doc.sections.push_back(s);
+  const auto pages = layout_document(doc, style);
+  REQUIRE(pages.size() == 1);
+  const auto& page = pages[0];
+
+  auto boxes_of = [&](const std::string& id) {
+    std::vector<PlacedBox> out;
+    for (const auto& b : page.boxes)
+      if (b.question_id == id) out.push_back(b);
+    return out;
+  };
+  auto values = [](const std::vector<PlacedBox>& boxes) {
+    std::vector<std::string> v;
+    for (const auto& b : boxes) v.push_back(b.value);
+    return v;
+  };
+
+  const auto number = boxes_of("1.t");
+  REQUIRE(number.size() == 1);
+  CHECK(number[0].kind == BoxKind::answer);
+  CHECK(number[0].rect.width == doctest::Approx(style.number_box_width).epsilon(1e-12));
+  CHECK(number[0].rect.height == doctest::Approx(style.field_box_height).epsilon(1e-12));
+
+  const auto point = boxes_of("1.P");
+  CHECK(values(point) == std::vector<std::string>{"x", "y"});
+  CHECK(page_has_text(page, "("));
+  CHECK(page_has_text(page, ";"));
+  CHECK(page_has_text(page, ")"));
+  const auto point3 = boxes_of("1.Q");
+  CHECK(values(point3) == std::vector<std::string>{"x", "y", "z"});
+  for (const auto& b : point3) CHECK(b.rect.width == doctest::Approx(style.point3_box_width).epsilon(1e-12));
+
+  const auto choice = boxes_of("1.position");
+  CHECK(values(choice) == std::vector<std::string>{"before", "between", "after"});
+  for (const auto& b : choice) {
+    CHECK(b.kind == BoxKind::tick);
+    CHECK(b.rect.width == doctest::Approx(style.tick_size).epsilon(1e-12));
+  }
+  CHECK(page_has_text(page, "between"));
+  CHECK(boxes_of("1.faces").size() == 6);
+  CHECK(values(boxes_of("1.hit")) == std::vector<std::string>{"true", "false"});
+  CHECK(page_has_text(page, "yes"));
+  CHECK(page_has_text(page, "no"));
+
+  // The boxes of consecutive fields start on one column, after the widest prompt.
+  CHECK(point[0].rect.x > number[0].rect.x);  // after the "("
+  CHECK(choice[0].rect.x == doctest::Approx(number[0].rect.x).epsilon(1e-12));
+  // Question ids are printed, small, at the right edge.
+  for (const char* id : {"1.t", "1.P", "1.Q", "1.position", "1.faces", "1.hit"}) {
+    CAPTURE(id);
+    CHECK(page_has_text(page, id));
+  }
+  check_inside(page, style);
+}
+
+TEST_CASE("layout: a key's answer lines are a two-column table") {
+  Document doc = sample(0);
+  doc.student_fields = false;
+  Section s;
+  s.add(AnswerLine{"2.t_ab", "t_{ab}", "≈ 0.43 (exact: 3/7)"});
+  s.add(AnswerLine{"2.I", "I", "(2.14 ; 1.29)"});
+  s.add(AnswerLine{"2.intersects", "The segments intersect", "yes"});
+  doc.sections.push_back(s);
+  const auto pages = layout_document(doc);
+  REQUIRE(pages.size() == 1);
+  double prompt_x = -1, answer_x = -1;
+  int answers = 0;
+  for (const auto& t : pages[0].texts) {
+    if (t.ink == Ink::answer) {
+      ++answers;
+      if (answer_x < 0) answer_x = t.baseline.x;
+      CHECK(t.baseline.x == doctest::Approx(answer_x).epsilon(1e-12));
+    }
+    if (joined(t) == "The segments intersect") prompt_x = t.baseline.x;
+  }
+  CHECK(answers == 3);
+  CHECK(answer_x > prompt_x);
+  // The id is plain text: "2.t_ab" is printed as it is, not as a subscript.
+  CHECK(page_has_text(pages[0], "2.t_ab"));
+}
+
+TEST_CASE("layout: deterministic") {
+  const Document doc = sample(5, 2);
+  const auto a = dump(layout_document(doc));
+  const auto b = dump(layout_document(doc));
+  CHECK(a == b);
+  CHECK(a.size() > 1000);
+}
