@@ -296,13 +296,25 @@ std::string equals_value(const ExerciseContext& ctx, double value, const std::op
   if (pretty.empty() || pretty.size() > 16) return fmt::format("≈ {}", rounded);
   pretty = ctx.numbers.localise(pretty);
   if (!exact->is_rational()) return fmt::format("= {} ≈ {}", pretty, rounded);
-  const std::int64_t den = exact->a().den();
-  if (den == 1) return fmt::format("= {}", pretty);
-  std::int64_t pow10 = 1;
-  for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
+  if (exact->a().is_integer()) return fmt::format("= {}", pretty);
   // a fraction that stops within the asked decimals is written out exactly
-  if (pow10 % den == 0) return fmt::format("= {} = {}", pretty, ctx.numbers.datum(value, ctx.decimals));
+  if (terminates_within(exact, ctx.decimals))
+    return fmt::format("= {} = {}", pretty, ctx.numbers.datum(value, ctx.decimals));
   return fmt::format("= {} ≈ {}", pretty, rounded);
+}
+
+bool terminates_within(const std::optional<exact::Surd>& exact, int decimals) {
+  if (!exact || !exact->is_rational()) return false;
+  std::int64_t pow10 = 1;
+  for (int i = 0; i < decimals; ++i) pow10 *= 10;
+  return pow10 % exact->a().den() == 0;
+}
+
+std::string equals_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
+                         const std::optional<exact::Surd>& ey) {
+  if (terminates_within(ex, ctx.decimals) && terminates_within(ey, ctx.decimals))
+    return fmt::format("= {}", ctx.numbers.point(p.x, p.y, ctx.decimals));
+  return fmt::format("≈ {}", ctx.numbers.rounded_point(p.x, p.y, ctx.decimals));
 }
 
 }  // namespace epure::kinds

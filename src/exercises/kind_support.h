@@ -131,4 +131,13 @@ double grid_value(Rng& rng, double lo, double hi, Difficulty d);
 // "= 1/4 = 0.25", "= √13 ≈ 3.61", or "≈ 2.17" when there is no short exact form.
 std::string equals_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact);
 
+// Whether the value is exactly a decimal of at most `decimals` places (per its exact form): a
+// student writes it out, and does not round it on the way. Without an exact form, false.
+bool terminates_within(const std::optional<exact::Surd>& exact, int decimals);
+
+// A worked step's point with its relation sign: "= (1.5, 2)" when both coordinates stop within
+// the asked decimals, else "≈ (1.43, 2.17)".
+std::string equals_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
+                         const std::optional<exact::Surd>& ey);
+
 }  // namespace epure::kinds

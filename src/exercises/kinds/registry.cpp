@@ -5,7 +5,9 @@ namespace epure {
 std::vector<const ExerciseKind*> all_kinds() {
   // the course's order
   return {
+      &kinds::vectors_kind(),
       &kinds::projection_kind(),
+      &kinds::segments_kind(),
   };
 }
 

@@ -1,0 +1,342 @@
+// The course's preamble: what u·v and u∧v say about two vectors — their norms, the cosine and
+// sine of the signed angle θ from u to v, and θ itself, read with atan2 so that its sign (the
+// orientation, from u∧v) comes out with it.
+//
+// Branches are the sign of u·v (acute / right / obtuse): that is what the course stresses
+// (u·v = 0 ⇔ orthogonal), and each branch reads differently in the key. The orientation (the
+// sign of u∧v) is left to chance, so a class set sees both turns within every branch.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+
+#include "exercises/kind_support.h"
+#include "exercises/kinds/registry.h"
+#include "geometry/vectors.h"
+
+namespace epure::kinds::detail {
+
+// The student's hand method, in the course's order: u·v, u∧v, ‖u‖, ‖v‖, then cos and sin by
+// dividing by ‖u‖‖v‖, then θ = atan2(sin, cos). rounded[k] is the nudge index of the k-th of
+// those six intermediates (−1 when the student writes it exactly and does not round it).
+// Returns {dot, cross, norm_u, norm_v, cos, sin, angle_deg}. Exposed for the tests.
+std::vector<double> vectors_by_hand(geo::Vec2 u, geo::Vec2 v, const Nudge& nudge,
+                                    const std::array<int, 6>& rounded) {
+  const double dot = nudge.at(rounded[0], u.x * v.x + u.y * v.y);
+  const double cross = nudge.at(rounded[1], u.x * v.y - u.y * v.x);
+  const double norm_u = nudge.at(rounded[2], std::sqrt(u.x * u.x + u.y * u.y));
+  const double norm_v = nudge.at(rounded[3], std::sqrt(v.x * v.x + v.y * v.y));
+  const double cos = nudge.at(rounded[4], dot / (norm_u * norm_v));
+  const double sin = nudge.at(rounded[5], cross / (norm_u * norm_v));
+  const double angle = std::atan2(sin, cos) * (180.0 / std::numbers::pi);
+  return {dot, cross, norm_u, norm_v, cos, sin, angle};
+}
+
+}  // namespace epure::kinds::detail
+
+namespace epure::kinds {
+
+namespace {
+
+using geo::Point2;
+using geo::Vec2;
+
+struct Data {
+  Vec2 u, v;
+};
+
+// A right angle on the grid is exact in the data; its cosine is zero up to the rounding of the
+// one-decimal data in binary (about 1e-16), far below this.
+constexpr double kRightAngleCos = 1e-12;
+
+// Integer vectors of integer length (Pythagorean triples and the axes): the easy level's
+// norms are whole, and cos and sin rational.
+std::vector<Vec2> integer_norm_vectors(double max_component, double min_norm) {
+  std::vector<Vec2> out;
+  const auto m = static_cast<std::int64_t>(std::floor(max_component));
+  for (std::int64_t x = -m; x <= m; ++x)
+    for (std::int64_t y = -m; y <= m; ++y) {
+      const std::int64_t n2 = x * x + y * y;
+      const auto n = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(n2))));
+      if (n * n == n2 && static_cast<double>(n) >= min_norm)
+        out.push_back({static_cast<double>(x), static_cast<double>(y)});
+    }
+  return out;
+}
+
+// k·w for a random k ≠ 0, with w the shortest grid vector along perp(u): perp(u) in grid steps,
+// divided by the gcd of its components. `per_unit` grid steps make one unit (1, or 10 for the
+// one-decimal grid).
+std::optional<Vec2> perpendicular_on_grid(Vec2 u, int per_unit, double max_component, Rng& rng) {
+  const std::int64_t ux = std::llround(u.x * per_unit), uy = std::llround(u.y * per_unit);
+  const std::int64_t g = std::gcd(ux, uy);
+  if (g == 0) return std::nullopt;
+  const std::int64_t wx = -uy / g, wy = ux / g;
+  const auto k_max = static_cast<std::int64_t>(
+      std::floor(max_component * per_unit / static_cast<double>(std::max(std::abs(wx), std::abs(wy)))));
+  if (k_max < 1) return std::nullopt;
+  const std::int64_t k = rng.integer(1, k_max) * (rng.chance(0.5) ? -1 : 1);
+  // divided (not multiplied by 0.1) so that the coordinates are the doubles grid_value gives
+  return Vec2{static_cast<double>(k * wx) / per_unit, static_cast<double>(k * wy) / per_unit};
+}
+
+bool is_whole(double x) { return std::abs(x - std::nearbyint(x)) <= 1e-9 * std::max(1.0, std::abs(x)); }
+
+// Exact forms from the rational data: a second computation of every answer that has one.
+struct Exact {
+  std::optional<exact::Surd> dot, cross, norm_u, norm_v, cos, sin, angle;
+};
+
+Exact exact_forms(const Data& d) {
+  Exact e;
+  const auto ux = rational_of(d.u.x), uy = rational_of(d.u.y), vx = rational_of(d.v.x),
+             vy = rational_of(d.v.y);
+  if (!ux || !uy || !vx || !vy) return e;
+  try {
+    const exact::Rational dot = *ux * *vx + *uy * *vy, cross = *ux * *vy - *uy * *vx;
+    const exact::Rational nu2 = *ux * *ux + *uy * *uy, nv2 = *vx * *vx + *vy * *vy;
+    e.dot = exact::Surd(dot);
+    e.cross = exact::Surd(cross);
+    e.norm_u = exact::Surd::sqrt(nu2);
+    e.norm_v = exact::Surd::sqrt(nv2);
+    // u·v / (‖u‖‖v‖) = u·v·√(‖u‖²‖v‖²) / (‖u‖²‖v‖²), and likewise for u∧v
+    const exact::Rational nn = nu2 * nv2;
+    const exact::Surd root = exact::Surd::sqrt(nn);
+    e.cos = root * exact::Surd(dot / nn);
+    e.sin = root * exact::Surd(cross / nn);
+    // the angles whose degrees are whole: cos = 0, or |cos| = |sin|
+    const int turn = cross.sign();
+    if (dot.is_zero()) e.angle = exact::Surd(exact::Rational(90 * turn));
+    else if (dot == cross || dot == -cross)
+      e.angle = exact::Surd(exact::Rational((dot.sign() > 0 ? 45 : 135) * turn));
+  } catch (const exact::ExactOverflow&) {
+  } catch (const std::domain_error&) {
+  }
+  return e;
+}
+
+// A factor of a product as the key writes it: negative numbers in parentheses.
+std::string factor(const NumberStyle& n, double x) {
+  return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x);
+}
+
+class Vectors final : public ExerciseKind {
+ public:
+  std::string_view name() const override { return "vectors"; }
+  std::vector<std::pair<std::string, double>> default_branches() const override {
+    return {{"acute", 2}, {"right", 1}, {"obtuse", 2}};
+  }
+  std::map<std::string, double> default_constraints() const override {
+    // |θ| at least min_angle_deg from 0° and 180° (never collinear); an acute or obtuse θ at
+    // least right_margin_deg from 90°; both norms at least min_norm; components within
+    // ±max_component (the figure around O); the tips at least min_tip_gap apart (their labels).
+    return {{"min_angle_deg", 20.0}, {"right_margin_deg", 15.0}, {"min_norm", 2.0},
+            {"max_component", 6.0}, {"min_tip_gap", 1.5}};
+  }
+  std::vector<std::string> fields() const override {
+    return {"dot", "cross", "norm_u", "norm_v", "cos", "sin", "angle_deg"};
+  }
+
+  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
+    if (ctx.branch != "acute" && ctx.branch != "right" && ctx.branch != "obtuse")
+      throw std::invalid_argument(fmt::format("vectors: no branch '{}'", ctx.branch));
+    const Difficulty level = ctx.spec.difficulty;
+    const bool hard = level == Difficulty::hard;
+    // hard: closer to collinear and to the right angle, but safely away from them
+    const double min_angle = constraint(ctx, *this, "min_angle_deg") / (hard ? 2 : 1);
+    const double right_margin = constraint(ctx, *this, "right_margin_deg") / (hard ? 2 : 1);
+    const double min_norm = constraint(ctx, *this, "min_norm");
+    const double max_component = constraint(ctx, *this, "max_component");
+    const double min_tip_gap = constraint(ctx, *this, "min_tip_gap");
+    const int per_unit = hard ? 10 : 1;
+    const std::vector<Vec2> easy = level == Difficulty::easy
+                                       ? integer_norm_vectors(max_component, min_norm)
+                                       : std::vector<Vec2>{};
+    if (level == Difficulty::easy && easy.empty())
+      throw std::runtime_error("could not draw an instance meeting the constraints: vectors "
+                               "(no integer vector of integer norm within max_component)");
+
+    const auto draw_vector = [&]() -> Vec2 {
+      if (level == Difficulty::easy)
+        return easy[static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(easy.size()) - 1))];
+      return {grid_value(rng, -max_component, max_component, level),
+              grid_value(rng, -max_component, max_component, level)};
+    };
+
+    const Data d = draw_until(20000, "vectors (angle, norms, distance between the tips)", [&]() -> std::optional<Data> {
+      Data x;
+      x.u = draw_vector();
+      if (geo::norm(x.u) < min_norm) return std::nullopt;
+      if (ctx.branch == "right") {
+        const auto v = perpendicular_on_grid(x.u, per_unit, max_component, rng);
+        if (!v) return std::nullopt;
+        x.v = *v;
+      } else {
+        x.v = draw_vector();
+      }
+      if (geo::norm(x.v) < min_norm) return std::nullopt;
+      // standard asks for a square root somewhere: not both norms whole
+      if (level == Difficulty::standard && is_whole(geo::norm(x.u)) && is_whole(geo::norm(x.v)))
+        return std::nullopt;
+      if (geo::norm(x.u - x.v) < min_tip_gap) return std::nullopt;
+      const auto r = geo::compare_vectors(x.u, x.v);
+      const double a = std::abs(r.angle_deg);
+      if (a < min_angle || a > 180 - min_angle) return std::nullopt;
+      bool ok = false;
+      if (ctx.branch == "acute") ok = a <= 90 - right_margin;
+      if (ctx.branch == "obtuse") ok = a >= 90 + right_margin;
+      if (ctx.branch == "right") ok = std::abs(r.cos) <= kRightAngleCos;
+      if (!ok) return std::nullopt;
+      return x;
+    });
+    return build(d, ctx);
+  }
+
+ private:
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+    const auto& T = ctx.texts;
+    const auto& N = ctx.numbers;
+    const auto r = geo::compare_vectors(d.u, d.v);
+
+    ExerciseInstance inst;
+    inst.n = ctx.n;
+    inst.kind = std::string(name());
+    inst.branch = ctx.branch;
+    inst.instance = InstanceWriter("vectors").vec("u", d.u).vec("v", d.v).finish();
+    inst.solution = solve_instance(inst.instance);
+    inst.fingerprint = fingerprint(inst.instance);
+
+    const Exact e = exact_forms(d);
+
+    // The student rounds an intermediate only when it does not stop within the asked decimals.
+    std::array<int, 6> rounded{};
+    int count = 0;
+    const std::optional<exact::Surd>* steps[6] = {&e.dot, &e.cross, &e.norm_u, &e.norm_v, &e.cos, &e.sin};
+    for (int k = 0; k < 6; ++k) rounded[k] = terminates_within(*steps[k], ctx.decimals) ? -1 : count++;
+    const StudentMethod method = [&](const Nudge& nudge) {
+      return detail::vectors_by_hand(d.u, d.v, nudge, rounded);
+    };
+    const auto tol = derive_abs_tolerances(method, count, ctx.decimals);
+    // the method is the key's: with nothing rounded it must give the core's answers
+    const auto by_hand = method(Nudge{});
+    const double core[7] = {r.dot, r.cross, r.norm_u, r.norm_v, r.cos, r.sin, r.angle_deg};
+    for (int i = 0; i < 7; ++i)
+      if (!(std::abs(by_hand[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
+        throw std::logic_error(fmt::format("vectors: the hand method disagrees with the core ({})", inst.instance));
+
+    Questions q(ctx);
+    q.number("dot", r.dot, tol[0], e.dot);
+    q.number("cross", r.cross, tol[1], e.cross);
+    q.number("norm_u", r.norm_u, tol[2], e.norm_u);
+    q.number("norm_v", r.norm_v, tol[3], e.norm_v);
+    q.number("cos", r.cos, tol[4], e.cos);
+    q.number("sin", r.sin, tol[5], e.sin);
+    q.number("angle_deg", r.angle_deg, tol[6], e.angle);
+    inst.questions = q.take_questions();
+
+    const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y)}, {"v", N.point(d.v.x, d.v.y)}};
+    // ---- the sheet
+    inst.sheet = begin_sheet_section(ctx, "vectors.title");
+    inst.sheet.add(render::Paragraph{T.format("vectors.statement", data_vars)});
+    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.45});
+    add_fields(inst.sheet, q);
+
+    // ---- the key
+    inst.key = begin_key_section(ctx, "vectors.title");
+    inst.key.add(render::Paragraph{T.format("vectors.statement", data_vars)});
+    const TextVars factors = {{"ux", factor(N, d.u.x)}, {"uy", factor(N, d.u.y)},
+                              {"vx", factor(N, d.v.x)}, {"vy", factor(N, d.v.y)}};
+    // u·v, u∧v, ‖u‖² and ‖v‖² are exact decimals of the data: written out in full
+    TextVars dot_vars = factors;
+    dot_vars.emplace_back("dot", N.datum(r.dot));
+    inst.key.add(render::Paragraph{T.format("vectors.step.dot", dot_vars)});
+    TextVars cross_vars = factors;
+    cross_vars.emplace_back("cross", N.datum(r.cross));
+    inst.key.add(render::Paragraph{T.format("vectors.step.cross", cross_vars)});
+    inst.key.add(render::Paragraph{T.format(
+        "vectors.step.norms", {{"nu2", N.datum(geo::norm2(d.u))},
+                               {"norm_u", equals_value(ctx, r.norm_u, e.norm_u)},
+                               {"nv2", N.datum(geo::norm2(d.v))},
+                               {"norm_v", equals_value(ctx, r.norm_v, e.norm_v)}})});
+    inst.key.add(render::Paragraph{T.format("vectors.step.cos", {{"cos", equals_value(ctx, r.cos, e.cos)}})});
+    inst.key.add(render::Paragraph{T.format("vectors.step.sin", {{"sin", equals_value(ctx, r.sin, e.sin)}})});
+    inst.key.add(render::Paragraph{
+        T.format("vectors.step.angle", {{"angle", equals_value(ctx, r.angle_deg, e.angle)}})});
+    inst.key.add(render::Paragraph{T.get(fmt::format("vectors.step.{}", ctx.branch))});
+    inst.key.add(render::Paragraph{T.get(r.cross > 0 ? "vectors.step.ccw" : "vectors.step.cw")});
+    inst.key.add(render::Figure{key_scene(d, r, ctx), 0.5});
+    add_lines(inst.key, q);
+    return inst;
+  }
+
+  static render::Panel data_panel(const Data& d) {
+    render::Panel panel;
+    panel.view = view_around({{0, 0}, p2(d.u), p2(d.v)}, 1.0, 5.0);
+    panel.add(render::Grid{1, true});
+    panel.add(render::Arrow{{0, 0}, p2(d.u), render::Role::data});
+    panel.add(render::Arrow{{0, 0}, p2(d.v), render::Role::data});
+    return panel;
+  }
+
+  static void add_vector_labels(render::Panel& panel, const Data& d) {
+    panel.add(render::Label{"\\vec{u}", p2(d.u)});
+    panel.add(render::Label{"\\vec{v}", p2(d.v)});
+  }
+
+  render::Scene question_scene(const Data& d, const ExerciseContext& ctx) const {
+    render::Scene s;
+    s.title = ctx.texts.get("vectors.title");
+    s.description = ctx.texts.get("vectors.figure.question");
+    render::Panel panel = data_panel(d);
+    add_vector_labels(panel, d);
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+
+  render::Scene key_scene(const Data& d, const geo::VectorPair& r, const ExerciseContext& ctx) const {
+    render::Scene s;
+    s.title = ctx.texts.get("vectors.title");
+    s.description = ctx.texts.get("vectors.figure.key");
+    render::Panel panel = data_panel(d);
+    if (ctx.branch == "right") panel.add(render::RightAngle{{0, 0}, p2(d.u), p2(d.v), render::Role::construction});
+    // The signed angle: an arc from u to v around O, with an arrowhead at v's end showing the
+    // turn. Its radius keeps it clear of the right-angle mark and inside the shorter vector.
+    const double radius = std::clamp(0.35 * std::min(r.norm_u, r.norm_v), 0.7, 1.5);
+    const double from = std::atan2(d.u.y, d.u.x);
+    const double sweep = r.angle_deg * std::numbers::pi / 180;
+    const int pieces = std::max(8, static_cast<int>(std::abs(r.angle_deg) / 5));
+    render::Polygon arc;
+    arc.closed = false;
+    arc.role = render::Role::construction;
+    for (int i = 0; i <= pieces; ++i) {
+      const double phi = from + sweep * i / pieces;
+      arc.points.push_back({radius * std::cos(phi), radius * std::sin(phi)});
+    }
+    // the arrowhead on a chord of the arc's last ~0.4 units: long enough to carry a whole head,
+    // short enough to sit on the arc
+    const double head_from = from + sweep * (1 - std::min(0.3, 0.4 / (radius * std::abs(sweep))));
+    const render::P2 tip = arc.points.back();
+    panel.add(std::move(arc));
+    panel.add(render::Arrow{{radius * std::cos(head_from), radius * std::sin(head_from)}, tip,
+                            render::Role::construction});
+    const double middle = from + sweep / 2;
+    panel.add(render::Label{"θ", {radius * std::cos(middle), radius * std::sin(middle)},
+                            render::Side::auto_, render::Role::result});
+    add_vector_labels(panel, d);
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+};
+
+}  // namespace
+
+const ExerciseKind& vectors_kind() {
+  static const Vectors kind;
+  return kind;
+}
+
+}  // namespace epure::kinds
