@@ -7,5 +7,7 @@ namespace epure::cli {
 
 // Registers `epure solve`; the callback stores its exit status in `status`.
 void add_solve_command(CLI::App& app, int& status);
+// Registers `epure generate`.
+void add_generate_command(CLI::App& app, int& status);
 
 }  // namespace epure::cli

@@ -74,6 +74,11 @@ render::PageSize page_size(const std::string& page) {
   return page == "letter" ? render::PageSize::letter() : render::PageSize::a4();
 }
 
+render::PageWords page_words(const Texts& texts) {
+  return {texts.get("common.field_name"), texts.get("common.field_student_number"),
+          texts.get("common.page_word"), texts.get("common.yes"), texts.get("common.no")};
+}
+
 }  // namespace
 
 render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
@@ -83,7 +88,8 @@ render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
   doc.course = spec_.course;
   doc.sheet_id = sheet.id.str();
   doc.language = language_;
-  doc.header_note = texts.get("common.name_fields");
+  doc.student_fields = true;
+  doc.words = page_words(texts);
   doc.page = page_size(spec_.page);
   render::Section intro;
   intro.add(render::Paragraph{texts.format("common.rounding", {{"decimals", std::to_string(spec_.decimals)}}), true});
@@ -99,6 +105,7 @@ render::Document WorksheetSet::key_document(const Sheet& sheet) const {
   doc.course = spec_.course;
   doc.sheet_id = sheet.id.str();
   doc.language = language_;
+  doc.words = page_words(texts);
   doc.page = page_size(spec_.page);
   for (const auto& e : sheet.exercises) doc.sections.push_back(e.key);
   return doc;

@@ -1,0 +1,120 @@
+// `epure generate`: the course's worksheet set (or a spec's) into a directory.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cli/commands.h"
+#include "exercises/spec.h"
+#include "exercises/worksheet.h"
+#include "output/generate.h"
+
+namespace epure::cli {
+
+namespace {
+
+struct GenerateCliOptions {
+  int sheets = 30;
+  std::uint64_t seed = 1;
+  std::string spec_file;
+  std::string language;
+  std::string difficulty;
+  std::string out = "out";
+  std::string format = "svg";
+  bool quiet = false;
+  int jobs = 0;  // 0: every core
+};
+
+// A bar on stderr when it is a terminal and the run has lasted more than a second.
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO)) {}
+  void operator()(int done, int total) {
+    if (!enabled_) return;
+    const auto elapsed = std::chrono::steady_clock::now() - start_;
+    if (elapsed < std::chrono::seconds(1) && done < total) return;
+    if (elapsed < std::chrono::seconds(1) && !shown_) return;
+    shown_ = true;
+    const int width = 30, filled = total ? width * done / total : width;
+    fmt::print(stderr, "\r[{:=<{}}{: <{}}] {}/{} sheets", "", filled, "", width - filled, done, total);
+    if (done == total) fmt::print(stderr, "\n");
+  }
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+int run_generate(const GenerateCliOptions& o) {
+  WorksheetSpec spec;
+  if (o.spec_file.empty()) {
+    spec = builtin_spec();
+  } else {
+    std::ifstream in(o.spec_file, std::ios::binary);
+    if (!in) {
+      fmt::print(stderr, "epure generate: cannot read spec '{}'\n", o.spec_file);
+      return 2;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    spec = parse_spec(text.str(), o.spec_file);
+  }
+  SetOptions set_options;
+  if (!o.language.empty()) set_options.language = o.language;
+  if (!o.difficulty.empty()) set_options.difficulty = parse_difficulty(o.difficulty);
+  WorksheetSet set(std::move(spec), o.seed, set_options);
+
+  output::GenerateOptions options;
+  options.sheets = o.sheets;
+  options.out = o.out;
+  options.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options.epure_version = EPURE_VERSION;
+  Progress progress(!o.quiet);
+  options.progress = [&](int done, int total) { progress(done, total); };
+  const auto report = output::generate_set(set, options);
+  if (!o.quiet)
+    fmt::print("epure generate: {} sheets ({} … {}) into {}/ (sheets/, keys/, key.json, index.html)\n",
+               report.sheets, report.first_id, report.last_id, o.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_generate_command(CLI::App& app, int& status) {
+  auto o = std::make_shared<GenerateCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "generate", "Write a randomised worksheet set and its answer keys (default: the course's worksheet)");
+  cmd->add_option("--sheets,-n", o->sheets, "Number of sheets")->check(CLI::Range(1, 32768))->capture_default_str();
+  cmd->add_option("--seed,-s", o->seed, "Seed of the set (0 to 2^35-1); same spec + seed = same files")
+      ->check(CLI::Range(std::uint64_t{0}, (std::uint64_t{1} << 35) - 1))
+      ->capture_default_str();
+  cmd->add_option("--spec", o->spec_file, "Worksheet spec (TOML); default: the built-in course worksheet")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--lang", o->language, "Language of the texts (overrides the spec)")
+      ->check(CLI::IsMember({"en", "fr"}));
+  cmd->add_option("--difficulty", o->difficulty, "Difficulty of every exercise (overrides the spec)")
+      ->check(CLI::IsMember({"easy", "standard", "hard"}));
+  cmd->add_option("--out,-o", o->out, "Output directory")->capture_default_str();
+  cmd->add_option("--format", o->format, "Output format")->check(CLI::IsMember({"svg"}))->capture_default_str();
+  cmd->add_option("--jobs,-j", o->jobs, "Parallel jobs, 0 for every core (output is the same for any number)")
+      ->check(CLI::Range(0, 256))
+      ->capture_default_str();
+  cmd->add_flag("--quiet,-q", o->quiet, "No progress bar nor summary");
+  cmd->callback([o, &status] {
+    try {
+      status = run_generate(*o);
+    } catch (const SpecError& e) {
+      fmt::print(stderr, "epure generate: {}\n", e.what());
+      status = 2;
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "epure generate: {}\n", e.what());
+      status = 1;
+    }
+  });
+}
+
+}  // namespace epure::cli

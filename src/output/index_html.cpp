@@ -1,0 +1,55 @@
+#include "output/index_html.h"
+
+#include <fmt/format.h>
+
+namespace epure::output {
+
+namespace {
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string index_html(const std::string& title, const std::string& course,
+                       const std::string& language, const std::vector<IndexEntry>& entries) {
+  std::string html = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<title>{}</title>\n<style>\n"
+      "body{{font-family:'DejaVu Sans',sans-serif;margin:2em;background:#f4f4f4;color:#222}}\n"
+      "h1{{font-size:1.4em}} .course{{color:#555}}\n"
+      "section{{background:#fff;margin:1.5em 0;padding:1em;box-shadow:0 1px 3px #0002}}\n"
+      "section h2{{font-size:1.1em;font-family:monospace}}\n"
+      ".pair{{display:flex;gap:1em;align-items:flex-start}} .pair a{{flex:1}}\n"
+      ".pair img{{width:100%;border:1px solid #ccc;background:#fff}}\n"
+      "nav a{{margin-right:.6em;font-family:monospace}}\n"
+      "</style>\n</head>\n<body>\n<h1>{}</h1>\n<p class=\"course\">{}</p>\n"
+      "<p>{} sheets. <a href=\"key.json\">key.json</a></p>\n<nav>\n",
+      escape(language), escape(title), escape(title), escape(course), entries.size());
+  for (const auto& e : entries) html += fmt::format("<a href=\"#s-{0}\">{0}</a>\n", escape(e.id));
+  html += "</nav>\n";
+  for (const auto& e : entries) {
+    const std::string id = escape(e.id);
+    html += fmt::format(
+        "<section id=\"s-{0}\">\n<h2>{0}</h2>\n<div class=\"pair\">\n"
+        "<a href=\"sheets/{0}.svg\"><img src=\"sheets/{0}.svg\" alt=\"sheet {0}\" loading=\"lazy\"></a>\n"
+        "<a href=\"keys/{0}.svg\"><img src=\"keys/{0}.svg\" alt=\"key {0}\" loading=\"lazy\"></a>\n"
+        "</div>\n</section>\n",
+        id);
+  }
+  html += "</body>\n</html>\n";
+  return html;
+}
+
+}  // namespace epure::output
