@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Compare `epure solve` output with expected JSON Lines, by the contract's acceptance rules.
 
-usage: compare_jsonl.py ACTUAL EXPECTED
+usage: compare_jsonl.py ACTUAL EXPECTED [--input INPUT]
 Booleans, strings and the set of `faces` match exactly; a number agrees within
 max(1e-9, 1e-9*|expected|) and must not print more significant digits than the shortest
 round-trip text of its double; the field sets must be equal; an expected error line needs a
-non-empty "error" string. Prints one line per mismatch; exit 1 if any.
+non-empty "error" string. Prints one line per mismatch, then for each line that disagrees its
+input (with --input: the solve input, whose blank lines have no output), expected and actual
+text; exit 1 if any.
 """
 import json
 import re
@@ -65,8 +67,17 @@ def same(actual, expected, path, problems):
 
 
 def main():
-    actual_lines = open(sys.argv[1], encoding='utf-8').read().splitlines()
-    expected_lines = open(sys.argv[2], encoding='utf-8').read().splitlines()
+    args = sys.argv[1:]
+    inputs = None
+    if '--input' in args:
+        i = args.index('--input')
+        text = open(args[i + 1], 'rb').read().decode('utf-8', errors='replace')
+        # the lines epure solves: '\n'-separated, a trailing '\r' dropped, blank ones skipped
+        inputs = [l for l in (x[:-1] if x.endswith('\r') else x for x in text.split('\n'))
+                  if l.strip(' \t')]
+        del args[i:i + 2]
+    actual_lines = open(args[0], encoding='utf-8').read().splitlines()
+    expected_lines = open(args[1], encoding='utf-8').read().splitlines()
     problems = []
     if len(actual_lines) != len(expected_lines):
         problems.append(f"{len(actual_lines)} lines, expected {len(expected_lines)}")
@@ -80,8 +91,15 @@ def main():
         same(actual, json.loads(e), f"line {n}", problems)
     for p in problems:
         print(p)
-    print(f"{len(expected_lines) - len({p.split(':')[0] for p in problems if p.startswith('line')})} "
-          f"lines agree, {len(problems)} problems")
+    bad = sorted({int(m.group(1)) for m in (re.match(r'line (\d+)\b', p) for p in problems) if m})
+    for n in bad:
+        print(f"line {n}:")
+        if inputs is not None and n <= len(inputs):
+            print(f"  input:    {inputs[n - 1]}")
+        print(f"  expected: {expected_lines[n - 1]}")
+        print(f"  actual:   {actual_lines[n - 1]}")
+    print(f"{len(expected_lines) - len(bad)} of {len(expected_lines)} lines agree, "
+          f"{len(bad)} disagree ({len(problems)} problems)")
     return 1 if problems else 0
 
 
