@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -108,6 +109,44 @@ const Value* find(std::span<const Field> fields, std::string_view key) {
 
 // ---- The flat reader ------------------------------------------------------------------------
 
+// A JSON number of at most 15 significant digits and a power of ten within ±22, as a worksheet
+// writes them ("-2.5", "0.125", "3e2"): digits·10^k is then one exact double times or over
+// another, a single correctly rounded operation, so it is the double strtod gives (Clinger's
+// fast path). Nothing for anything longer: from_chars reads it.
+std::optional<double> short_decimal(const char* p, const char* end) {
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const bool negative = p != end && *p == '-';
+  if (negative) ++p;
+  std::uint64_t digits = 0;
+  int count = 0, power = 0;
+  for (; p != end && *p != 'e' && *p != 'E'; ++p) {
+    if (*p == '.') {
+      power = -1;  // from now on, each digit is one more decimal
+      continue;
+    }
+    if (digits != 0 || *p != '0') ++count;  // leading zeros are not significant
+    digits = 10 * digits + static_cast<std::uint64_t>(*p - '0');
+    if (power < 0) --power;
+  }
+  if (count > 15) return std::nullopt;  // below 10^15 < 2^53: exact as a double
+  if (power < 0) ++power;               // the '.' itself counted one
+  if (p != end) {
+    ++p;  // 'e'
+    const bool minus = *p == '-';
+    if (*p == '-' || *p == '+') ++p;
+    if (end - p > 3) return std::nullopt;
+    int exponent = 0;
+    for (; p != end; ++p) exponent = 10 * exponent + (*p - '0');
+    power += minus ? -exponent : exponent;
+  }
+  if (power < -22 || power > 22) return std::nullopt;
+  const double x = static_cast<double>(digits);
+  const double value = power < 0 ? x / kPowers[-power] : x * kPowers[power];
+  return negative ? -value : value;
+}
+
 // Reads the shape of every well-formed solve line (one flat object whose values are numbers,
 // plain strings or arrays of at most three numbers) straight from the text, allocating nothing:
 // a DOM per line would cost more than the geometry. Anything else (escapes, non-ASCII, nesting,
@@ -200,9 +239,13 @@ class FlatReader {
       if (!eat('+')) eat('-');
       if (!digits()) return false;
     }
-    // Out of range (1e400, 1e-400): nlohmann's own wording and value.
-    auto [end, error] = std::from_chars(begin, p_, x);
-    if (error != std::errc() || end != p_) return false;
+    if (auto exact = short_decimal(begin, p_)) {
+      x = *exact;
+    } else {
+      // Out of range (1e400, 1e-400): nlohmann's own wording and value.
+      auto [end, error] = std::from_chars(begin, p_, x);
+      if (error != std::errc() || end != p_) return false;
+    }
     // nlohmann reads "-0" as the integer 0, which is +0.0.
     if (integer && x == 0) x = 0;
     return true;
