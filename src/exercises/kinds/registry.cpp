@@ -8,8 +8,8 @@ std::vector<const ExerciseKind*> all_kinds() {
       &kinds::vectors_kind(),
       &kinds::projection_kind(),
       &kinds::segments_kind(),
-      &kinds::ray_ellipse_kind(),
-      &kinds::ray_rectangle_kind(),
+      &kinds::ray_circle_kind(),
+      &kinds::ray_square_kind(),
   };
 }
 

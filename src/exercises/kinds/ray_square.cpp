@@ -1,0 +1,472 @@
+// Exercise 4 of the course: the first point where a ray meets the canonical square [-1,1]². The
+// sides whose outer half-plane holds A are the candidates (at most two); each is met where
+// (A + t·û)·n = 1, t = (1 − A·n) / (û·n), if the ray heads into it (û·n < 0) and the point lies
+// on the side. A ray that starts inside leaves through the side it reaches first.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "exercises/kind_support.h"
+#include "exercises/kinds/registry.h"
+#include "geometry/ray_square.h"
+
+namespace epure::kinds {
+
+namespace {
+
+using exact::Rational;
+using exact::Surd;
+using geo::Face;
+using geo::Point2;
+using geo::Vec2;
+
+struct Data {
+  Point2 A;
+  Vec2 u;
+};
+
+// Axis directions and Pythagorean triples: û, t and I rational at the easy level.
+constexpr Vec2 kEasyDirections[] = {{1, 0}, {0, 1}, {2, 0}, {0, 3},  {3, 4},
+                                    {4, 3}, {6, 8}, {8, 6}, {5, 12}, {12, 5}};
+
+// The four sides in the contract's order.
+constexpr Face kSides[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
+
+double coord(Point2 p, int axis) { return axis == 0 ? p.x : p.y; }
+Vec2 normal_of(Face f) { return f.axis == 0 ? Vec2{double(f.sign), 0} : Vec2{0, double(f.sign)}; }
+const char* axis_name(int axis) { return axis == 0 ? "x" : "y"; }
+
+// A value as a worked step shows it: its exact form when short, with its decimal value when that
+// is not the same number written otherwise ("37/5 = 7.4", "−6√5/5 ≈ −2.68"); the decimal alone
+// when the exact form is long (one-decimal data give fractions like 376996/25925).
+std::string step_value(const ExerciseContext& ctx, double value, const std::optional<Surd>& e) {
+  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
+  if (!e) return rounded;
+  try {
+    const std::string pretty = e->pretty();
+    if (pretty.size() > 16 || e->a().den() > 1000 || e->b().den() > 1000) return rounded;
+    const std::string exact = ctx.numbers.localise(pretty);
+    if (!e->is_rational()) return fmt::format("{} ≈ {}", exact, rounded);
+    const std::int64_t den = e->a().den();
+    if (den == 1) return exact;
+    std::int64_t pow10 = 1;
+    for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
+    if (pow10 % den == 0) return fmt::format("{} = {}", exact, ctx.numbers.datum(value, ctx.decimals));
+    return fmt::format("{} ≈ {}", exact, rounded);
+  } catch (const exact::ExactOverflow&) {
+    return rounded;
+  }
+}
+
+std::string step_point(const ExerciseContext& ctx, Point2 p, const std::optional<Surd>& ex,
+                       const std::optional<Surd>& ey) {
+  return fmt::format("({}{} {})", step_value(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
+                     step_value(ctx, p.y, ey));
+}
+
+geo::RaySquare solve(const Data& d) { return geo::intersect_canonical_square(geo::Ray2::unit(d.A, d.u)); }
+
+std::string branch_of(const geo::RaySquare& rs) {
+  if (rs.inside) return "inside";
+  return rs.hit ? "hit" : "miss";
+}
+
+// A side the method looks at: a candidate from outside, a side the ray heads towards from inside.
+struct Side {
+  Face face;
+  double u_n;                  // û·n
+  std::optional<double> t;     // where the ray crosses the side's line, when it heads to it
+  std::optional<Point2> J;     // that crossing
+};
+
+std::vector<Side> sides_in_play(const Data& d, const geo::RaySquare& rs) {
+  const Vec2 uh = d.u / geo::norm(d.u);
+  std::vector<Side> out;
+  for (Face f : kSides) {
+    const Vec2 n = normal_of(f);
+    const double u_n = geo::dot(uh, n);
+    Side s{f, u_n, std::nullopt, std::nullopt};
+    if (rs.inside ? !(u_n > 0) : !rs.faces.contains(f)) continue;
+    if (rs.inside || u_n < 0) {
+      // (A + t·û)·n = 1
+      s.t = (1 - geo::dot(geo::to_vec(d.A), n)) / u_n;
+      s.J = d.A + *s.t * uh;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+// Exact forms from the rational data: û = u/√(u·u), and for a side (axis k, sign σ) with u_n =
+// σ·u_k, t = (1 − σ·A_k)·√(u·u)/u_n and the crossing A + ((1 − σ·A_k)/u_n)·u (rational).
+struct Exact {
+  std::optional<Surd> norm_u, ux, uy;
+  struct PerSide {
+    std::optional<Surd> u_n, t, jx, jy;
+  };
+  PerSide side[4];
+};
+
+Exact exact_values(const Data& d) {
+  Exact e;
+  const auto ax = rational_of(d.A.x), ay = rational_of(d.A.y), ux = rational_of(d.u.x),
+             uy = rational_of(d.u.y);
+  if (!(ax && ay && ux && uy)) return e;
+  try {
+    const Rational n = *ux * *ux + *uy * *uy;
+    e.norm_u = Surd::sqrt(n);
+    e.ux = *e.norm_u * Surd(*ux / n);
+    e.uy = *e.norm_u * Surd(*uy / n);
+    for (int i = 0; i < 4; ++i) {
+      const Face f = kSides[i];
+      const Rational sign(f.sign);
+      const Rational u_n = sign * (f.axis == 0 ? *ux : *uy);
+      const Rational a_n = sign * (f.axis == 0 ? *ax : *ay);
+      e.side[i].u_n = *e.norm_u * Surd(u_n / n);
+      if (u_n.is_zero()) continue;
+      const Rational k = (Rational(1) - a_n) / u_n;
+      e.side[i].t = *e.norm_u * Surd(k);
+      e.side[i].jx = Surd(*ax + k * *ux);
+      e.side[i].jy = Surd(*ay + k * *uy);
+    }
+  } catch (const exact::ExactOverflow&) {
+  }
+  return e;
+}
+
+int index_of(Face f) {
+  for (int i = 0; i < 4; ++i)
+    if (kSides[i] == f) return i;
+  return 0;
+}
+
+void check_agrees(const std::optional<Surd>& e, double core, const char* what) {
+  if (e && !(std::abs(e->value() - core) <= 1e-9 * std::max(1.0, std::abs(core))))
+    throw std::logic_error(fmt::format("ray_square: exact {} = {} disagrees with the core's {}", what,
+                                       e->value(), core));
+}
+
+// True when x is written exactly with `decimals` decimals: a student's rounding leaves it as is.
+bool on_decimal_grid(double x, int decimals) {
+  const double scaled = x * std::pow(10.0, decimals);
+  return std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
+}
+
+// The student's method on the side hit: û, t = (1 − A·n)/(û·n), I = A + t·û, each rounded
+// (unless already written with `decimals` decimals); the answers t, I and N.
+StudentMethod student_method(const Data& d, Face f, int decimals) {
+  return [d, f, decimals](const Nudge& nudge) {
+    auto rounded = [&](int k, double v) { return on_decimal_grid(v, decimals) ? v : nudge.at(k, v); };
+    const double length = geo::norm(d.u);
+    const Vec2 uh{rounded(0, d.u.x / length), rounded(1, d.u.y / length)};
+    const Vec2 n = normal_of(f);
+    const double t = rounded(2, (1 - geo::dot(geo::to_vec(d.A), n)) / geo::dot(uh, n));
+    const Point2 I{rounded(3, d.A.x + t * uh.x), rounded(4, d.A.y + t * uh.y)};
+    return std::vector<double>{t, I.x, I.y, n.x, n.y};
+  };
+}
+
+// Unnudged, the student's method must give the core's answer, or the tolerances derived from it
+// would grade against another figure.
+void check_method(const StudentMethod& method, const geo::RaySquare& rs) {
+  const std::vector<double> core = {rs.hit->t, rs.hit->I.x, rs.hit->I.y, rs.hit->N.x, rs.hit->N.y};
+  const auto mine = method(Nudge{});
+  for (std::size_t i = 0; i < core.size(); ++i)
+    if (!(std::abs(mine[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
+      throw std::logic_error(fmt::format("ray_square: the student's method gives {} where the core gives {}",
+                                         mine[i], core[i]));
+}
+
+class RaySquareKind final : public ExerciseKind {
+ public:
+  std::string_view name() const override { return "ray_square"; }
+  std::vector<std::pair<std::string, double>> default_branches() const override {
+    return {{"hit", 3}, {"miss", 1}, {"inside", 1}};
+  }
+  std::map<std::string, double> default_constraints() const override {
+    return {
+        {"corner_margin", 0.15},  // a crossing at least this far from a side's ends (on or off it)
+        {"side_margin", 0.5},     // each coordinate of A at least this far from ±1
+        {"t_min", 0.5},           // the hit at least this far along the ray
+        {"min_cos", 0.2},         // |û·n| of a side in play at least this, unless exactly 0
+    };
+  }
+  std::vector<std::string> fields() const override { return {"faces", "inside", "hit", "t", "I", "N"}; }
+
+  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
+    const Difficulty level = ctx.spec.difficulty;
+    const bool hard = level == Difficulty::hard;
+    const bool inside = ctx.branch == "inside";
+    const double cm = constraint(ctx, *this, "corner_margin");
+    const double sm = constraint(ctx, *this, "side_margin");
+    const double t_min = constraint(ctx, *this, "t_min") / (hard ? 2 : 1);
+    const double min_cos = constraint(ctx, *this, "min_cos");
+    // hard: near a corner or grazing a side's end, yet on the clear side of these margins
+    const double cm_clear = hard ? cm / 3 : cm, sm_clear = hard ? sm / 5 : sm;
+    const double graze = cm + 0.1;
+
+    auto accept = [&](const Data& x) {
+      const auto rs = solve(x);
+      if (branch_of(rs) != ctx.branch) return false;
+      for (int k = 0; k < 2; ++k)
+        if (std::abs(std::abs(coord(x.A, k)) - 1) < sm_clear) return false;
+      if (rs.hit && rs.hit->t < t_min) return false;
+      double closest = 1e9;  // how near a decisive crossing comes to a side's end
+      for (const Side& s : sides_in_play(x, rs)) {
+        if (std::abs(s.u_n) < min_cos && s.u_n != 0) return false;  // nearly parallel to the side
+        if (!s.J) continue;
+        const double other = std::abs(coord(*s.J, 1 - s.face.axis));
+        const bool decisive = rs.face && *rs.face == s.face;
+        if (decisive) {
+          if (other > 1 - cm_clear) return false;
+          closest = std::min(closest, 1 - other);
+        } else if (!rs.inside) {
+          if (other < 1 + cm_clear) return false;
+          closest = std::min(closest, other - 1);
+        }
+      }
+      if (!hard) return true;
+      const bool grazing = closest <= graze;
+      if (rs.inside)
+        return grazing || std::max(std::abs(x.A.x), std::abs(x.A.y)) >= 1 - sm;
+      // A in a corner region close to the corner (two candidates), or close to its only
+      // candidate side
+      const double ax = std::abs(x.A.x), ay = std::abs(x.A.y);
+      const bool near_corner = ax > 1 && ay > 1 && ax <= 1.8 && ay <= 1.8;
+      const bool near_side = std::min(ax > 1 ? ax : 9.0, ay > 1 ? ay : 9.0) <= 1 + 3 * sm_clear;
+      return grazing || near_corner || near_side;
+    };
+
+    const Data d = draw_until(200000, "ray_square (branch, corner and side margins, t range)",
+                              [&]() -> std::optional<Data> {
+      Data x;
+      if (inside && !hard) {
+        // half a grid step: the only integer point strictly inside is the centre
+        x.A = {0.5 * double(rng.integer(-1, 1)), 0.5 * double(rng.integer(-1, 1))};
+      } else if (inside) {
+        x.A = {grid_value(rng, -0.9, 0.9, level), grid_value(rng, -0.9, 0.9, level)};
+      } else {
+        x.A = {grid_value(rng, -4, 4, level), grid_value(rng, -4, 4, level)};
+      }
+      if (level == Difficulty::easy) {
+        x.u = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
+        if (rng.chance(0.5)) x.u.x = -x.u.x;
+        if (rng.chance(0.5)) x.u.y = -x.u.y;
+      } else {
+        const double m = hard ? 3 : 4;
+        x.u = {grid_value(rng, -m, m, level), grid_value(rng, -m, m, level)};
+        if (geo::norm(x.u) < 1) return std::nullopt;
+      }
+      if (!accept(x)) return std::nullopt;
+      return x;
+    });
+    return build(d, ctx);
+  }
+
+ private:
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+    const auto& T = ctx.texts;
+    const auto& N = ctx.numbers;
+    const auto rs = solve(d);
+    const Exact e = exact_values(d);
+    const auto sides = sides_in_play(d, rs);
+
+    ExerciseInstance inst;
+    inst.n = ctx.n;
+    inst.kind = std::string(name());
+    inst.branch = ctx.branch;
+    inst.instance = InstanceWriter("ray_square").point("A", d.A).vec("u", d.u).finish();
+    inst.solution = solve_instance(inst.instance);
+    inst.fingerprint = fingerprint(inst.instance);
+
+    std::vector<std::string> faces;
+    rs.faces.for_each([&](Face f) { faces.emplace_back(geo::face_name(f)); });
+
+    std::optional<Surd> t_exact, ix_exact, iy_exact;
+    if (rs.hit) {
+      const auto& s = e.side[index_of(*rs.face)];
+      t_exact = s.t, ix_exact = s.jx, iy_exact = s.jy;
+      check_agrees(t_exact, rs.hit->t, "t");
+      check_agrees(ix_exact, rs.hit->I.x, "I.x");
+      check_agrees(iy_exact, rs.hit->I.y, "I.y");
+    }
+
+    std::vector<double> tol;
+    if (rs.hit) {
+      const StudentMethod method = student_method(d, *rs.face, ctx.decimals);
+      check_method(method, rs);
+      tol = derive_abs_tolerances(method, 5, ctx.decimals);
+    }
+
+    Questions q(ctx);
+    q.faces("faces", faces, {"+x", "+y", "-x", "-y"});
+    q.boolean("inside", rs.inside);
+    q.boolean("hit", rs.hit.has_value());
+    if (rs.hit) {
+      q.number("t", rs.hit->t, tol[0], t_exact);
+      q.point("I", rs.hit->I, tol[1], tol[2], ix_exact, iy_exact);
+      q.vector("N", rs.hit->N, tol[3], tol[4], Surd(Rational(std::lround(rs.hit->N.x))),
+               Surd(Rational(std::lround(rs.hit->N.y))));
+    }
+    inst.questions = q.take_questions();
+
+    const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)}, {"u", N.point(d.u.x, d.u.y)}};
+    // ---- the sheet
+    inst.sheet = begin_sheet_section(ctx, "ray_square.title");
+    inst.sheet.add(render::Paragraph{T.format("ray_square.statement", data_vars)});
+    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.5});
+    add_fields(inst.sheet, q);
+
+    // ---- the key, as the course: candidate sides, then each one in turn
+    inst.key = begin_key_section(ctx, "ray_square.title");
+    inst.key.add(render::Paragraph{T.format("ray_square.statement", data_vars)});
+    auto step = [&](std::string_view key, const TextVars& vars = {}) {
+      inst.key.add(render::Paragraph{T.format(fmt::format("ray_square.step.{}", key), vars)});
+    };
+    for (int k = 0; k < 2; ++k) {
+      const double a = coord(d.A, k);
+      const char* where = rs.faces.contains({k, +1}) ? "plus" : rs.faces.contains({k, -1}) ? "minus" : "none";
+      step(fmt::format("axis.{}", where), {{"c", axis_name(k)},
+                                           {"v", N.datum(a)},
+                                           {"face", std::string(geo::face_name({k, a > 0 ? +1 : -1}))}});
+    }
+    if (rs.inside) {
+      step("no_candidate");
+    } else {
+      std::string list;
+      for (const auto& f : faces) list += fmt::format("{}{}", list.empty() ? "" : ", ", f);
+      step("candidates", {{"faces", list}});
+    }
+    const Vec2 uh = d.u / geo::norm(d.u);
+    step("unit", {{"norm_u", step_value(ctx, geo::norm(d.u), e.norm_u)},
+                  {"u_hat", step_point(ctx, geo::to_point(uh), e.ux, e.uy)}});
+    for (const Side& s : sides) {
+      const auto& ex = e.side[index_of(s.face)];
+      const bool hit_here = rs.face && *rs.face == s.face;
+      const Vec2 n = normal_of(s.face);
+      // the side hit shows the core's values; the others their exact values (or the formula's)
+      const double t = hit_here ? rs.hit->t : s.t.value_or(0);
+      const Point2 J = hit_here ? rs.hit->I : s.J.value_or(Point2{});
+      const TextVars vars = {{"face", std::string(geo::face_name(s.face))},
+                             {"n", N.point(n.x, n.y)},
+                             {"un", step_value(ctx, s.u_n, ex.u_n)},
+                             {"t", step_value(ctx, t, ex.t)},
+                             {"I", step_point(ctx, J, ex.jx, ex.jy)}};
+      if (rs.inside) {
+        step("exit_side", vars);
+        continue;
+      }
+      step("side", vars);
+      if (!s.J) {
+        step("side_away");
+        continue;
+      }
+      step("side_cross", vars);
+      const int other = 1 - s.face.axis;
+      const std::optional<Surd>& other_exact = other == 0 ? ex.jx : ex.jy;
+      const double v = coord(J, other);
+      step(hit_here ? "side_on" : "side_off",
+           {{"c", axis_name(other)},
+            {"v", step_value(ctx, std::abs(v), other_exact ? std::optional<Surd>(v < 0 ? -*other_exact : *other_exact)
+                                                      : std::nullopt)}});
+    }
+    if (rs.hit) {
+      const TextVars vars = {{"face", std::string(geo::face_name(*rs.face))},
+                             {"t", step_value(ctx, rs.hit->t, t_exact)},
+                             {"I", step_point(ctx, rs.hit->I, ix_exact, iy_exact)},
+                             {"N", N.point(rs.hit->N.x, rs.hit->N.y)}};
+      step(rs.inside ? "exit" : "hit", vars);
+    } else {
+      step("miss");
+    }
+    inst.key.add(render::Figure{key_scene(d, rs, sides, ctx), 0.55});
+    add_lines(inst.key, q);
+    return inst;
+  }
+
+  static render::Panel data_panel(const Data& d) {
+    render::Panel panel;
+    const double m = std::ceil(std::max({2.0, std::abs(d.A.x), std::abs(d.A.y)}) + 1);
+    panel.view = {-m, -m, m, m};
+    panel.add(render::Grid{1, true});
+    return panel;
+  }
+
+  static std::vector<render::P2> corners() { return {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}; }
+
+  render::Scene question_scene(const Data& d, const ExerciseContext& ctx) const {
+    render::Scene s;
+    s.title = ctx.texts.get("ray_square.title");
+    s.description = ctx.texts.get("ray_square.figure.question");
+    render::Panel panel = data_panel(d);
+    panel.add(render::Polygon{corners(), true, render::Role::data, false});
+    panel.add(render::Ray{p2(d.A), p2(d.u), render::Role::data});
+    panel.add(render::PointMark{p2(d.A), render::Role::data, render::Label{"A", p2(d.A)}});
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+
+  render::Scene key_scene(const Data& d, const geo::RaySquare& rs, const std::vector<Side>& sides,
+                          const ExerciseContext& ctx) const {
+    using render::Role;
+    const auto& T = ctx.texts;
+    render::Scene s;
+    s.title = T.get("ray_square.title");
+    s.description = T.get(fmt::format("ray_square.figure.key.{}", branch_of(rs)));
+    render::Panel panel = data_panel(d);
+    const Vec2 uh = d.u / geo::norm(d.u);
+    auto in_view = [&](Point2 p) {
+      return p.x > panel.view.x_min && p.x < panel.view.x_max && p.y > panel.view.y_min && p.y < panel.view.y_max;
+    };
+    // the sides' supporting lines where the method crosses them off the side
+    for (const Side& side : sides)
+      if (side.J && !(rs.face && *rs.face == side.face)) {
+        const Vec2 n = normal_of(side.face);
+        panel.add(render::Line{p2(geo::to_point(n)), p2(geo::to_point(n) + geo::perp(n)), Role::construction});
+      }
+    // the four sides: those in play highlighted, the others greyed
+    for (Face f : kSides) {
+      const bool in_play = std::any_of(sides.begin(), sides.end(), [&](const Side& x) { return x.face == f; });
+      const Vec2 n = normal_of(f), along = geo::perp(n);
+      const Point2 mid = geo::to_point(n);
+      panel.add(render::Segment{p2(mid - along), p2(mid + along), in_play ? Role::highlight : Role::muted});
+    }
+    panel.add(render::Ray{p2(d.A), p2(d.u), Role::data});
+    panel.add(render::Arrow{p2(d.A), p2(d.A + uh), Role::construction});
+    panel.add(render::Label{T.get("ray_square.figure.u_hat"), p2(d.A + uh), render::Side::auto_, Role::construction});
+    for (const Side& side : sides)
+      if (side.J && !(rs.face && *rs.face == side.face) && in_view(*side.J))
+        panel.add(render::PointMark{p2(*side.J), Role::construction,
+                                    render::Label{T.get("ray_square.figure.off_side"), p2(*side.J),
+                                                  render::Side::auto_, Role::construction}});
+    panel.add(render::PointMark{p2(d.A), Role::data, render::Label{"A", p2(d.A)}});
+    if (rs.hit) {
+      const Point2 I = rs.hit->I;
+      panel.add(render::PointMark{p2(I), Role::result, render::Label{"I", p2(I), render::Side::auto_, Role::result}});
+      panel.add(render::Arrow{p2(I), p2(I + rs.hit->N), Role::normal});
+      panel.add(render::Label{T.get("ray_square.figure.N"), p2(I + rs.hit->N), render::Side::auto_, Role::normal});
+    }
+    s.panels.push_back(std::move(panel));
+    return s;
+  }
+};
+
+}  // namespace
+
+namespace testing {
+// The student's method without nudges (t, I, N), for the tests to compare with the core; empty
+// without a hit.
+std::vector<double> ray_square_student_answers(geo::Point2 A, geo::Vec2 u) {
+  const auto rs = solve(Data{A, u});
+  if (!rs.hit) return {};
+  return student_method(Data{A, u}, *rs.face, 2)(Nudge{});
+}
+}  // namespace testing
+
+const ExerciseKind& ray_square_kind() {
+  static const RaySquareKind kind;
+  return kind;
+}
+
+}  // namespace epure::kinds
