@@ -10,6 +10,8 @@ std::vector<const ExerciseKind*> all_kinds() {
       &kinds::segments_kind(),
       &kinds::ray_circle_kind(),
       &kinds::ray_square_kind(),
+      &kinds::ray_ellipse_kind(),
+      &kinds::ray_rectangle_kind(),
   };
 }
 
