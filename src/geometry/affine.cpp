@@ -66,8 +66,12 @@ Vec2 Transform2::apply_normal(Vec2 n) const {
 }
 
 CosSin cos_sin_degrees(double degrees) {
-  // Reduce to a quarter turn q and a remainder in [−45°, 45°]; both steps are exact for the
-  // angles a worksheet uses, and a zero remainder gives exact quarter turns.
+  // No angle, no rotation (and no int conversion of a NaN quarter below, which is undefined).
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!std::isfinite(degrees)) return {nan, nan};
+  // Reduce to a quarter turn q and a remainder in [−45°, 45°]; both steps are exact (fmod is,
+  // and so is subtracting a multiple of 90° from an angle within 45° of it), and a zero
+  // remainder gives exact quarter turns.
   double turns = std::fmod(degrees, 360.0);
   const double quarter = std::nearbyint(turns / 90.0);
   const double rest = turns - 90.0 * quarter;

@@ -4,6 +4,11 @@
 // the direction, so that t is a length, as the course's rays are (u normé). Rays carried into a
 // canonical frame keep their direction as the transform leaves it, so t means the same point in
 // both frames (pbrt's convention).
+//
+// Rounding a direction to unit length turns the line by up to ε about its origin: a figure 1e8
+// away sees it moved by ε·1e8 ≈ 2e-8, and an exact tangent becomes a near one. The intersections
+// take any direction and are accurate for the line as given; a caller that needs the last digits
+// of a far or tangent hit passes the direction unrounded and multiplies t by its length.
 #include <optional>
 
 #include "geometry/degenerate.h"

@@ -5,76 +5,128 @@
 #include <cmath>
 
 #include "geometry/degenerate.h"
+#include "geometry/exact_vec.h"
 #include "geometry/tolerance.h"
 #include "geometry/vec.h"
 
 namespace epure::geo::detail {
 
-// The part of AC perpendicular to the ray's line, and its length d = CP. In 2D the signed
-// distance comes from one fma-exact cross product, which keeps d to the last digits when the
-// ray is nearly tangent; in 3D from the cross product's norm.
+// Powers of two move exponents only: exact, and they keep the squares below from overflowing
+// (a figure at 1e200) or underflowing (at 1e-200).
+inline Point2 scaled(Point2 p, int e) { return {std::scalbn(p.x, e), std::scalbn(p.y, e)}; }
+inline Point3 scaled(Point3 p, int e) {
+  return {std::scalbn(p.x, e), std::scalbn(p.y, e), std::scalbn(p.z, e)};
+}
+inline Vec2 scaled(Vec2 v, int e) { return {std::scalbn(v.x, e), std::scalbn(v.y, e)}; }
+inline Vec3 scaled(Vec3 v, int e) {
+  return {std::scalbn(v.x, e), std::scalbn(v.y, e), std::scalbn(v.z, e)};
+}
+inline double max_abs(Vec2 v) { return std::max(std::abs(v.x), std::abs(v.y)); }
+inline double max_abs(Vec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+inline double max_abs(Point2 p) { return max_abs(to_vec(p)); }
+inline double max_abs(Point3 p) { return max_abs(to_vec(p)); }
+
+// ‖v‖² − r², rounded about once: the sign and digits of "how far outside" when A is near the
+// circle, where ‖AC‖ − r would be made of rounding.
+inline double excess_of_square(const ExactVec2& v, double r) {
+  exact::CompensatedSum s;
+  s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(-r, r);
+  s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y) + (v.lo.x * v.lo.x + v.lo.y * v.lo.y));
+  return s.value();
+}
+inline double excess_of_square(const ExactVec3& v, double r) {
+  exact::CompensatedSum s;
+  s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(v.hi.z, v.hi.z);
+  s.add_product(-r, r);
+  s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y + v.hi.z * v.lo.z) +
+        (v.lo.x * v.lo.x + v.lo.y * v.lo.y + v.lo.z * v.lo.z));
+  return s.value();
+}
+
+// The part w of AC perpendicular to the ray's line (AC = t_proj·u + w) and its length d = CP,
+// both from the cross product u ∧ AC of the exact AC: no cancellation, so d keeps its digits
+// when the ray is nearly tangent and w when A is far from the figure.
 struct Offset2 {
   Vec2 w;
   double d;
 };
-inline Offset2 offset_from_line(Vec2 u, double length_u, Vec2 AC, double /*t_proj*/) {
-  double s = cross(u, AC) / length_u;  // AC = t_proj·u + s·perp(û)
+inline Offset2 offset_from_line(Vec2 u, double length_u, const ExactVec2& AC) {
+  const double s = cross(as_exact(u), AC) / length_u;  // AC = t_proj·u + s·perp(û)
   return {s * perp(u / length_u), std::abs(s)};
 }
 struct Offset3 {
   Vec3 w;
   double d;
 };
-inline Offset3 offset_from_line(Vec3 u, double length_u, Vec3 AC, double t_proj) {
-  return {AC - t_proj * u, norm(cross(u, AC)) / length_u};
+inline Offset3 offset_from_line(Vec3 u, double length_u, const ExactVec3& AC) {
+  const Vec3 n = cross(as_exact(u), AC);  // ‖n‖ = ‖u‖·d
+  // u × (AC × u) = ‖u‖²·AC − (u·AC)·u = ‖u‖²·w, and AC × u = −n
+  return {cross(n, u) / (length_u * length_u), norm(n) / length_u};
 }
 
 template <class Result, class Hit, class Ray, class Point>
 Result intersect_ball(const Ray& ray, Point C, double r) {
   if (!(r > 0) || !std::isfinite(r)) throw DegenerateFigure("r", "must be > 0");
-  const auto u = ray.direction;
-  const double length_u = norm(u);
-  if (!(length_u > 0)) throw DegenerateFigure("u", "zero direction");
+  const double direction_length = norm(ray.direction);
+  if (!(direction_length > 0)) throw DegenerateFigure("u", "zero direction");
+  if (!std::isfinite(direction_length)) throw DegenerateFigure("u", "not a finite direction");
   const Point A = ray.origin;
 
   Result res{};
   res.AC = C - A;
-  const double ac = norm(res.AC);
+
+  // The figure (A, C, r) brought near unit size by 2^-e and the direction by 2^-f: exact, and
+  // every t below is in units of the scaled direction, t_world = t·2^(e−f).
+  const int e = std::ilogb(std::max({max_abs(A), max_abs(C), r}));
+  const int f = std::ilogb(max_abs(ray.direction));
+  const auto u = scaled(ray.direction, -f);
+  const double rs = std::scalbn(r, -e);
+  const auto AC = exact_difference(scaled(C, -e), scaled(A, -e));
+  const double length_u = norm(u);
+  const double uu = length_u * length_u;
+  auto to_world_t = [&](double t) { return std::scalbn(t, e - f); };
+
+  const double ac = norm(AC.hi);
   // P = A + t_proj·u with (AC − t_proj·u)·u = 0
-  res.t_proj = dot(u, res.AC) / (length_u * length_u);
-  res.P = A + res.t_proj * u;
-  const auto offset = offset_from_line(u, length_u, res.AC, res.t_proj);
+  const double t_proj = dot(as_exact(u), AC) / uu;
+  res.t_proj = to_world_t(t_proj);
+  res.P = A + res.t_proj * ray.direction;
+  const auto offset = offset_from_line(u, length_u, AC);
   const double d = offset.d;
-  res.d2 = d * d;
+  res.d2 = std::scalbn(d * d, 2 * e);
 
   // AC and d are exact to a few ε of ‖AC‖: compare lengths with r within that.
-  const Near near{kRoundoff * std::max(r, ac)};
-  res.inside = near.below(ac, r);
-  const bool on_circle = near.on(ac, r);
-  // behind: outside and pointing away from C (the course's first test, t_proj < 0)
-  if (!res.inside && Near{kRoundoff * ac / length_u}.below(res.t_proj, 0.0)) {
+  const Near near{kRoundoff * std::max(rs, ac)};
+  res.inside = near.below(ac, rs);
+  const bool on_circle = near.on(ac, rs);
+  // behind: outside and pointing away from C (the course's first test, t_proj < 0). A t_proj
+  // within rounding of 0 is a ray perpendicular to AC: not behind (then a miss, or a tangent hit
+  // at t = 0 from the circle itself).
+  if (!res.inside && Near{kRoundoff * ac / length_u}.below(t_proj, 0.0)) {
     res.reason = NoHit::behind;
     return res;
   }
   // miss: the line passes farther than r from C (d² > r²)
-  if (near.above(d, r)) {
+  if (near.above(d, rs)) {
     res.reason = NoHit::miss;
     return res;
   }
-  // Pythagoras in CPI: PI² = r² − d², factored to keep its digits near tangency.
-  const double h = std::sqrt(std::max(0.0, (r - d) * (r + d)));
-  res.half_chord = h;
+  // Pythagoras in CPI: PI² = r² − d², factored to keep its digits near tangency. A line within
+  // rounding of tangency is tangent (PI = 0): the root of a rounding error is a far larger
+  // error (an exact tangent whose u was rounded to unit length would get PI ≈ 1e-7·r).
+  const double h = near.on(d, rs) ? 0.0 : std::sqrt((rs - d) * (rs + d));
+  res.half_chord = std::scalbn(h, e);
   const double h_param = h / length_u;
   // The roots t_proj ∓ h have the product c = (‖AC‖² − r²) / u·u. Each root is taken in the
   // form that does not cancel (the smaller one as c over the larger, when both are positive).
-  const double c = on_circle ? 0.0 : (ac - r) * (ac + r) / (length_u * length_u);
+  const double c = on_circle ? 0.0 : excess_of_square(AC, rs) / uu;
   double t;
   double along;  // (t − t_proj)·‖u‖: −h at the entry, +h at the exit
   if (res.inside) {
-    t = res.t_proj >= 0 ? res.t_proj + h_param : c / (res.t_proj - h_param);
+    t = t_proj >= 0 ? t_proj + h_param : c / (t_proj - h_param);
     along = h;
   } else {
-    const double sum = res.t_proj + h_param;
+    const double sum = t_proj + h_param;
     t = sum > 0 ? std::max(0.0, c / sum) : 0.0;
     along = -h;
   }
@@ -82,9 +134,15 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
   const auto radial = (along / length_u) * u - offset.w;
   const double radial_length = norm(radial);
   Hit hit{};
-  hit.t = t;
-  hit.I = A + t * u;
-  hit.N = radial_length > 0 ? radial / radial_length : -1.0 * (res.AC / ac);
+  hit.t = to_world_t(t);
+  // I is A itself at t = 0; otherwise A + t·u or C + (I − C), whichever rounds less: the
+  // second keeps the digits of a hit on a small figure seen from far away.
+  const double from_a = max_abs(A) + std::abs(hit.t) * max_abs(ray.direction);
+  const double from_c = max_abs(C) + r;
+  if (!(t > 0)) hit.I = A;
+  else if (from_c < from_a) hit.I = C + scaled(radial, e);
+  else hit.I = A + hit.t * ray.direction;
+  hit.N = radial_length > 0 ? radial / radial_length : -1.0 * (AC.hi / ac);
   res.hit = hit;
   return res;
 }

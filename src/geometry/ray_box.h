@@ -8,9 +8,24 @@
 
 #include "geometry/box_faces.h"
 #include "geometry/degenerate.h"
+#include "geometry/exact.h"
 #include "geometry/tolerance.h"
 
 namespace epure::geo::detail {
+
+// A_k + (σ − A_n)·u_k / u_n: coordinate k of the point where the ray meets the plane x_n = σ,
+// to about one rounding of the result. σ − A_n is kept exact, the product's and the quotient's
+// rounding errors are carried, and A_k is added last: a ray from 1e8 lands on the unit square
+// to the last digits of the landing point, not to ε·1e8.
+inline double coordinate_on_face(double a_k, double sigma, double a_n, double u_k, double u_n) {
+  const exact::TwoTerm gap = exact::two_difference(sigma, a_n);
+  exact::TwoTerm product = exact::two_product(gap.hi, u_k);
+  product.lo += gap.lo * u_k;
+  const double quotient = product.hi / u_n;
+  const double remainder = std::fma(-quotient, u_n, product.hi) + product.lo;  // exact, then ε²
+  const exact::TwoTerm sum = exact::two_sum(a_k, quotient);
+  return sum.hi + (sum.lo + remainder / u_n);
+}
 
 template <int Dim>
 struct BoxResult {
@@ -22,13 +37,22 @@ struct BoxResult {
 };
 
 template <int Dim>
-BoxResult<Dim> intersect_box(const std::array<double, Dim>& A, const std::array<double, Dim>& u) {
+BoxResult<Dim> intersect_box(const std::array<double, Dim>& A,
+                             const std::array<double, Dim>& direction) {
   double largest_u = 0, largest_a = 1;
   for (int k = 0; k < Dim; ++k) {
-    largest_u = std::max(largest_u, std::abs(u[k]));
+    largest_u = std::max(largest_u, std::abs(direction[k]));
     largest_a = std::max(largest_a, std::abs(A[k]));
   }
   if (!(largest_u > 0)) throw DegenerateFigure("u", "zero direction");
+  if (!std::isfinite(largest_u)) throw DegenerateFigure("u", "not a finite direction");
+
+  // The direction brought near unit size by 2^-f (exact), so that no product below overflows or
+  // underflows whatever its length; t is found in units of it and returned as t·2^-f.
+  const int f = std::ilogb(largest_u);
+  std::array<double, Dim> u;
+  for (int k = 0; k < Dim; ++k) u[k] = std::scalbn(direction[k], -f);
+  largest_u = std::scalbn(largest_u, -f);
 
   // A's coordinates are data or carried from another frame (a few ε of |A| off): a coordinate
   // that close to ±1 is on that side.
@@ -39,10 +63,13 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A, const std::array<
       if (!near.below(sign * A[k], 1.0)) res.faces.insert({k, sign});
   res.inside = res.faces.empty();
 
+  // The point where the ray meets the face's plane; A itself at t = 0.
   auto point_at = [&](double t, Face face) {
     std::array<double, Dim> I;
-    for (int k = 0; k < Dim; ++k) I[k] = A[k] + t * u[k];
-    I[face.axis] = face.sign;  // on the side by construction: keep it there to the last bit
+    const int n = face.axis;
+    for (int k = 0; k < Dim; ++k)
+      I[k] = t > 0 ? coordinate_on_face(A[k], face.sign, A[n], u[k], u[n]) : A[k];
+    I[n] = face.sign;  // on the side by construction: keep it there to the last bit
     return I;
   };
 
@@ -58,6 +85,7 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A, const std::array<
       }
     }
     res.I = point_at(*res.t, *res.face);
+    res.t = std::scalbn(*res.t, -f);
     return res;
   }
 
@@ -79,6 +107,7 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A, const std::array<
       res.I = I;
     }
   });
+  if (res.t) res.t = std::scalbn(*res.t, -f);
   return res;
 }
 

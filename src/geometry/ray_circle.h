@@ -7,7 +7,8 @@
 // centre (t_proj < 0) is `behind`; then one whose line passes farther than r from C is a `miss`.
 // The square root is taken only for a hit. Unlike the course's code, a ray that starts inside
 // the circle hits it on its way out. A ray starting on the circle is outside: heading in, it
-// hits at t = 0; heading out, it is behind. A tangent line counts as a hit (d² = r²).
+// hits at t = 0; heading out, it is behind. A tangent line counts as a hit (d² = r²), and so does
+// a line within the data's rounding of tangency, with PI = 0.
 #include <optional>
 
 #include "geometry/ray.h"

@@ -1,12 +1,16 @@
 #include "geometry/ray_transformed.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "geometry/exact_vec.h"
 
 namespace epure::geo {
 
 namespace {
 
 Transform2 place(Point2 C, double sx, double sy, double angle_deg) {
+  if (!std::isfinite(angle_deg)) throw DegenerateFigure("angle", "not a finite angle");
   return Transform2::translate(to_vec(C)) * Transform2::rotate_degrees(angle_deg) *
          Transform2::scale(sx, sy);
 }
@@ -23,16 +27,59 @@ Ray2 to_canonical(const Transform2& world, Point2 centre, const Ray2& ray) {
   return {to_point(back.apply(ray.origin - centre)), back.apply(ray.direction)};
 }
 
+double max_abs(Vec2 v) { return std::max(std::abs(v.x), std::abs(v.y)); }
+
+// The canonical solution carried back: t names the same point in both frames, N goes by the
+// inverse transpose.
 template <class Canonical>
-RayTransformed<Canonical> carry_back(const Transform2& world, const Ray2& ray, Ray2 canonical_ray,
-                                     Canonical canonical) {
+RayTransformed<Canonical> carry_back(const Transform2& world, Point2 centre, const Ray2& ray,
+                                     Ray2 canonical_ray, Canonical canonical) {
   RayTransformed<Canonical> res{world, canonical_ray, canonical, canonical.inside, std::nullopt};
   if (canonical.hit) {
     const double t = canonical.hit->t;
     const Vec2 N = *normalized(world.apply_normal(canonical.hit->N));
-    res.hit = Hit2{t, ray.at(t), N};
+    // I is A itself at t = 0; otherwise A + t·u or T(I_c) = C + M·I_c, whichever rounds less:
+    // the second keeps the digits of a small figure seen from far away.
+    const Vec2 reach = world.apply(to_vec(canonical.hit->I));
+    const double from_a = max_abs(to_vec(ray.origin)) + std::abs(t) * max_abs(ray.direction);
+    const double from_c = max_abs(to_vec(centre)) + max_abs(reach);
+    const Point2 I = !(t > 0) ? ray.origin : from_c < from_a ? centre + reach : ray.at(t);
+    res.hit = Hit2{t, I, N};
   }
   return res;
+}
+
+// A ray from far away, seen from nearby. Carrying A − C into the canonical frame rounds it by
+// ε·|A − C|: far from the figure the line moves by that much, and the hit point with it. The
+// same line through a point A' of it near the figure keeps the figure's digits (Box2D shifts to
+// a local origin likewise): A' − C = (A − C) + t0·u with A − C exact and one fma, so A' is on
+// the line to within ε of the figure's size. t0 stops 2·size short of the foot of C's
+// perpendicular, outside the figure's bounding circle (radius ≤ √2·size), so the first point
+// of the figure seen from A' is the one seen from A. The canonical solution from A (its frame,
+// its candidate sides) is kept for what it shows; only the hit is redone, and kept when it
+// agrees (the same side of the rectangle).
+template <class Canonical, class Solve>
+void refine_from_nearby(RayTransformed<Canonical>& res, Point2 centre, double size, const Ray2& ray,
+                        Solve solve) {
+  if (!res.hit) return;
+  // t_proj = u·AC / u·u in units of u, u rescaled by a power of two against overflow
+  const int f = std::ilogb(max_abs(ray.direction));
+  const Vec2 u{std::scalbn(ray.direction.x, -f), std::scalbn(ray.direction.y, -f)};
+  const ExactVec2 AC = exact_difference(centre, ray.origin);
+  const double length_u = norm(u);
+  const double t0 = std::scalbn((dot(as_exact(u), AC) / length_u - 2 * size) / length_u, -f);
+  if (!(t0 > 0) || !(res.hit->t > t0)) return;  // near already: nothing to gain
+  // A' − C = (A − C) + t0·u
+  const Vec2 from_centre{std::fma(t0, ray.direction.x, -AC.hi.x) - AC.lo.x,
+                         std::fma(t0, ray.direction.y, -AC.hi.y) - AC.lo.y};
+  const Transform2 back = res.to_world.inverse();
+  const Canonical again =
+      solve(Ray2{to_point(back.apply(from_centre)), back.apply(ray.direction)});
+  if (!again.hit) return;
+  if constexpr (requires { res.canonical.face; })
+    if (again.face != res.canonical.face) return;
+  res.hit = Hit2{t0 + again.hit->t, centre + res.to_world.apply(to_vec(again.hit->I)),
+                 *normalized(res.to_world.apply_normal(again.hit->N))};
 }
 
 }  // namespace
@@ -52,13 +99,21 @@ Transform2 to_world(const Rectangle& r) {
 RayEllipse intersect(const Ray2& ray, const Ellipse& ellipse) {
   const Transform2 world = to_world(ellipse);
   const Ray2 canonical_ray = to_canonical(world, ellipse.C, ray);
-  return carry_back(world, ray, canonical_ray, intersect_canonical_circle(canonical_ray));
+  auto res = carry_back(world, ellipse.C, ray, canonical_ray,
+                        intersect_canonical_circle(canonical_ray));
+  refine_from_nearby(res, ellipse.C, std::max(ellipse.a, ellipse.b), ray,
+                     intersect_canonical_circle);
+  return res;
 }
 
 RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle) {
   const Transform2 world = to_world(rectangle);
   const Ray2 canonical_ray = to_canonical(world, rectangle.C, ray);
-  return carry_back(world, ray, canonical_ray, intersect_canonical_square(canonical_ray));
+  auto res = carry_back(world, rectangle.C, ray, canonical_ray,
+                        intersect_canonical_square(canonical_ray));
+  refine_from_nearby(res, rectangle.C, std::max(rectangle.w, rectangle.h), ray,
+                     intersect_canonical_square);
+  return res;
 }
 
 }  // namespace epure::geo

@@ -4,7 +4,9 @@
 // in place by T = translate(C) ∘ rotate(angle) ∘ scale(radii or half-sizes). The ray is carried
 // into the canonical frame by T⁻¹ (its origin as a point, its direction as a vector, not
 // renormalised, so that t names the same point in both frames), solved there by the canonical
-// method, and the normal is carried back by the inverse transpose.
+// method, and the normal is carried back by the inverse transpose. A ray from far away is solved
+// again from a point of it near the figure, so that the hit keeps the figure's digits rather
+// than those of |A − C|; `canonical_ray` and `canonical` stay those seen from A.
 #include "geometry/affine.h"
 #include "geometry/ray_circle.h"
 #include "geometry/ray_square.h"
@@ -24,7 +26,7 @@ struct Rectangle {
 };
 
 // canonical → world, for an ellipse or a rectangle. Throws DegenerateFigure("radii" / "half")
-// for a radius or half-size ≤ 0.
+// for a radius or half-size ≤ 0 (or not finite), and ("angle") for an angle that is not finite.
 Transform2 to_world(const Ellipse& e);
 Transform2 to_world(const Rectangle& r);
 

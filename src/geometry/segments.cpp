@@ -1,8 +1,10 @@
 #include "geometry/segments.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/degenerate.h"
+#include "geometry/exact_vec.h"
 #include "geometry/tolerance.h"
 
 namespace epure::geo {
@@ -37,28 +39,41 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
   s.AB = B - A;
   s.CD = D - C;
   s.AC = C - A;
-  double ab = norm(s.AB), cd = norm(s.CD), ac = norm(s.AC);
-  if (scale.negligible(ab)) throw DegenerateFigure("B", "degenerate segment, A = B");
-  if (scale.negligible(cd)) throw DegenerateFigure("D", "degenerate segment, C = D");
+  if (scale.negligible(norm(s.AB))) throw DegenerateFigure("B", "degenerate segment, A = B");
+  if (scale.negligible(norm(s.CD))) throw DegenerateFigure("D", "degenerate segment, C = D");
 
-  s.ab_cross_cd = cross(s.AB, s.CD);
-  s.ac_cross_cd = cross(s.AC, s.CD);
-  s.ac_cross_ab = cross(s.AC, s.AB);
+  // The parameters are ratios: computed on the figure brought near unit size by a power of two
+  // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
+  const int e = std::ilogb(scale.value);
+  auto down = [e](Point2 p) { return Point2{std::scalbn(p.x, -e), std::scalbn(p.y, -e)}; };
+  const ExactVec2 AB = exact_difference(down(B), down(A));
+  const ExactVec2 CD = exact_difference(down(D), down(C));
+  const ExactVec2 AC = exact_difference(down(C), down(A));
+  const double ab = norm(AB.hi), cd = norm(CD.hi), ac = norm(AC.hi);
 
-  // parallel: the sine of the angle between the lines is below rounding
-  if (std::abs(s.ab_cross_cd) <= kRoundoff * ab * cd) {
+  // Cross products of the exact differences, each rounded about once: nearly parallel lines
+  // keep the digits of AB∧CD, and with them those of t_ab and t_cd.
+  const double ab_cross_cd = cross(AB, CD);
+  const double ac_cross_cd = cross(AC, CD), ac_cross_ab = cross(AC, AB);
+  s.ab_cross_cd = std::scalbn(ab_cross_cd, 2 * e);
+  s.ac_cross_cd = std::scalbn(ac_cross_cd, 2 * e);
+  s.ac_cross_ab = std::scalbn(ac_cross_ab, 2 * e);
+
+  // parallel: the sine of the angle between the lines is below the data's rounding
+  if (std::abs(ab_cross_cd) <= kRoundoff * ab * cd) {
     // same line when C is on (AB): its distance |AB∧AC| / ‖AB‖ is below rounding of the figure
-    double distance_c = std::abs(s.ac_cross_ab) / ab;
+    double distance_c = std::abs(ac_cross_ab) / ab;
     bool same_line = distance_c <= kRoundoff * std::max({ab, cd, ac});
     s.relation = same_line ? SegmentRelation::collinear : SegmentRelation::parallel;
     return s;
   }
 
-  // Each parameter carries the rounding of its numerator and of the denominator, in units of
-  // the denominator: ε·(‖AC‖ + ‖AB‖)·‖CD‖ / |AB∧CD| for t_ab, and symmetrically for t_cd.
-  double denominator = std::abs(s.ab_cross_cd);
-  double t_ab = snap_to_ends(s.ac_cross_cd / s.ab_cross_cd, kRoundoff * (ac + ab) * cd / denominator);
-  double t_cd = snap_to_ends(s.ac_cross_ab / s.ab_cross_cd, kRoundoff * (ac + cd) * ab / denominator);
+  // Each coordinate of the data is off by half an ulp of the figure (decimal input): that moves
+  // t_ab by about ε·(‖AC‖ + ‖AB‖)·‖CD‖ / |AB∧CD|, and t_cd symmetrically. Within that of an end,
+  // the segments were meant to touch there.
+  double denominator = std::abs(ab_cross_cd);
+  double t_ab = snap_to_ends(ac_cross_cd / ab_cross_cd, kRoundoff * (ac + ab) * cd / denominator);
+  double t_cd = snap_to_ends(ac_cross_ab / ab_cross_cd, kRoundoff * (ac + cd) * ab / denominator);
   s.t_ab = t_ab;
   s.t_cd = t_cd;
   if (!in_unit_interval(t_ab) || !in_unit_interval(t_cd)) {
@@ -71,7 +86,11 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
   else if (t_ab >= 1.0) s.I = B;
   else if (t_cd <= 0.0) s.I = C;
   else if (t_cd >= 1.0) s.I = D;
-  else s.I = A + t_ab * s.AB;
+  else {
+    // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own
+    s.I = Point2{A.x + std::fma(t_ab, s.AB.x, t_ab * std::scalbn(AB.lo.x, e)),
+                 A.y + std::fma(t_ab, s.AB.y, t_ab * std::scalbn(AB.lo.y, e))};
+  }
   return s;
 }
 

@@ -2,6 +2,7 @@
 // Points and vectors of the plane and of space. Points and vectors are distinct types, as in
 // pbrt: a point minus a point is a vector, a point plus a vector is a point, and a transform
 // moves a point with its translation but a vector without it.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -44,13 +45,26 @@ constexpr Vec2 perp(Vec2 v) { return {-v.y, v.x}; }
 constexpr Vec2 to_vec(Point2 p) { return {p.x, p.y}; }
 constexpr Point2 to_point(Vec2 v) { return {v.x, v.y}; }
 
+// v times the power of two that brings its largest coordinate into [1, 2). Exact (a power of two
+// only moves the exponent), so that what is computed next neither overflows nor underflows: a
+// subnormal vector keeps all its digits, and ‖v‖ of a 1e300 vector is no longer near infinity.
+// The zero vector and non-finite ones come back as they are.
+inline Vec2 rescaled(Vec2 v) {
+  const double m = std::max(std::abs(v.x), std::abs(v.y));
+  if (!(m > 0) || !std::isfinite(m)) return v;
+  const int e = std::ilogb(m);
+  return {std::scalbn(v.x, -e), std::scalbn(v.y, -e)};
+}
+
 // The unit vector along v; empty for the zero vector (and anything whose length is not a
-// finite positive number). Divides by the length rather than multiplying by its inverse, so
-// that a subnormal vector still normalises.
+// finite positive number). Rescaled first: v / ‖v‖ of a subnormal v would divide rounded
+// digits by a rounded length ((5e-324, 5e-324) would give (1, 1)).
 inline std::optional<Vec2> normalized(Vec2 v) {
-  double n = norm(v);
+  const double n = norm(v);
   if (!(n > 0) || !std::isfinite(n)) return std::nullopt;
-  return Vec2{v.x / n, v.y / n};
+  const Vec2 w = rescaled(v);
+  const double nw = norm(w);
+  return Vec2{w.x / nw, w.y / nw};
 }
 
 // ---- 3D -------------------------------------------------------------------------------------
@@ -75,10 +89,19 @@ inline double norm(Vec3 v) { return std::hypot(v.x, v.y, v.z); }
 inline double norm2(Vec3 v) { return dot(v, v); }
 constexpr Vec3 to_vec(Point3 p) { return {p.x, p.y, p.z}; }
 
+inline Vec3 rescaled(Vec3 v) {
+  const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!(m > 0) || !std::isfinite(m)) return v;
+  const int e = std::ilogb(m);
+  return {std::scalbn(v.x, -e), std::scalbn(v.y, -e), std::scalbn(v.z, -e)};
+}
+
 inline std::optional<Vec3> normalized(Vec3 v) {
-  double n = norm(v);
+  const double n = norm(v);
   if (!(n > 0) || !std::isfinite(n)) return std::nullopt;
-  return Vec3{v.x / n, v.y / n, v.z / n};
+  const Vec3 w = rescaled(v);
+  const double nw = norm(w);
+  return Vec3{w.x / nw, w.y / nw, w.z / nw};
 }
 
 }  // namespace epure::geo

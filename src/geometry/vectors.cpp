@@ -24,10 +24,14 @@ VectorPair compare_vectors(Vec2 u, Vec2 v) {
   r.cross = cross(u, v);
   r.norm_u = norm_u;
   r.norm_v = norm_v;
-  // Normalising first keeps ‖u‖‖v‖ from overflowing or underflowing for extreme vectors.
-  Vec2 uh = u / norm_u, vh = v / norm_v;
-  r.cos = std::clamp(dot(uh, vh), -1.0, 1.0);
-  r.sin = std::clamp(cross(uh, vh), -1.0, 1.0);
+  // cos = u·v / ‖u‖‖v‖ and sin = u∧v / ‖u‖‖v‖ from the data's own products, each rounded about
+  // once, so that the sine of nearly parallel vectors keeps its digits (normalising u and v
+  // first would leave it an absolute error of ε). Exact power-of-two rescaling keeps the
+  // products from overflowing or underflowing for extreme (even subnormal) vectors.
+  const Vec2 us = rescaled(u), vs = rescaled(v);
+  const double lengths = norm(us) * norm(vs);
+  r.cos = std::clamp(dot(us, vs) / lengths, -1.0, 1.0);
+  r.sin = std::clamp(cross(us, vs) / lengths, -1.0, 1.0);
   r.angle_deg = angle_degrees(r.cos, r.sin);
   return r;
 }
