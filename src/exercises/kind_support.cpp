@@ -73,13 +73,21 @@ std::string Questions::prompt(std::string_view field) const {
 }
 
 std::string Questions::answer_text(double value, const std::optional<exact::Surd>& exact) const {
+  // The key's answer column follows a prompt that ends in "=": a value without an exact form is
+  // its rounding alone; an exact form reads "5 − 2√2 ≈ 2.17", or "1/4 = 0.25" when it stops.
   const std::string rounded = ctx_.numbers.rounded(value, ctx_.decimals);
-  if (!exact) return fmt::format("≈ {}", rounded);
-  const std::string pretty = ctx_.numbers.localise(exact->pretty());
+  if (!exact) return rounded;
+  std::string pretty;
+  try {
+    pretty = ctx_.numbers.localise(exact->pretty());
+  } catch (const exact::ExactOverflow&) {
+    return rounded;
+  }
+  // a long exact form (hard data) helps nobody: the rounding says it all
+  if (pretty.size() > 24) return rounded;
   if (!exact->is_rational()) return fmt::format("{} ≈ {}", pretty, rounded);
   const std::int64_t den = exact->a().den();
   if (den == 1) return pretty;
-  // a fraction whose decimal expansion stops within the asked precision is written out exactly
   std::int64_t pow10 = 1;
   for (int i = 0; i < ctx_.decimals; ++i) pow10 *= 10;
   if (pow10 % den == 0) return fmt::format("{} = {}", pretty, ctx_.numbers.datum(value, ctx_.decimals));

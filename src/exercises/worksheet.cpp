@@ -41,13 +41,33 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
   Sheet sheet;
   sheet.id = SheetId{kDrawVersion, seed_, index};
   for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {
-    const std::string b = branch(index, static_cast<int>(slot));
-    int attempt = 0;
-    ExerciseInstance inst = first_attempts ? std::move((*first_attempts)[slot])
-                                           : draw(index, static_cast<int>(slot), attempt, b);
-    while (used_[slot].count(inst.fingerprint)) inst = draw(index, static_cast<int>(slot), ++attempt, b);
-    used_[slot].insert(inst.fingerprint);
-    sheet.exercises.push_back(std::move(inst));
+    const int s = static_cast<int>(slot);
+    const std::string scheduled = branch(index, s);
+    std::optional<ExerciseInstance> chosen;
+    if (first_attempts && !used_[slot].count((*first_attempts)[slot].fingerprint))
+      chosen = std::move((*first_attempts)[slot]);
+    // A collision draws again. A branch whose instances are all taken (a small grid: a ray from
+    // inside the canonical square has one integer origin) gives way to the kind's other branches
+    // in the schedule's order, rather than repeating an instance or looping forever.
+    std::vector<std::string> branches{scheduled};
+    const auto& kind = *find_kind(spec_.exercises[slot].kind);
+    auto weights = spec_.exercises[slot].branches.empty() ? kind.default_branches() : spec_.exercises[slot].branches;
+    for (const auto& [name, weight] : weights)
+      if (weight > 0 && name != scheduled) branches.push_back(name);
+    int attempt = first_attempts ? 1 : 0;
+    for (std::size_t b = 0; !chosen && b < branches.size(); ++b) {
+      for (int tries = 0; tries < kAttemptsPerBranch && !chosen; ++tries, ++attempt) {
+        ExerciseInstance inst = draw(index, s, attempt, branches[b]);
+        if (!used_[slot].count(inst.fingerprint)) chosen = std::move(inst);
+      }
+    }
+    if (!chosen)
+      throw SpecError(fmt::format(
+          "exercise {} ({}): every branch has run out of new instances after {} sheets; the set "
+          "cannot hold more distinct sheets at this difficulty (try fewer sheets or another difficulty)",
+          slot + 1, spec_.exercises[slot].kind, index));
+    used_[slot].insert(chosen->fingerprint);
+    sheet.exercises.push_back(std::move(*chosen));
   }
   return sheet;
 }

@@ -31,6 +31,9 @@ struct SetOptions {
 
 class WorksheetSet {
  public:
+  // Draws tried for a branch before a collision-bound sheet turns to the kind's next branch.
+  static constexpr int kAttemptsPerBranch = 64;
+
   // Throws SpecError for a seed out of range or an unknown language.
   WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOptions& options = {});
 
