@@ -14,7 +14,9 @@ struct GlyphAdvance {
 #include "render/font_metrics_table.inc"
 
 static_assert(std::is_sorted(std::begin(kAdvances), std::end(kAdvances),
-                             [](const GlyphAdvance& a, const GlyphAdvance& b) { return a.cp < b.cp; }),
+                             [](const GlyphAdvance& a, const GlyphAdvance& b) {
+                               return a.cp < b.cp;
+                             }),
               "the generated table must be sorted for the binary search");
 
 const GlyphAdvance* find(char32_t cp) {

@@ -1,5 +1,6 @@
 #include "render/text.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 
@@ -117,7 +118,67 @@ std::vector<std::string_view> words(std::string_view rich) {
   return out;
 }
 
+// Letters of DejaVu Sans that reach no higher than the x-height, and glyphs that go below the
+// baseline: a label "u" or "A" gets a box that fits it, not a generic one.
+constexpr std::string_view kShortLetters = "acemnorsuvwxz";
+constexpr std::string_view kDescending = "gjpqyQ,;()[]{}|_@$";
+
+struct Ink {
+  double top, bottom;  // em above and below the baseline
+};
+
+Ink run_ink(std::string_view text) {
+  const VerticalMetrics v = vertical_metrics();
+  // Ascenders and digits of DejaVu Sans reach 0.76 em, capitals 0.73 em.
+  constexpr double kAscenderTop = 0.76;
+  bool all_short = !text.empty();
+  bool descends = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const utf8::Decoded d = utf8::decode(text, i);
+    const bool ascii = d.cp < 0x80;
+    if (!(ascii && kShortLetters.find(char(d.cp)) != npos)) all_short = false;
+    // Outside ASCII (ç, Greek, arrows, √) assume the glyph may descend.
+    if (!ascii || kDescending.find(char(d.cp)) != npos) descends = true;
+    i += d.length;
+  }
+  return {all_short ? v.x_height : kAscenderTop, descends ? v.descent : 0.02};
+}
+
 }  // namespace
+
+std::vector<RunPlacement> place_runs(const std::vector<TextRun>& runs, double font_size) {
+  std::vector<RunPlacement> out;
+  out.reserve(runs.size());
+  double x = 0;
+  for (const TextRun& r : runs) {
+    RunPlacement p;
+    p.x = x;
+    p.size = r.shift == Shift::none ? font_size : font_size * kScriptScale;
+    p.rise = r.shift == Shift::sub     ? -kSubShift * font_size
+             : r.shift == Shift::super ? kSuperShift * font_size
+                                       : 0;
+    p.width = advance_sum(r.text, r.bold ? Face::bold : Face::regular) * p.size;
+    p.top = run_ink(r.text).top * p.size;
+    x += p.width;
+    out.push_back(p);
+  }
+  return out;
+}
+
+TextExtent text_extent(const std::vector<TextRun>& runs, double font_size) {
+  TextExtent e;
+  const std::vector<RunPlacement> placed = place_runs(runs, font_size);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const RunPlacement& p = placed[i];
+    double top = p.rise + p.top;
+    if (runs[i].arrow) top += (kArrowGap + kArrowHeadHalf) * p.size;
+    const double bottom = run_ink(runs[i].text).bottom * p.size - p.rise;
+    e.ascent = std::max(e.ascent, top);
+    e.descent = std::max(e.descent, bottom);
+    e.width = p.x + p.width;
+  }
+  return e;
+}
 
 std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight) {
   return Parser(rich, weight == Weight::bold).run();
@@ -140,8 +201,11 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
                                                  double max_width, Weight weight) {
   std::vector<std::vector<TextRun>> lines;
   if (rich.empty()) return lines;
-  const double space = advance_em(U' ', weight == Weight::bold ? Face::bold : Face::regular) * font_size;
-  const auto finish = [&](const std::string& line) { lines.push_back(parse_rich_text(line, weight)); };
+  const double space =
+      advance_em(U' ', weight == Weight::bold ? Face::bold : Face::regular) * font_size;
+  const auto finish = [&](const std::string& line) {
+    lines.push_back(parse_rich_text(line, weight));
+  };
 
   std::size_t start = 0;
   for (;;) {

@@ -25,12 +25,40 @@ std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight = Weig
 
 // Sub- and superscripts are set at this fraction of the font size, shifted by these fractions.
 inline constexpr double kScriptScale = 0.7;
-inline constexpr double kSubShift = 0.25;   // down, × font size
-inline constexpr double kSuperShift = 0.38; // up, × font size
+inline constexpr double kSubShift = 0.25;    // down, × font size
+inline constexpr double kSuperShift = 0.38;  // up, × font size
 
 // Advance width of the runs at `font_size` (same unit as font_size).
 double text_width(const std::vector<TextRun>& runs, double font_size);
 double text_width(std::string_view rich, double font_size, Weight weight = Weight::regular);
+
+// Where a run sits in its line: everything a backend needs to set it and the painter needs to
+// draw a \vec arrow over it. Lengths in the unit of font_size; `rise` is the baseline shift,
+// positive up; `top` is the height of the run's letters above its own baseline (capitals and
+// ascenders, or the x-height for a run of short lower-case letters).
+struct RunPlacement {
+  double x = 0;
+  double width = 0;
+  double size = 0;
+  double rise = 0;
+  double top = 0;
+};
+std::vector<RunPlacement> place_runs(const std::vector<TextRun>& runs, double font_size);
+
+// The arrow over a \vec run, × the run's size: its stroke kArrowGap above the run's letters,
+// its head kArrowHead long and 2 × kArrowHeadHalf wide, its stroke kArrowStroke thick.
+inline constexpr double kArrowGap = 0.12;
+inline constexpr double kArrowHead = 0.24;
+inline constexpr double kArrowHeadHalf = 0.1;
+inline constexpr double kArrowStroke = 0.06;
+
+// The box a line of runs inks, from its baseline's left end: width, height above the baseline
+// (arrows included), depth below it (descenders and subscripts). A little generous, never
+// short: label placement keeps this box clear.
+struct TextExtent {
+  double width = 0, ascent = 0, descent = 0;
+};
+TextExtent text_extent(const std::vector<TextRun>& runs, double font_size);
 
 // Greedy line breaking of rich text into lines no wider than `max_width`; breaks at spaces,
 // never inside a markup group; a word longer than a line gets a line of its own; a '\n' forces a

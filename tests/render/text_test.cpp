@@ -97,12 +97,12 @@ TEST_CASE("text_width: DejaVu Sans advances, scripts scaled") {
   // A character outside the table (a CJK ideograph) is measured as a typical glyph.
   CHECK(text_width("\u4E00", 10) == doctest::Approx(10 * kFallbackAdvanceEm).epsilon(kEps));
   // Invalid UTF-8 is measured too (one fallback glyph per bad byte), never crashes.
-  CHECK(text_width(std::string("a\xff"), 10) == doctest::Approx(10 * (kA + kFallbackAdvanceEm)).epsilon(kEps));
+  CHECK(text_width(std::string("a\xff"), 10) ==
+        doctest::Approx(10 * (kA + kFallbackAdvanceEm)).epsilon(kEps));
 }
 
 TEST_CASE("font metrics cover the characters of the course's texts") {
-  const std::string needed =
-      "éèêàçùôîïœÉÈÀÇŒëüâû«»·∧√≈‖→←⇒²³⁻¹∈≤≥−×∘θπ∞⊥∠αβγδλμΔ…–—’ ";
+  const std::string needed = "éèêàçùôîïœÉÈÀÇŒëüâû«»·∧√≈‖→←⇒²³⁻¹∈≤≥−×∘θπ∞⊥∠αβγδλμΔ…–—’ ";
   for (std::size_t i = 0; i < needed.size();) {
     const auto d = epure::render::utf8::decode(needed, i);
     CAPTURE(std::string(needed.substr(i, d.length)));

@@ -6,7 +6,8 @@
 //   g++ -std=c++20 src/render/tools/gen_font_metrics.cpp -o /tmp/gen_font_metrics
 //       $(pkg-config --cflags --libs freetype2)
 //   cd /usr/share/fonts/truetype/dejavu &&
-//     /tmp/gen_font_metrics DejaVuSans.ttf DejaVuSans-Bold.ttf > $EPURE/src/render/font_metrics_table.inc
+//     /tmp/gen_font_metrics DejaVuSans.ttf DejaVuSans-Bold.ttf >
+//     $EPURE/src/render/font_metrics_table.inc
 //
 // (the first two lines are one command).
 #include <ft2build.h>

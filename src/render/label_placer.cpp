@@ -1,0 +1,243 @@
+#include "render/label_placer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace epure::render {
+namespace {
+
+// Distances from the anchor to the label's box tried in turn, beyond the request's gap: close
+// first, farther only when everything near is taken.
+constexpr double kRings[] = {0, 3, 7, 12, 18, 26};
+// Rings from this index on try 16 directions instead of 8.
+constexpr std::size_t kFineRing = 2;
+// A box must stay this far inside its panel.
+constexpr double kAreaMargin = 1.0;
+
+// Weights of the fallback's penalty: two labels on top of each other are worse than a label on
+// a line, which is worse than a label sticking out of the panel a little.
+constexpr double kOverlapWeight = 10;  // per square point of label-on-label
+constexpr double kCrossWeight = 4;     // per point of stroke inside the box
+constexpr double kOutsideWeight = 2;   // per point outside the panel
+
+// Parameters [t0, t1] of segment a→b inside `box` (Liang–Barsky); false when it misses.
+bool clip_segment(P2 a, P2 b, const Box& box, double& t0, double& t1) {
+  t0 = 0;
+  t1 = 1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - box.x_min, box.x_max - a.x, a.y - box.y_min, box.y_max - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {  // parallel to this edge: in or out for the whole segment
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) {
+      t0 = std::max(t0, t);
+    } else {
+      t1 = std::min(t1, t);
+    }
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+double overlap_area(const Box& a, const Box& b) {
+  const double w = std::min(a.x_max, b.x_max) - std::max(a.x_min, b.x_min);
+  const double h = std::min(a.y_max, b.y_max) - std::max(a.y_min, b.y_min);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+double outside_amount(const Box& b, const Box& area) {
+  return std::max(0.0, area.x_min - b.x_min) + std::max(0.0, b.x_max - area.x_max) +
+         std::max(0.0, area.y_min - b.y_min) + std::max(0.0, b.y_max - area.y_max);
+}
+
+P2 unit(P2 v) {
+  const double n = std::hypot(v.x, v.y);
+  return n > 0 ? P2{v.x / n, v.y / n} : P2{0, 0};
+}
+
+// The box of a w×h label whose side or corner faces the anchor from direction u at distance d.
+Box candidate(P2 anchor, P2 u, double d, double w, double h) {
+  const double m = std::max(std::abs(u.x), std::abs(u.y));
+  const double cx = anchor.x + d * u.x + w / 2 * u.x / m;
+  const double cy = anchor.y + d * u.y + h / 2 * u.y / m;
+  return {cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2};
+}
+
+// The turns that give the directions tried on one ring from the preferred one: k·360°/count
+// for k = 0, 1, −1, 2, −2, … (the counter-clockwise one first on a tie).
+template <std::size_t count>
+std::array<P2, count> turns() {
+  std::array<P2, count> t{};
+  for (std::size_t i = 0; i < count; ++i) {
+    const int k = static_cast<int>((i + 1) / 2) * (i % 2 == 1 ? 1 : -1);
+    const double a = 2 * std::numbers::pi * k / static_cast<double>(count);
+    t[i] = {std::cos(a), std::sin(a)};
+  }
+  return t;
+}
+const std::array<P2, 8> kCoarse = turns<8>();
+const std::array<P2, 16> kFine = turns<16>();
+
+class Placer {
+ public:
+  Placer(const Obstacles& obstacles, const Box& area)
+      : obstacles_(obstacles),
+        area_{area.x_min + kAreaMargin, area.y_min + kAreaMargin, area.x_max - kAreaMargin,
+              area.y_max - kAreaMargin} {}
+
+  Placement place(const LabelRequest& r) {
+    // Most labels take their first or second candidate: test each as it is made.
+    Box found{};
+    if (for_each_candidate(r, [&](const Box& b) {
+          if (!clean(b)) return false;
+          found = b;
+          return true;
+        })) {
+      return accept(found, true);
+    }
+    // No clean spot: the least bad one (the first of equals).
+    double best_penalty = std::numeric_limits<double>::infinity();
+    for_each_candidate(r, [&](const Box& b) {
+      const double p = penalty(b);
+      if (p < best_penalty) {
+        best_penalty = p;
+        found = b;
+      }
+      return false;
+    });
+    return accept(found, false);
+  }
+
+ private:
+  // Calls `f` on every candidate box for `r`, best first, until it returns true; says whether
+  // it did.
+  template <class F>
+  static bool for_each_candidate(const LabelRequest& r, F&& f) {
+    const bool any = std::hypot(r.prefer.x, r.prefer.y) > 0;
+    const P2 prefer = unit(any ? r.prefer : P2{1, -1});  // above right by default
+    const P2 along = unit(r.along);
+    if (std::hypot(along.x, along.y) > 0) {
+      // Beside the stroke: the box's centre on the normal, as far as its half-extent in that
+      // direction, so that the stroke's line clears the box; then slid along the stroke.
+      P2 n{-along.y, along.x};
+      if (n.x * prefer.x + n.y * prefer.y < 0) n = {-n.x, -n.y};
+      const double slide = r.width / 2 + 2;
+      for (double ring : {0.0, 3.0, 7.0}) {
+        for (double side : {1.0, -1.0}) {
+          const P2 m{side * n.x, side * n.y};
+          const double reach =
+              r.gap + ring + std::abs(m.x) * r.width / 2 + std::abs(m.y) * r.height / 2;
+          for (double k : {0.0, 0.5, -0.5, 1.0, -1.0}) {
+            const double cx = r.anchor.x + reach * m.x + k * slide * along.x;
+            const double cy = r.anchor.y + reach * m.y + k * slide * along.y;
+            if (f(Box{cx - r.width / 2, cy - r.height / 2, cx + r.width / 2, cy + r.height / 2}))
+              return true;
+          }
+        }
+      }
+    }
+    for (std::size_t ring = 0; ring < std::size(kRings); ++ring) {
+      const bool fine = ring >= kFineRing;
+      const std::size_t count = fine ? kFine.size() : kCoarse.size();
+      for (std::size_t i = 0; i < count; ++i) {
+        const P2 t = fine ? kFine[i] : kCoarse[i];
+        const P2 u{prefer.x * t.x - prefer.y * t.y, prefer.x * t.y + prefer.y * t.x};
+        if (f(candidate(r.anchor, u, r.gap + kRings[ring], r.width, r.height))) return true;
+      }
+    }
+    return false;
+  }
+
+  Placement accept(const Box& b, bool is_clean) {
+    placed_.push_back(b);
+    return {b, is_clean};
+  }
+
+  bool clean(const Box& b) const {
+    if (outside_amount(b, area_) > 0) return false;
+    const Box c = inflate(b, kLabelClearance);
+    for (const Box& p : placed_) {
+      if (boxes_overlap(c, p)) return false;
+    }
+    for (const Box& p : obstacles_.boxes) {
+      if (boxes_overlap(c, p)) return false;
+    }
+    for (const auto& d : obstacles_.discs) {
+      if (disc_hits_box(d.c, d.r, c)) return false;
+    }
+    for (const auto& s : obstacles_.segments) {
+      if (segment_hits_box(s.a, s.b, c)) return false;
+    }
+    return true;
+  }
+
+  double penalty(const Box& b) const {
+    const Box c = inflate(b, kLabelClearance);
+    double p = kOutsideWeight * outside_amount(b, area_);
+    for (const Box& o : placed_) p += kOverlapWeight * overlap_area(c, o);
+    for (const Box& o : obstacles_.boxes) p += kOverlapWeight * overlap_area(c, o);
+    for (const auto& d : obstacles_.discs) {
+      if (disc_hits_box(d.c, d.r, c)) p += kCrossWeight * 2 * d.r;
+    }
+    for (const auto& s : obstacles_.segments) {
+      double t0 = 0, t1 = 0;
+      if (clip_segment(s.a, s.b, c, t0, t1)) {
+        p += kCrossWeight * (t1 - t0) * std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+      }
+    }
+    return p;
+  }
+
+  const Obstacles& obstacles_;
+  Box area_;
+  std::vector<Box> placed_;
+};
+
+}  // namespace
+
+void Obstacles::add_polyline(const std::vector<P2>& pts, bool closed) {
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) segments.push_back({pts[i], pts[i + 1]});
+  if (closed && pts.size() > 2) segments.push_back({pts.back(), pts.front()});
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.x_min < b.x_max && b.x_min < a.x_max && a.y_min < b.y_max && b.y_min < a.y_max;
+}
+
+bool segment_hits_box(P2 a, P2 b, const Box& box) {
+  // Cheap rejection on the bounding boxes first: most strokes are far from a label.
+  if (std::max(a.x, b.x) < box.x_min || std::min(a.x, b.x) > box.x_max ||
+      std::max(a.y, b.y) < box.y_min || std::min(a.y, b.y) > box.y_max) {
+    return false;
+  }
+  double t0 = 0, t1 = 0;
+  return clip_segment(a, b, box, t0, t1);
+}
+
+bool disc_hits_box(P2 c, double r, const Box& box) {
+  const double dx = std::max({box.x_min - c.x, 0.0, c.x - box.x_max});
+  const double dy = std::max({box.y_min - c.y, 0.0, c.y - box.y_max});
+  return dx * dx + dy * dy < r * r;
+}
+
+Box inflate(const Box& b, double by) {
+  return {b.x_min - by, b.y_min - by, b.x_max + by, b.y_max + by};
+}
+
+std::vector<Placement> place_labels(const std::vector<LabelRequest>& requests,
+                                    const Obstacles& obstacles, const Box& area) {
+  Placer placer(obstacles, area);
+  std::vector<Placement> out;
+  out.reserve(requests.size());
+  for (const LabelRequest& r : requests) out.push_back(placer.place(r));
+  return out;
+}
+
+}  // namespace epure::render

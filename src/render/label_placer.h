@@ -1,0 +1,63 @@
+#pragma once
+// Label placement in page space (points, y down): every label gets a box near its anchor that
+// overlaps no other label, crosses no drawn line or curve, covers no point mark and stays inside
+// its panel. Candidates are tried in order of preference (the preferred side first, then the
+// other directions by angle, then the same on farther rings); the first clean one is taken.
+// When none is clean, the candidate with the least overlap is taken and the placement says so.
+// Deterministic: the same requests and obstacles give the same boxes.
+#include <cstddef>
+#include <vector>
+
+#include "render/scene.h"
+
+namespace epure::render {
+
+// What a label must keep clear of.
+struct Obstacles {
+  struct Seg {
+    P2 a, b;
+  };
+  struct Disc {
+    P2 c;
+    double r;
+  };
+  std::vector<Seg> segments;  // strokes: lines, curves as polylines, arrowheads' outlines
+  std::vector<Disc> discs;    // point marks
+  std::vector<Box> boxes;     // texts already set (axis numbers are not here: they give way)
+
+  void add_polyline(const std::vector<P2>& pts, bool closed);
+};
+
+struct LabelRequest {
+  P2 anchor;
+  double width = 0, height = 0;  // the text's box
+  // Preferred direction from the anchor to the label, page space (y down); zero: no preference
+  // (above right first).
+  P2 prefer{0, 0};
+  double gap = 0;  // the box keeps at least this distance from the anchor
+  // When the anchor lies on a stroke (a tick on AB, the middle of a dimension line): its
+  // direction. The label is then first tried beside the stroke, on the preferred side and then
+  // on the other, sliding along it, before the directions around the anchor.
+  P2 along{0, 0};
+};
+
+struct Placement {
+  Box box;
+  bool clean = true;  // false: no candidate was clear; `box` is the least bad one
+};
+
+// Clearance kept between a label's box and anything else, points.
+inline constexpr double kLabelClearance = 1.2;
+
+// Places the labels in order (earlier ones have the better spots); each placed box becomes an
+// obstacle for the next. `area` is the panel: boxes stay inside it.
+std::vector<Placement> place_labels(const std::vector<LabelRequest>& requests,
+                                    const Obstacles& obstacles, const Box& area);
+
+// Geometry the placer and its tests share.
+bool boxes_overlap(const Box& a, const Box& b);
+bool segment_hits_box(P2 a, P2 b, const Box& box);
+bool disc_hits_box(P2 c, double r, const Box& box);
+Box inflate(const Box& b, double by);
+
+}  // namespace epure::render

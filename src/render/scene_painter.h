@@ -1,0 +1,72 @@
+#pragma once
+// From a Scene (math coordinates, roles) to Canvas calls (page coordinates, paints), once for
+// every backend: the panels' frames, the math → page map (the only y flip), clipping of lines and
+// rays, arrowheads, marks, the grid and its numbers, and label placement. The SVG backend
+// (svg_scene.h) and the cairo backend draw what this decides, so they draw the same figure.
+#include <string>
+#include <vector>
+
+#include "render/canvas.h"
+#include "render/label_placer.h"
+#include "render/scene.h"
+#include "render/style.h"
+
+namespace epure::render {
+
+// The map from a panel's math view onto its rectangle on the page, at one scale on both axes.
+class Frame {
+ public:
+  // `rect` in page coordinates (points, y down); the view is centred in it if the aspect ratios
+  // differ.
+  Frame(const Box& view, const Box& rect);
+
+  // Math → page. The one place where y turns from up to down.
+  P2 to_page(P2 m) const;
+  // A math direction as a page direction (same length × scale).
+  P2 dir_to_page(P2 v) const;
+
+  double scale() const { return scale_; }
+  const Box& view() const { return view_; }
+  const Box& rect() const { return rect_; }
+
+ private:
+  Box view_, rect_;
+  double scale_ = 1;
+  P2 origin_;  // page position of the view's top-left corner (x_min, y_max)
+};
+
+// Where a scene's parts go inside its rectangle.
+struct SceneLayout {
+  std::vector<Box> panels;    // page rectangles of the panels' views
+  std::vector<Box> captions;  // under each panel (empty box when it has no caption)
+  std::vector<Box> links;     // the gaps between consecutive panels
+  double height = 0;
+};
+
+// Panels side by side at one common height, a gap between consecutive ones (wide enough for the
+// link's text when there is one), captions underneath. x, y: top-left corner, points.
+SceneLayout layout_scene(const Scene& scene, double x, double y, double width,
+                         const Style& style = Style::print());
+
+// The height a scene takes when drawn `width` points wide: what page layout reserves.
+double scene_height(const Scene& scene, double width, const Style& style = Style::print());
+
+// What painting decided for one panel: for tests, and for the generator to reject a figure
+// whose labels do not fit.
+struct PanelReport {
+  Box area;                        // the panel's rectangle
+  std::vector<std::string> texts;  // each placed label's text, in placement order
+  std::vector<Placement> labels;   // their boxes, same order
+  Obstacles obstacles;             // everything drawn that a label must keep clear of
+};
+
+struct SceneReport {
+  std::vector<PanelReport> panels;
+  // Labels that could not be placed clear of everything.
+  int unclean() const;
+};
+
+SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, double width,
+                        const Style& style = Style::print());
+
+}  // namespace epure::render

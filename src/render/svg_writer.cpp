@@ -1,0 +1,267 @@
+#include "render/svg_writer.h"
+
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+#include <string_view>
+
+#include <fmt/compile.h>
+#include <fmt/format.h>
+
+#include "render/utf8.h"
+
+namespace epure::render {
+
+namespace {
+
+// Below this magnitude a number is rounded as an integer count of its last decimal; above it
+// (never in a drawing) fmt's exact conversion takes over.
+constexpr double kFastLimit = 1e12;
+constexpr long long kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+
+// Appends `s` without the trailing zeros of its decimals, and without a bare point.
+void append_trimmed(std::string& out, std::string_view s) {
+  if (s.find('.') != std::string_view::npos) {
+    while (s.back() == '0') s.remove_suffix(1);
+    if (s.back() == '.') s.remove_suffix(1);
+  }
+  if (s == "-0") s = "0";  // a value that rounds to zero from below
+  out += s;
+}
+
+}  // namespace
+
+void append_number(std::string& out, double v, int decimals) {
+  if (!std::isfinite(v)) throw std::domain_error("SVG number is not finite");
+  if (decimals >= 0 && decimals < static_cast<int>(std::size(kPow10)) && std::abs(v) < kFastLimit) {
+    // Numbers are most of an SVG's bytes: round to an integer count of the last decimal
+    // (half away from zero) and print that, instead of a general float conversion.
+    const long long scale = kPow10[decimals];
+    const long long n = std::llround(v * static_cast<double>(scale));
+    if (n == 0) {
+      out += '0';
+      return;
+    }
+    const unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
+    if (n < 0) out += '-';
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"),
+                   m / static_cast<unsigned long long>(scale));
+    unsigned long long frac = m % static_cast<unsigned long long>(scale);
+    if (frac == 0) return;
+    char digits[8];
+    int len = decimals;
+    for (int i = decimals - 1; i >= 0; --i, frac /= 10)
+      digits[i] = static_cast<char>('0' + frac % 10);
+    while (digits[len - 1] == '0') --len;
+    out += '.';
+    out.append(digits, static_cast<std::size_t>(len));
+    return;
+  }
+  char buf[400];
+  const auto r = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, decimals);
+  append_trimmed(out, std::string_view(buf, r.size < sizeof buf ? r.size : sizeof buf));
+}
+
+std::string format_number(double v, int decimals) {
+  std::string s;
+  append_number(s, v, decimals);
+  return s;
+}
+
+void append_escaped(std::string& out, std::string_view s, bool attribute) {
+  // Runs of characters that need nothing (all of a number or a path) are copied at once.
+  const auto plain = [](unsigned char c) {
+    return c >= 0x20 && c < 0x7F && c != '&' && c != '<' && c != '>' && c != '"';
+  };
+  for (std::size_t i = 0; i < s.size();) {
+    std::size_t j = i;
+    while (j < s.size() && plain(static_cast<unsigned char>(s[j]))) ++j;
+    if (j > i) {
+      out.append(s.substr(i, j - i));
+      i = j;
+      if (i == s.size()) break;
+    }
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c < 0x80) {
+      switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += attribute ? "&quot;" : "\""; break;
+        case '\t': out += attribute ? "&#9;" : "\t"; break;
+        case '\n': out += attribute ? "&#10;" : "\n"; break;
+        case '\r': out += attribute ? "&#13;" : "\r"; break;
+        default:
+          if (c >= 0x20 && c != 0x7F) out += static_cast<char>(c);  // other controls: dropped
+      }
+      ++i;
+      continue;
+    }
+    const utf8::Decoded d = utf8::decode(s, i);
+    if (!d.valid) {
+      utf8::append(out, utf8::kReplacement);
+    } else if (d.cp != 0xFFFE && d.cp != 0xFFFF) {
+      out.append(s.substr(i, d.length));
+    }
+    i += d.length;
+  }
+}
+
+void SvgWriter::declaration() {
+  if (!out_.empty()) throw std::logic_error("the XML declaration must come first");
+  out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>";
+}
+
+void SvgWriter::before_child() {
+  if (!opening_.empty())
+    throw std::logic_error(fmt::format("SVG writer: <{}> is not closed", opening_));
+  if (stack_.empty()) {
+    if (!out_.empty()) out_ += '\n';
+    return;
+  }
+  stack_.back().has_children = true;
+  if (in_inline()) return;
+  out_ += '\n';
+  out_.append(stack_.size(), ' ');
+}
+
+void SvgWriter::open_tag(std::string_view tag, const Attr* begin, const Attr* end,
+                         bool self_close) {
+  before_child();
+  out_ += '<';
+  out_ += tag;
+  for (const Attr* a = begin; a != end; ++a) {
+    out_ += ' ';
+    out_ += a->name;
+    out_ += "=\"";
+    append_escaped(out_, a->value, true);
+    out_ += '"';
+  }
+  out_ += self_close ? "/>" : ">";
+}
+
+void SvgWriter::start(std::string_view tag, Attrs attrs) {
+  open_tag(tag, std::data(attrs), std::data(attrs) + attrs.size(), false);
+  stack_.push_back({std::string(tag), in_inline()});
+}
+
+void SvgWriter::start(std::string_view tag, const std::vector<Attr>& attrs) {
+  open_tag(tag, attrs.data(), attrs.data() + attrs.size(), false);
+  stack_.push_back({std::string(tag), in_inline()});
+}
+
+void SvgWriter::start_inline(std::string_view tag, Attrs attrs) {
+  open_tag(tag, std::data(attrs), std::data(attrs) + attrs.size(), false);
+  stack_.push_back({std::string(tag), true});
+}
+
+void SvgWriter::start_inline(std::string_view tag, const std::vector<Attr>& attrs) {
+  open_tag(tag, attrs.data(), attrs.data() + attrs.size(), false);
+  stack_.push_back({std::string(tag), true});
+}
+
+void SvgWriter::end(std::string_view tag) {
+  if (!opening_.empty() || stack_.empty() || stack_.back().tag != tag) {
+    throw std::logic_error(fmt::format("SVG writer: </{}> does not close <{}>", tag,
+                                       stack_.empty() ? "" : stack_.back().tag));
+  }
+  const Open open = std::move(stack_.back());
+  stack_.pop_back();
+  if (open.has_children && !open.inline_content) {
+    out_ += '\n';
+    out_.append(stack_.size(), ' ');
+  }
+  out_ += "</";
+  out_ += tag;
+  out_ += '>';
+}
+
+void SvgWriter::element(std::string_view tag, Attrs attrs) {
+  open_tag(tag, std::data(attrs), std::data(attrs) + attrs.size(), true);
+}
+
+void SvgWriter::element(std::string_view tag, const std::vector<Attr>& attrs) {
+  open_tag(tag, attrs.data(), attrs.data() + attrs.size(), true);
+}
+
+void SvgWriter::element(std::string_view tag, Attrs attrs, std::string_view text) {
+  open_tag(tag, std::data(attrs), std::data(attrs) + attrs.size(), false);
+  append_escaped(out_, text, false);
+  out_ += "</";
+  out_ += tag;
+  out_ += '>';
+}
+
+void SvgWriter::text(std::string_view s) {
+  if (stack_.empty() || !opening_.empty())
+    throw std::logic_error("SVG writer: text outside any element");
+  append_escaped(out_, s, false);
+}
+
+void SvgWriter::open(std::string_view tag) {
+  if (!opening_.empty())
+    throw std::logic_error(fmt::format("SVG writer: <{}> is not closed", opening_));
+  before_child();
+  out_ += '<';
+  out_ += tag;
+  opening_ = tag;
+}
+
+void SvgWriter::attribute(std::string_view name, std::string_view value) {
+  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
+  out_ += ' ';
+  out_ += name;
+  out_ += "=\"";
+  append_escaped(out_, value, true);
+  out_ += '"';
+}
+
+void SvgWriter::attribute(std::string_view name, double value) {
+  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
+  out_ += ' ';
+  out_ += name;
+  out_ += "=\"";
+  append_number(out_, value);
+  out_ += '"';
+}
+
+void SvgWriter::close_empty() {
+  if (opening_.empty()) throw std::logic_error("SVG writer: no start tag to close");
+  out_ += "/>";
+  opening_.clear();
+}
+
+void SvgWriter::close_start() {
+  if (opening_.empty()) throw std::logic_error("SVG writer: no start tag to close");
+  out_ += '>';
+  const bool parent_inline = in_inline();
+  stack_.push_back({std::move(opening_), parent_inline});
+  opening_.clear();
+}
+
+void SvgWriter::close_start_inline() {
+  if (opening_.empty()) throw std::logic_error("SVG writer: no start tag to close");
+  out_ += '>';
+  stack_.push_back({std::move(opening_), true});
+  opening_.clear();
+}
+
+std::string SvgWriter::next_id(std::string_view prefix) {
+  for (auto& [p, n] : id_counters_) {
+    if (p == prefix) return fmt::format("{}{}", prefix, ++n);
+  }
+  id_counters_.emplace_back(std::string(prefix), 1);
+  return fmt::format("{}1", prefix);
+}
+
+std::string SvgWriter::finish() {
+  if (!opening_.empty())
+    throw std::logic_error(fmt::format("SVG writer: <{}> is not closed", opening_));
+  if (!stack_.empty()) {
+    throw std::logic_error(fmt::format("SVG writer: <{}> is still open", stack_.back().tag));
+  }
+  out_ += '\n';
+  return std::move(out_);
+}
+
+}  // namespace epure::render

@@ -1,0 +1,159 @@
+#include "render/svg_scene.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "render/recording_canvas.h"
+#include "render/scene_painter.h"
+
+using namespace epure::render;
+using epure::test::RecordingCanvas;
+
+namespace {
+
+constexpr double kEps = 1e-12;
+
+Scene projection_key() {
+  Scene s;
+  s.title = "Projection <key> & \"more\"";
+  s.description = "A, B, C and the foot P";
+  Panel p;
+  p.view = {-1, -1, 10, 8};
+  p.add(Grid{1, true});
+  p.add(Line{{1, 1}, {8, 4}, Role::construction});
+  p.add(Segment{{3, 6}, {4.5, 2.5}, Role::construction, true});
+  p.add(RightAngle{{4.5, 2.5}, {-1.5, 3.5}, {7, 3}});
+  p.add(Segment{{1, 1}, {8, 4}});
+  p.add(Tick{{1, 1}, {7, 3}, "0"});
+  p.add(Tick{{4.5, 2.5}, {7, 3}, "t"});
+  p.add(Tick{{8, 4}, {7, 3}, "1"});
+  p.add(PointMark{{1, 1}, Role::data, Label{"A", {1, 1}}});
+  p.add(PointMark{{8, 4}, Role::data, Label{"B", {8, 4}}});
+  p.add(PointMark{{3, 6}, Role::data, Label{"C", {3, 6}}});
+  p.add(PointMark{{4.5, 2.5}, Role::result, Label{"P", {4.5, 2.5}, Side::auto_, Role::result}});
+  s.panels.push_back(std::move(p));
+  return s;
+}
+
+bool contains(const std::string& s, std::string_view what) {
+  return s.find(what) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("Frame: math to page, y flipped once, one scale") {
+  const Frame f({-1, -1, 9, 4}, {10, 20, 110, 70});  // 10 × 5 units into 100 × 50 points
+  CHECK(f.scale() == doctest::Approx(10).epsilon(kEps));
+  const P2 top_left = f.to_page({-1, 4});
+  CHECK(top_left.x == doctest::Approx(10).epsilon(kEps));
+  CHECK(top_left.y == doctest::Approx(20).epsilon(kEps));
+  const P2 bottom_right = f.to_page({9, -1});
+  CHECK(bottom_right.x == doctest::Approx(110).epsilon(kEps));
+  CHECK(bottom_right.y == doctest::Approx(70).epsilon(kEps));
+  const P2 up = f.dir_to_page({0, 1});
+  CHECK(up.x == doctest::Approx(0).epsilon(kEps));
+  CHECK(up.y == doctest::Approx(-10).epsilon(kEps));
+  SUBCASE("a view of another aspect is centred at one scale") {
+    const Frame g({0, 0, 1, 1}, {0, 0, 200, 100});
+    CHECK(g.scale() == doctest::Approx(100).epsilon(kEps));
+    CHECK(g.to_page({0, 0}).x == doctest::Approx(50).epsilon(kEps));
+  }
+}
+
+TEST_CASE("layout_scene: panels side by side at one height, links between, captions under") {
+  Scene s;
+  Panel a, b;
+  a.view = {0, 0, 10, 5};
+  a.caption = "world frame";
+  b.view = {-2, -2, 2, 2};
+  b.caption = "canonical frame";
+  s.panels = {a, b};
+  s.links = {"M^{−1}"};
+  const SceneLayout l = layout_scene(s, 10, 20, 400);
+  REQUIRE(l.panels.size() == 2);
+  REQUIRE(l.links.size() == 1);
+  CHECK(l.panels[0].x_min == doctest::Approx(10).epsilon(kEps));
+  CHECK(l.panels[1].x_max == doctest::Approx(410).epsilon(kEps));
+  CHECK(l.panels[0].height() == doctest::Approx(l.panels[1].height()).epsilon(kEps));
+  CHECK(l.panels[0].width() == doctest::Approx(2 * l.panels[0].height()).epsilon(kEps));
+  CHECK(l.links[0].x_min == doctest::Approx(l.panels[0].x_max).epsilon(kEps));
+  CHECK(l.links[0].x_max == doctest::Approx(l.panels[1].x_min).epsilon(kEps));
+  CHECK(l.height > l.panels[0].height());  // the captions
+  CHECK(scene_height(s, 400) == doctest::Approx(l.height).epsilon(kEps));
+  CHECK(scene_height(Scene{}, 400) == doctest::Approx(0).epsilon(kEps));
+}
+
+TEST_CASE("lines and rays are clipped to the view; zero directions draw nothing") {
+  Scene s;
+  Panel p;
+  p.view = {0, 0, 10, 10};
+  p.add(Line{{-100, -50}, {100, 50}});
+  p.add(Ray{{5, 5}, {1, 3}});
+  p.add(Ray{{-5, -5}, {-1, 0}});  // points away from the view: nothing
+  p.add(Line{{1, 1}, {1, 1}});    // no direction: nothing
+  p.add(Ray{{1, 1}, {0, 0}});     // no direction: nothing
+  p.add(Arrow{{2, 2}, {2, 2}});   // no length: nothing
+  s.panels.push_back(p);
+  RecordingCanvas canvas;
+  const SceneReport r = paint_scene(canvas, s, 0, 0, 100);
+  const Box& area = r.panels[0].area;
+  int strokes = 0;
+  for (const auto& st : canvas.strokes) {
+    if (st.group == "panel") continue;  // the frame
+    ++strokes;
+    for (P2 q : {st.a, st.b}) {
+      CHECK(q.x >= area.x_min - 1e-9);
+      CHECK(q.x <= area.x_max + 1e-9);
+      CHECK(q.y >= area.y_min - 1e-9);
+      CHECK(q.y <= area.y_max + 1e-9);
+    }
+  }
+  // The line (1 stroke) and the first ray (shaft + a 3-sided head).
+  CHECK(strokes == 1 + 1 + 3);
+  CHECK(canvas.clips == 0);  // balanced
+  CHECK(canvas.groups.empty());
+}
+
+TEST_CASE("scene_to_svg: a standalone SVG 1.1 document, grouped by role, escaped") {
+  const std::string svg = scene_to_svg(projection_key(), 320);
+  CHECK(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg "
+                  "xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\"",
+                  0) == 0);
+  CHECK(contains(svg, "viewBox=\"0 0 320 "));
+  CHECK(contains(svg, "<title>Projection &lt;key&gt; &amp; \"more\"</title>"));
+  CHECK(contains(svg, "<desc>A, B, C and the foot P</desc>"));
+  CHECK(contains(svg, "id=\"panel1\" class=\"panel\""));
+  for (const char* cls : {"class=\"grid\"", "class=\"construction\"", "class=\"data\"",
+                          "class=\"labels\"", "class=\"points result\""}) {
+    CAPTURE(cls);
+    CHECK(contains(svg, cls));
+  }
+  CHECK(contains(svg, "stroke-dasharray=\"5 3\""));  // CP, dashed regardless of role
+  CHECK(contains(svg, ">P</text>"));
+  CHECK_FALSE(contains(svg, "nan"));
+  CHECK_FALSE(contains(svg, "marker"));  // arrowheads are paths
+  CHECK(svg.back() == '\n');
+}
+
+TEST_CASE("text: scripts as tspans that return to the baseline, \\vec as a drawn arrow") {
+  Scene s;
+  Panel p;
+  p.view = {0, 0, 4, 4};
+  p.add(Label{"t_{ab}·\\vec{AB}", {2, 2}, Side::right});
+  s.panels.push_back(p);
+  const std::string svg = scene_to_svg(s, 200);
+  CHECK(contains(svg,
+                 "xml:space=\"preserve\">t<tspan dy=\"2.5\" font-size=\"7\">ab</tspan><tspan "
+                 "dy=\"-2.5\">·</tspan>AB</text>"));
+  // In the labels group: the label's background, then the arrow's shaft and head.
+  const std::size_t at = svg.find("<g class=\"labels\">");
+  REQUIRE(at != std::string::npos);
+  const std::string labels = svg.substr(at, svg.find("</g>", at) - at);
+  std::size_t paths = 0;
+  for (std::size_t k = labels.find("<path"); k != std::string::npos;
+       k = labels.find("<path", k + 1))
+    ++paths;
+  CHECK(paths == 3);
+}

@@ -1,0 +1,169 @@
+#include "render/svg_writer.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+using epure::render::append_escaped;
+using epure::render::format_number;
+using epure::render::SvgWriter;
+
+namespace {
+
+std::string escaped(std::string_view s, bool attribute) {
+  std::string out;
+  append_escaped(out, s, attribute);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("format_number: short, fixed, no negative zero") {
+  CHECK(format_number(0) == "0");
+  CHECK(format_number(2.0) == "2");
+  CHECK(format_number(1.5) == "1.5");
+  CHECK(format_number(1.25) == "1.25");
+  CHECK(format_number(123.456) == "123.46");
+  CHECK(format_number(-2.5) == "-2.5");
+  CHECK(format_number(10) == "10");
+  CHECK(format_number(100.001) == "100");
+  CHECK(format_number(1e6) == "1000000");
+  SUBCASE("negative zero and tiny negatives print as 0") {
+    CHECK(format_number(-0.0) == "0");
+    CHECK(format_number(-0.001) == "0");
+    CHECK(format_number(-0.004) == "0");
+  }
+  SUBCASE("other precisions") {
+    CHECK(format_number(3.14159, 0) == "3");
+    CHECK(format_number(3.14159, 4) == "3.1416");
+    CHECK(format_number(-0.00001, 4) == "0");
+  }
+  SUBCASE("not finite: refused") {
+    CHECK_THROWS_AS(format_number(std::nan("")), std::domain_error);
+    CHECK_THROWS_AS(format_number(std::numeric_limits<double>::infinity()), std::domain_error);
+  }
+}
+
+TEST_CASE("escaping: every string the writer emits is well-formed XML") {
+  CHECK(escaped("a < b && c > d", false) == "a &lt; b &amp;&amp; c &gt; d");
+  CHECK(escaped("say \"hi\"", false) == "say \"hi\"");
+  CHECK(escaped("say \"hi\"", true) == "say &quot;hi&quot;");
+  CHECK(escaped("it's", true) == "it's");  // attributes are double-quoted
+  CHECK(escaped("a\tb\nc\rd", true) == "a&#9;b&#10;c&#13;d");
+  CHECK(escaped("a\nb", false) == "a\nb");
+  SUBCASE("controls XML forbids are dropped") {
+    CHECK(escaped(std::string("a\x01\x1f\x7f") + "b", false) == "ab");
+    CHECK(escaped(std::string("a\0b", 3), false) == "ab");
+  }
+  SUBCASE("UTF-8 kept; invalid bytes become U+FFFD") {
+    CHECK(escaped("é → √ ‖u‖", false) == "é → √ ‖u‖");
+    CHECK(escaped("a\xff"
+                  "b",
+                  false) ==
+          "a\xEF\xBF\xBD"
+          "b");
+    CHECK(escaped("\xC3", false) == "\xEF\xBF\xBD");                          // truncated sequence
+    CHECK(escaped("\xC0\xAF", false) == "\xEF\xBF\xBD\xEF\xBF\xBD");          // overlong '/'
+    CHECK(escaped("\xED\xA0\x80", false).find("\xED") == std::string::npos);  // a surrogate
+    CHECK(escaped("\xEF\xBF\xBF", false).empty());  // U+FFFF is not an XML character
+  }
+}
+
+TEST_CASE("SvgWriter: balanced tags, attributes in order, indentation outside text") {
+  SvgWriter w;
+  w.declaration();
+  w.start("svg", {{"xmlns", "http://www.w3.org/2000/svg"}, {"width", 10.5}, {"height", 3}});
+  w.element("title", {}, "A & B");
+  w.start("g", {{"class", "data"}, {"id", "p1"}});
+  w.element("path", {{"d", "M0 0 L1 1"}, {"stroke", "#000"}});
+  w.end("g");
+  w.start_inline("text", {{"x", 1.0}, {"y", -0.0}});
+  w.text("t");
+  w.start_inline("tspan", {{"dy", 2.5}});
+  w.text("ab<");
+  w.end("tspan");
+  w.end("text");
+  w.end("svg");
+  const std::string expected =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10.5\" height=\"3\">\n"
+      " <title>A &amp; B</title>\n"
+      " <g class=\"data\" id=\"p1\">\n"
+      "  <path d=\"M0 0 L1 1\" stroke=\"#000\"/>\n"
+      " </g>\n"
+      " <text x=\"1\" y=\"0\">t<tspan dy=\"2.5\">ab&lt;</tspan></text>\n"
+      "</svg>\n";
+  CHECK(w.finish() == expected);
+}
+
+TEST_CASE("SvgWriter: misuse is refused") {
+  SUBCASE("1. closing the wrong tag") {
+    SvgWriter w;
+    w.start("svg");
+    w.start("g");
+    CHECK_THROWS_AS(w.end("svg"), std::logic_error);
+  }
+  SUBCASE("2. closing with nothing open") {
+    SvgWriter w;
+    CHECK_THROWS_AS(w.end("g"), std::logic_error);
+  }
+  SUBCASE("3. finishing with an element open") {
+    SvgWriter w;
+    w.start("svg");
+    CHECK(w.depth() == 1);
+    CHECK_THROWS_AS(w.finish(), std::logic_error);
+  }
+  SUBCASE("4. text outside any element") {
+    SvgWriter w;
+    CHECK_THROWS_AS(w.text("x"), std::logic_error);
+  }
+  SUBCASE("5. a declaration after content") {
+    SvgWriter w;
+    w.element("svg");
+    CHECK_THROWS_AS(w.declaration(), std::logic_error);
+  }
+  SUBCASE("6. a NaN attribute") {
+    SvgWriter w;
+    CHECK_THROWS_AS(w.element("rect", {{"x", std::nan("")}}), std::domain_error);
+  }
+}
+
+TEST_CASE("SvgWriter: ids count per prefix, deterministically") {
+  SvgWriter a, b;
+  for (SvgWriter* w : {&a, &b}) {
+    CHECK(w->next_id("clip") == "clip1");
+    CHECK(w->next_id("panel") == "panel1");
+    CHECK(w->next_id("clip") == "clip2");
+  }
+}
+
+TEST_CASE("SvgWriter: the streamed form writes what the list form writes") {
+  SvgWriter a, b;
+  for (SvgWriter* w : {&a, &b}) w->start("g");
+  a.element("path", {{"d", "M0 0"}, {"stroke-width", 1.25}, {"fill", "a\"b"}});
+  b.open("path");
+  b.attribute("d", "M0 0");
+  b.attribute("stroke-width", 1.25);
+  b.attribute("fill", "a\"b");
+  b.close_empty();
+  a.start_inline("text", {{"x", 1.0}});
+  b.open("text");
+  b.attribute("x", 1.0);
+  b.close_start_inline();
+  for (SvgWriter* w : {&a, &b}) {
+    w->text("t");
+    w->end("text");
+    w->end("g");
+  }
+  CHECK(a.finish() == b.finish());
+  SUBCASE("misuse") {
+    SvgWriter w;
+    CHECK_THROWS_AS(w.attribute("x", 1.0), std::logic_error);  // no start tag
+    w.open("svg");
+    CHECK_THROWS_AS(w.open("g"), std::logic_error);  // the previous tag is still open
+    CHECK_THROWS_AS(w.finish(), std::logic_error);
+  }
+}
