@@ -69,6 +69,14 @@ struct ExerciseContext {
   std::string branch;          // the branch to draw (chosen by the sheet schedule)
 };
 
+// An answer field of the printed sheet: the same for every branch of a kind, so that the sheet
+// never tells a student which case they have (a "why not?" field only on sheets that miss would).
+struct SheetField {
+  std::string field;  // "t", "I", "reason"
+  render::AnswerField::Kind kind;
+  std::vector<std::string> choices;  // contract words ("behind", "miss") or face names
+};
+
 class ExerciseKind {
  public:
   virtual ~ExerciseKind() = default;
@@ -80,6 +88,9 @@ class ExerciseKind {
   virtual std::map<std::string, double> default_constraints() const { return {}; }
   // The question fields this kind can ask (for validating a spec's points table).
   virtual std::vector<std::string> fields() const = 0;
+  // The sheet's answer fields, whatever the branch; empty: the fields asked (a kind whose
+  // questions do not depend on the branch).
+  virtual std::vector<SheetField> sheet_fields() const { return {}; }
   // Draws until the constraints hold (throws std::runtime_error after too many attempts, naming
   // the constraint that could not be met).
   virtual ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const = 0;

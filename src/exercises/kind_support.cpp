@@ -235,7 +235,24 @@ render::Section begin_key_section(const ExerciseContext& ctx, std::string_view t
 }
 
 void add_fields(render::Section& s, const Questions& q) {
-  for (const auto& f : q.fields()) s.add(f);
+  const ExerciseContext& ctx = q.context();
+  const auto layout = find_kind(ctx.spec.kind)->sheet_fields();
+  if (layout.empty()) {
+    for (const auto& f : q.fields()) s.add(f);
+    return;
+  }
+  for (const auto& f : layout) {
+    std::vector<std::string> shown;
+    using Kind = render::AnswerField::Kind;
+    if (f.kind == Kind::choice)
+      for (const auto& c : f.choices) shown.push_back(ctx.texts.get(fmt::format("choice.{}", c)));
+    else if (f.kind == Kind::boolean)
+      shown = {ctx.texts.get("common.yes"), ctx.texts.get("common.no")};
+    else
+      shown = f.choices;
+    s.add(render::AnswerField{fmt::format("{}.{}", ctx.n, f.field),
+                              ctx.texts.get(fmt::format("{}.q.{}", ctx.spec.kind, f.field)), f.kind, shown});
+  }
 }
 
 void add_lines(render::Section& s, const Questions& q) {

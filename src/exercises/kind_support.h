@@ -67,6 +67,7 @@ class Questions {
   // Fields for the sheet and lines for the key, in order.
   const std::vector<render::AnswerField>& fields() const { return fields_; }
   const std::vector<render::AnswerLine>& lines() const { return lines_; }
+  const ExerciseContext& context() const { return ctx_; }
 
  private:
   const QuestionSpec* spec_for(std::string_view field) const;
@@ -103,7 +104,8 @@ auto draw_until(int attempts, std::string_view what, Draw&& draw) {
 render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key);
 render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key);
 
-// Adds the answer fields (sheet) or the answer lines (key).
+// Adds the answer fields (sheet: the kind's sheet_fields() when it has them, the same for every
+// branch) or the answer lines (key: what this instance asks).
 void add_fields(render::Section& s, const Questions& q);
 void add_lines(render::Section& s, const Questions& q);
 

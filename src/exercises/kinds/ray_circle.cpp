@@ -200,6 +200,12 @@ class RayCircleKind final : public ExerciseKind {
   std::vector<std::string> fields() const override {
     return {"t_proj", "d2", "inside", "hit", "t", "I", "N", "reason"};
   }
+  std::vector<SheetField> sheet_fields() const override {
+    return {{"t_proj", render::AnswerField::Kind::number, {}}, {"d2", render::AnswerField::Kind::number, {}},
+            {"inside", render::AnswerField::Kind::boolean, {}},   {"hit", render::AnswerField::Kind::boolean, {}},
+            {"t", render::AnswerField::Kind::number, {}},         {"I", render::AnswerField::Kind::point, {}},
+            {"N", render::AnswerField::Kind::point, {}},          {"reason", render::AnswerField::Kind::choice, {"behind", "miss"}}};
+  }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Difficulty level = ctx.spec.difficulty;

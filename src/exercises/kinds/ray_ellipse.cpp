@@ -94,6 +94,12 @@ class RayEllipseKind final : public ExerciseKind {
   }
   std::map<std::string, double> default_constraints() const override { return common_constraints(); }
   std::vector<std::string> fields() const override { return transformed::fields(); }
+  std::vector<SheetField> sheet_fields() const override {
+    return {{"Ac", render::AnswerField::Kind::point, {}},       {"uc", render::AnswerField::Kind::point, {}},
+            {"inside", render::AnswerField::Kind::boolean, {}}, {"hit", render::AnswerField::Kind::boolean, {}},
+            {"t", render::AnswerField::Kind::number, {}},       {"I", render::AnswerField::Kind::point, {}},
+            {"N", render::AnswerField::Kind::point, {}}};
+  }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Limits lim = limits(ctx, *this);

@@ -193,6 +193,14 @@ class RaySquareKind final : public ExerciseKind {
     };
   }
   std::vector<std::string> fields() const override { return {"faces", "inside", "hit", "t", "I", "N"}; }
+  std::vector<SheetField> sheet_fields() const override {
+    return {{"faces", render::AnswerField::Kind::faces, {"+x", "+y", "-x", "-y"}},
+            {"inside", render::AnswerField::Kind::boolean, {}},
+            {"hit", render::AnswerField::Kind::boolean, {}},
+            {"t", render::AnswerField::Kind::number, {}},
+            {"I", render::AnswerField::Kind::point, {}},
+            {"N", render::AnswerField::Kind::point, {}}};
+  }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Difficulty level = ctx.spec.difficulty;

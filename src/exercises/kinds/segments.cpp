@@ -124,6 +124,13 @@ class Segments final : public ExerciseKind {
             {"min_separation", 1.0}, {"outside_clearance", 1.5}};
   }
   std::vector<std::string> fields() const override { return {"intersects", "reason", "t_ab", "t_cd", "I"}; }
+  std::vector<SheetField> sheet_fields() const override {
+    return {{"intersects", render::AnswerField::Kind::boolean, {}},
+            {"t_ab", render::AnswerField::Kind::number, {}},
+            {"t_cd", render::AnswerField::Kind::number, {}},
+            {"I", render::AnswerField::Kind::point, {}},
+            {"reason", render::AnswerField::Kind::choice, {"outside", "parallel", "collinear"}}};
+  }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     SegmentRelation wanted;
