@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "render/scene_painter.h"
+
 namespace epure::render {
 namespace {
 
@@ -27,6 +29,12 @@ constexpr double kBoxGap = 3;       // between a box and the "(", ";" around it
 constexpr double kTickGap = 4;      // between a tick box and its option
 constexpr double kOptionGap = 16;   // between two options
 constexpr double kHeaderGap = 12;   // between the header's left and right columns
+// The name fields: the name gets the larger share of the line (names are longer than student
+// numbers); a writing line starts a little after its label and runs just under the baseline,
+// below the descenders (0.24 em).
+constexpr double kNameShare = 0.6;
+constexpr double kWritingLineGap = 4;
+constexpr double kWritingLineDrop = 3;
 
 std::vector<TextRun> plain(std::string text, bool bold = false) {
   TextRun run;
@@ -79,23 +87,10 @@ struct Atom {
   double space_before = 0;   // dropped at the top of a page
   bool break_before = true;  // a page may end just before this atom
   bool section_start = false;
+  std::size_t head_atoms = 0;  // on a section's first atom: how many atoms its statement takes
   int section = -1, block = -1;
   Fragment content;
 };
-
-// TODO(render): replace by the scene drawer's own measure once svg_scene lands, so that the
-// rectangle given here is the one draw_scene fills.
-double figure_height(const Scene& scene, double width) {
-  if (scene.panels.empty()) return 0;
-  double aspects = 0;
-  bool captions = false;
-  for (const auto& p : scene.panels) {
-    aspects += p.view.height() > 0 ? p.view.width() / p.view.height() : 1;
-    captions = captions || !p.caption.empty();
-  }
-  const double gaps = 40 * static_cast<double>(scene.panels.size() - 1);
-  return std::max(width - gaps, width * 0.2) / aspects + (captions ? 14 : 0);
-}
 
 class Builder {
  public:
@@ -122,27 +117,28 @@ class Builder {
 
   void push(Atom atom) {
     if (after_heading_) atom.break_before = false;  // a heading never ends a page
+    if (after_figure_) atom.space_before = std::max(atom.space_before, s_.figure_space);
     after_heading_ = false;
+    after_figure_ = false;
     atoms_.push_back(std::move(atom));
   }
 
   void first_page() {
     if (doc_.student_fields) {
       Atom a;
-      a.height = 26;
-      const double baseline = 16;
+      a.height = s_.name_row_height;
       const double size = s_.body_size;
-      const double line_y = baseline + 3;
+      const double baseline = a.height - kWritingLineGap - kWritingLineDrop;
+      const double line_y = baseline + kWritingLineDrop;
       auto name = plain(doc_.words.name);
       auto number = plain(doc_.words.student_number);
       const double name_w = text_width(name, size);
       const double number_w = text_width(number, size);
-      // The name gets the larger share of the line: names are longer than student numbers.
-      const double split = left_ + width_ * 0.6;
+      const double split = left_ + width_ * kNameShare;
       a.content.text(std::move(name), left_, baseline, size);
-      a.content.rules.push_back({{left_ + name_w + 4, line_y}, {split - 14, line_y}, 0.6, Ink::text});
+      a.content.rules.push_back({{left_ + name_w + kWritingLineGap, line_y}, {split - kHeaderGap, line_y}, 0.6, Ink::text});
       a.content.text(std::move(number), split, baseline, size);
-      a.content.rules.push_back({{split + number_w + 4, line_y}, {right_, line_y}, 0.6, Ink::text});
+      a.content.rules.push_back({{split + number_w + kWritingLineGap, line_y}, {right_, line_y}, 0.6, Ink::text});
       push(std::move(a));
     }
     if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);
@@ -151,16 +147,21 @@ class Builder {
   void section(int si) {
     const auto& blocks = doc_.sections[static_cast<std::size_t>(si)].blocks;
     section_begin_ = atoms_.size();
+    // The statement: from the heading to the first figure, or to the first field or answer.
+    std::size_t head_end = 0;
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
       const Block& block = blocks[bi];
       const Block* before = bi > 0 ? &blocks[bi - 1] : nullptr;
       const int b = static_cast<int>(bi);
+      const bool answers = std::holds_alternative<AnswerField>(block) || std::holds_alternative<AnswerLine>(block);
+      if (head_end == 0 && answers) head_end = atoms_.size();
       if (const auto* h = std::get_if<Heading>(&block)) {
         heading(si, b, *h);
       } else if (const auto* p = std::get_if<Paragraph>(&block)) {
         paragraph(si, b, p->text, p->emphasis);
       } else if (const auto* f = std::get_if<Figure>(&block)) {
         figure(si, b, *f, before && std::holds_alternative<Paragraph>(*before));
+        if (head_end == 0) head_end = atoms_.size();
       } else if (const auto* field = std::get_if<AnswerField>(&block)) {
         const bool follows = before && std::holds_alternative<AnswerField>(*before);
         if (!follows) field_column_ = field_prompt_column(blocks, bi);
@@ -171,7 +172,11 @@ class Builder {
         answer_line(si, b, *line, follows);
       }
     }
-    if (atoms_.size() > section_begin_) atoms_[section_begin_].section_start = true;
+    if (atoms_.size() > section_begin_) {
+      Atom& first = atoms_[section_begin_];
+      first.section_start = true;
+      first.head_atoms = (head_end > section_begin_ ? head_end : atoms_.size()) - section_begin_;
+    }
   }
 
   void heading(int si, int bi, const Heading& h) {
@@ -232,20 +237,23 @@ class Builder {
 
   void figure(int si, int bi, const Figure& f, bool follows_paragraph) {
     double w = width_ * std::clamp(f.width_fraction, 0.05, 1.0);
-    double h = figure_height(f.scene, w);
+    double h = scene_height(f.scene, w);
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
-    if (h > max_h) {
-      w *= max_h / h;  // a figure's height grows with its width
-      h = figure_height(f.scene, w);
+    // The panels' height is proportional to the width, the captions' is not: a few narrowings
+    // bring the whole under max_h.
+    for (int i = 0; i < 8 && h > max_h; ++i) {
+      w *= max_h / h;
+      h = scene_height(f.scene, w);
     }
     Atom a;
     a.section = si;
     a.block = bi;
-    a.space_before = s_.block_space;
+    a.space_before = s_.figure_space;
     a.height = h;
     a.break_before = !follows_paragraph;
     a.content.figures.push_back({{left_ + (width_ - w) / 2, 0, w, h}, &f.scene});
     push(std::move(a));
+    after_figure_ = true;
   }
 
   // The prompt column shared by a run of consecutive fields, so that their boxes line up.
@@ -266,7 +274,7 @@ class Builder {
       if (!l) break;
       widest = std::max(widest, text_width(l->prompt, s_.body_size));
     }
-    return std::min(widest + kPromptGap, width_ * s_.key_prompt_column_max);
+    return std::clamp(widest + kPromptGap, s_.key_prompt_column_min, width_ * s_.key_prompt_column_max);
   }
 
   void answer_field(int si, int bi, const AnswerField& f, bool follows_field) {
@@ -275,6 +283,7 @@ class Builder {
     a.section = si;
     a.block = bi;
     a.space_before = follows_field ? s_.row_space : s_.block_space;
+    a.break_before = !follows_field;  // a run of fields stays whole where a page holds it
 
     auto id = plain(f.question_id);
     const double id_w = f.question_id.empty() ? 0 : text_width(id, s_.id_size);
@@ -319,22 +328,36 @@ class Builder {
       } else {
         for (const auto& c : f.choices) options.emplace_back(c, c);
       }
-      double x = x0;
-      double top = 0;
-      for (auto& [printed, value] : options) {
-        auto runs = parse_rich_text(printed);
-        const double item_w = s_.tick_size + kTickGap + text_width(runs, size);
-        if (x > x0 && x + item_w > limit) {  // wrap onto the next row, under the first option
-          x = x0;
-          top += s_.tick_row_height;
-        }
-        const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
-        a.content.boxes.push_back(
-            {{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id, std::move(value)});
-        a.content.text(std::move(runs), x + s_.tick_size + kTickGap, top + baseline, size);
-        x += item_w + kOptionGap;
+      // The options on as few rows as fit, in aligned columns: six faces become two rows of
+      // three rather than five and a lonely one.
+      std::vector<std::vector<TextRun>> labels;
+      std::vector<double> widths;
+      for (const auto& o : options) {
+        labels.push_back(parse_rich_text(o.first));
+        widths.push_back(s_.tick_size + kTickGap + text_width(labels.back(), size));
       }
-      body_h = top + s_.tick_row_height;
+      const std::size_t n = options.size();
+      std::size_t per_row = n;
+      std::vector<double> columns;
+      for (std::size_t rows = 1; rows <= n; ++rows) {
+        per_row = (n + rows - 1) / rows;
+        columns.assign(per_row, 0);
+        for (std::size_t i = 0; i < n; ++i) columns[i % per_row] = std::max(columns[i % per_row], widths[i]);
+        double total = kOptionGap * static_cast<double>(per_row - 1);
+        for (double c : columns) total += c;
+        if (x0 + total <= limit + kFitSlack) break;
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        double x = x0;
+        for (std::size_t c = 0; c < i % per_row; ++c) x += columns[c] + kOptionGap;
+        const double top = static_cast<double>(i / per_row) * s_.tick_row_height;
+        const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
+        a.content.boxes.push_back({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
+                                   std::move(options[i].second)});
+        a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
+      }
+      const std::size_t rows = n == 0 ? 1 : (n + per_row - 1) / per_row;
+      body_h = static_cast<double>(rows) * s_.tick_row_height;
     }
 
     // The prompt, right of nothing and left of the boxes; wrapped if wider than its column.
@@ -357,6 +380,7 @@ class Builder {
     a.section = si;
     a.block = bi;
     a.space_before = follows_line ? 0 : s_.block_space;
+    a.break_before = !follows_line;  // so does a key's table
 
     auto id = plain(l.question_id);
     const double id_w = l.question_id.empty() ? 0 : text_width(id, s_.id_size);
@@ -412,13 +436,18 @@ class Builder {
         group_end = i + 1;
         while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
         if (!empty_) {
-          bool fresh = !fits(space + span(i, group_end));
+          // A group goes to a fresh page when it does not fit here but would there; one taller
+          // than a page starts here, since it must be broken anyway.
+          const double page = bottom_ - top_ + kFitSlack;
+          const double group = span(i, group_end);
+          bool fresh = !fits(space + group) && group <= page;
           if (!fresh && atom.section_start) {
-            // Keep a section whole when a fresh page would hold it.
+            // Keep a section whole when a fresh page would hold it; failing that, its statement.
             std::size_t end = i + 1;
             while (end < atoms_.size() && !atoms_[end].section_start) ++end;
             const double whole = span(i, end);
-            fresh = !fits(space + whole) && whole <= bottom_ - top_ + kFitSlack;
+            const double head = span(i, i + atom.head_atoms);
+            fresh = !fits(space + whole) && (whole <= page || (!fits(space + head) && head <= page));
           }
           if (fresh) new_page();
         }
@@ -486,6 +515,7 @@ class Builder {
 
   std::vector<Atom> atoms_;
   bool after_heading_ = false;
+  bool after_figure_ = false;
   std::size_t section_begin_ = 0;
   double field_column_ = 0, key_column_ = 0;
 

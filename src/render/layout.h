@@ -6,9 +6,11 @@
 //
 // The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
 // with the name and student number fields; a section starts on a fresh page when it would fit
-// there whole but not in what is left of the current one; otherwise it flows, breaking only
-// between lines of text, rows of fields or blocks: never right after a Heading, never between a
-// Figure and the Paragraph just before it, never leaving one line of a paragraph alone.
+// there whole but not in what is left of the current one (and, for a section longer than a page,
+// when its statement, up to its first figure or field, would not); otherwise it flows, breaking
+// only between lines of text, runs of fields, tables or blocks: never right after a Heading,
+// never between a Figure and the Paragraph just before it, never leaving one line of a
+// paragraph alone, never inside a run of fields or a key's table that a page could hold.
 #include <string>
 #include <vector>
 
@@ -64,7 +66,7 @@ struct PlacedBox {
   std::string value;
 };
 
-// A Scene drawn into a rectangle whose aspect ratio follows its panels (figure_height).
+// A Scene drawn into a rectangle scene_height (scene_painter.h) high, with Style::print().
 // Points into the Document: the Document must outlive the pages.
 struct PlacedFigure {
   PageRect rect;
@@ -100,6 +102,8 @@ struct LayoutStyle {
   double header_height = 28;        // from the top margin to the rule under the header
   double header_gap = 14;           // from that rule to the content
 
+  double name_row_height = 26;      // the first page's name and student number fields
+
   double body_size = 10.5;
   double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript
   double heading1_size = 13, heading2_size = 11;
@@ -117,12 +121,14 @@ struct LayoutStyle {
   double row_space = 5;             // between consecutive field rows
   double prompt_column_max = 0.4;   // × text width, for the shared prompt column of fields
 
+  double key_prompt_column_min = 56;  // so that an answer never hugs a one-letter prompt
   double key_prompt_column_max = 0.38;
   double key_row_padding = 3;
 
   // A figure never takes more than this share of a page's text height, so that the paragraph
   // it belongs to still fits above it.
-  double figure_max_height = 0.75;
+  double figure_max_height = 0.55;
+  double figure_space = 10;         // above and below a figure (a frame needs more air than text)
 };
 
 // Lays out the whole document. Deterministic: the same Document and style give the same pages.

@@ -164,6 +164,53 @@ TEST_CASE("layout: everything lies inside the margins, blocks never overlap") {
   }
 }
 
+TEST_CASE("layout: no text overlaps another text, a box or a figure") {
+  struct Ink2 {
+    double x0, y0, x1, y1;
+    std::string what;
+  };
+  auto overlap = [](const Ink2& a, const Ink2& b) {
+    return a.x0 < b.x1 - kPt && b.x0 < a.x1 - kPt && a.y0 < b.y1 - kPt && b.y0 < a.y1 - kPt;
+  };
+  for (int paragraphs : {1, 4}) {
+    Document doc = sample(4, paragraphs);
+    Section fields;
+    fields.add(AnswerField{"9.faces", "Faces hit by the ray, in the order met:", AnswerField::Kind::faces,
+                           {"x = −1", "x = 1", "y = −1", "y = 1", "z = −1", "z = 1"}});
+    fields.add(AnswerField{"9.hit", "d^{2} < r^{2} ?", AnswerField::Kind::boolean, {}});
+    fields.add(AnswerField{"9.Q", "\\vec{N}", AnswerField::Kind::point3, {}});
+    fields.add(AnswerLine{"9.t_ab", "t_{ab}", "≈ 0.43 (exact: 3/7), within 0.01 or 1 %, the larger"});
+    doc.sections.push_back(fields);
+    CAPTURE(paragraphs);
+    for (const auto& page : layout_document(doc)) {
+      CAPTURE(page.number);
+      std::vector<Ink2> texts, others;
+      for (const auto& t : page.texts) {
+        const TextExtent e = text_extent(t.runs, t.size);
+        texts.push_back({t.baseline.x, t.baseline.y - e.ascent, t.baseline.x + e.width,
+                         t.baseline.y + e.descent, joined(t)});
+      }
+      for (const auto& b : page.boxes)
+        if (b.kind != BoxKind::shade)
+          others.push_back({b.rect.x, b.rect.y, b.rect.right(), b.rect.bottom(), "box " + b.question_id});
+      for (const auto& f : page.figures)
+        others.push_back({f.rect.x, f.rect.y, f.rect.right(), f.rect.bottom(), "figure"});
+      for (std::size_t i = 0; i < texts.size(); ++i) {
+        for (std::size_t j = i + 1; j < texts.size(); ++j) {
+          CAPTURE(texts[i].what);
+          CAPTURE(texts[j].what);
+          CHECK_FALSE(overlap(texts[i], texts[j]));
+        }
+        for (const auto& o : others) {
+          CAPTURE(texts[i].what);
+          CAPTURE(o.what);
+          CHECK_FALSE(overlap(texts[i], o));
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("layout: page breaks") {
   SUBCASE("1. a heading never ends a page, a figure stays with its paragraph") {
     for (int paragraphs = 1; paragraphs <= 12; ++paragraphs) {
@@ -231,7 +278,53 @@ TEST_CASE("layout: page breaks") {
     CHECK(figures == 1);
   }
 
-  SUBCASE("5. an empty document is one page with its header") {
+  SUBCASE("5. a table or a run of fields that a page holds is never split") {
+    for (int paragraphs = 1; paragraphs <= 12; ++paragraphs) {
+      CAPTURE(paragraphs);
+      Document doc = sample(3, paragraphs);
+      for (auto& section : doc.sections) {
+        for (int k = 0; k < 8; ++k)
+          section.add(AnswerLine{fmt::format("x.{}", k), "t_{ab}", "≈ 0.43 (exact: 3/7)"});
+      }
+      const auto pages = layout_document(doc);
+      for (std::size_t s = 0; s < doc.sections.size(); ++s) {
+        std::set<int> table_pages, field_pages;
+        for (const auto& page : pages) {
+          for (const auto& b : page.blocks) {
+            if (b.section != static_cast<int>(s)) continue;
+            if (std::holds_alternative<AnswerLine>(block_of(doc, b))) table_pages.insert(page.number);
+            if (std::holds_alternative<AnswerField>(block_of(doc, b))) field_pages.insert(page.number);
+          }
+        }
+        CAPTURE(s);
+        CHECK(table_pages.size() == 1);
+        CHECK(field_pages.size() == 1);
+      }
+    }
+  }
+
+  SUBCASE("6. a section longer than a page keeps its statement on one page") {
+    // Heading, two paragraphs and the figure (blocks 0 to 3), then more fields than a page
+    // holds, in numbers that end a section at every height of a page.
+    for (int fields = 28; fields <= 56; ++fields) {
+      CAPTURE(fields);
+      Document doc = sample(3, 2);
+      for (auto& section : doc.sections)
+        for (int k = 0; k < fields; ++k)
+          section.add(AnswerField{fmt::format("x.{}", k), "t =", AnswerField::Kind::number, {}});
+      const auto pages = layout_document(doc);
+      for (std::size_t s = 0; s < doc.sections.size(); ++s) {
+        CAPTURE(s);
+        std::set<int> statement_pages;
+        for (const auto& page : pages)
+          for (const auto& b : page.blocks)
+            if (b.section == static_cast<int>(s) && b.block <= 3) statement_pages.insert(page.number);
+        CHECK(statement_pages.size() == 1);
+      }
+    }
+  }
+
+  SUBCASE("7. an empty document is one page with its header") {
     Document doc = sample(0);
     const auto pages = layout_document(doc);
     REQUIRE(pages.size() == 1);
@@ -290,7 +383,15 @@ TEST_CASE("layout: answer fields are sized to what they hold") {
     CHECK(b.rect.width == doctest::Approx(style.tick_size).epsilon(1e-12));
   }
   CHECK(page_has_text(page, "between"));
-  CHECK(boxes_of("1.faces").size() == 6);
+  const auto faces = boxes_of("1.faces");
+  REQUIRE(faces.size() == 6);
+  // Six faces on rows of equal length, in aligned columns.
+  std::set<double> rows, columns;
+  for (const auto& b : faces) {
+    rows.insert(b.rect.y);
+    columns.insert(b.rect.x);
+  }
+  CHECK(rows.size() * columns.size() == 6);
   CHECK(values(boxes_of("1.hit")) == std::vector<std::string>{"true", "false"});
   CHECK(page_has_text(page, "yes"));
   CHECK(page_has_text(page, "no"));

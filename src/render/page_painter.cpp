@@ -1,0 +1,89 @@
+#include "render/page_painter.h"
+
+#include <cstddef>
+#include <optional>
+
+#include "render/scene_painter.h"
+
+namespace epure::render {
+namespace {
+
+Path rectangle(const PageRect& r) {
+  Path p;
+  p.move_to({r.x, r.y}).line_to({r.right(), r.y}).line_to({r.right(), r.bottom()}).line_to({r.x, r.bottom()}).close();
+  return p;
+}
+
+void paint_box(Canvas& canvas, const PlacedBox& box, const PageStyle& style) {
+  switch (box.kind) {
+    case BoxKind::answer:
+      canvas.path(rectangle(box.rect), Paint{StrokeStyle{style.box_stroke, style.box_width, {}}, style.paper, 1});
+      break;
+    case BoxKind::tick:
+      canvas.path(rectangle(box.rect), Paint{StrokeStyle{style.tick_stroke, style.tick_width, {}}, style.paper, 1});
+      break;
+    case BoxKind::shade: {
+      canvas.path(rectangle(box.rect), Paint{std::nullopt, style.shade, 1});
+      const PageRect bar{box.rect.x, box.rect.y, style.shade_bar_width, box.rect.height};
+      canvas.path(rectangle(bar), Paint{std::nullopt, style.shade_bar, 1});
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+void paint_text(Canvas& canvas, const PlacedText& t, Colour colour) {
+  canvas.text(TextLine{t.baseline, Anchor::start, t.size, t.runs, colour});
+  // The arrow over a \vec run, drawn as the scene painter draws it over a label (text.h's
+  // constants), so a vector looks the same in a statement and in its figure.
+  bool any = false;
+  for (const TextRun& r : t.runs) any = any || r.arrow;
+  if (!any) return;
+  const std::vector<RunPlacement> placed = place_runs(t.runs, t.size);
+  for (std::size_t i = 0; i < t.runs.size(); ++i) {
+    if (!t.runs[i].arrow) continue;
+    const RunPlacement& p = placed[i];
+    const double y = t.baseline.y - (p.rise + p.top + kArrowGap * p.size);
+    const double left = t.baseline.x + p.x + 0.06 * p.size;
+    const double right = t.baseline.x + p.x + p.width - 0.02 * p.size;
+    const double head = kArrowHead * p.size, half = kArrowHeadHalf * p.size;
+    Path shaft;
+    shaft.move_to({left, y}).line_to({right - head * 0.6, y});
+    canvas.path(shaft, Paint{StrokeStyle{colour, kArrowStroke * p.size, {}}, std::nullopt, 1});
+    Path tip;
+    tip.move_to({right, y}).line_to({right - head, y - half}).line_to({right - head, y + half}).close();
+    canvas.path(tip, Paint{std::nullopt, colour, 1});
+  }
+}
+
+void paint_page(Canvas& canvas, const LaidOutPage& page, const PageStyle& style) {
+  canvas.path(rectangle({0, 0, page.size.width_pt, page.size.height_pt}), Paint{std::nullopt, style.paper, 1});
+  if (!page.boxes.empty()) {
+    canvas.begin_group("boxes");
+    for (const PlacedBox& b : page.boxes) paint_box(canvas, b, style);
+    canvas.end_group();
+  }
+  if (!page.rules.empty()) {
+    canvas.begin_group("rules");
+    for (const PlacedRule& r : page.rules) {
+      Path p;
+      p.move_to(r.a).line_to(r.b);
+      canvas.path(p, Paint{StrokeStyle{style.ink(r.ink), r.width, {}}, std::nullopt, 1});
+    }
+    canvas.end_group();
+  }
+  for (const PlacedFigure& f : page.figures) {
+    if (f.scene == nullptr) continue;
+    canvas.begin_group("figure", "figure");
+    paint_scene(canvas, *f.scene, f.rect.x, f.rect.y, f.rect.width, style.scene);
+    canvas.end_group();
+  }
+  if (!page.texts.empty()) {
+    canvas.begin_group("text");
+    for (const PlacedText& t : page.texts) paint_text(canvas, t, style.ink(t.ink));
+    canvas.end_group();
+  }
+}
+
+}  // namespace epure::render
