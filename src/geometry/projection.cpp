@@ -22,25 +22,25 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   Projection p{};
   p.AB = B - A;
   p.AC = C - A;
-  double ab_length = norm(p.AB);
-  if (scale.negligible(ab_length)) throw DegenerateFigure("B", "degenerate segment, A = B");
-
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
-  const int e = std::ilogb(scale.value);
-  auto down = [e](Point2 q) { return Point2{std::scalbn(q.x, -e), std::scalbn(q.y, -e)}; };
-  const ExactVec2 AB = exact_difference(down(B), down(A)), AC = exact_difference(down(C), down(A));
+  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const ExactVec2 AB = exact_difference(times_pow2(B, -e), times_pow2(A, -e));
+  const ExactVec2 AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
+  const double ab_length = plain_norm(AB.hi);
+  if (Scale{times_pow2(scale.value, -e)}.negligible(ab_length))
+    throw DegenerateFigure("B", "degenerate segment, A = B");
 
   // (AC − t·AB)·AB = 0  =>  t = AB·AC / AB·AB, each product of the exact differences rounded
   // about once: t keeps its digits even when AC is nearly perpendicular to AB (t ≈ 0).
   const double ab_dot_ac = dot(AB, AC), ab_dot_ab = dot(AB, AB);
   p.t = ab_dot_ac / ab_dot_ab;
-  p.ab_dot_ac = std::scalbn(ab_dot_ac, 2 * e);
-  p.ab_dot_ab = std::scalbn(ab_dot_ab, 2 * e);
+  p.ab_dot_ac = times_pow2(ab_dot_ac, 2 * e);
+  p.ab_dot_ab = times_pow2(ab_dot_ab, 2 * e);
 
   // The data are decimal numbers rounded to doubles, each off by half an ulp: a t within a few
   // ε of ‖AC‖/‖AB‖ of 0 or 1 puts P on an end of the segment, as the figure meant.
-  Near near{kRoundoff * (norm(p.AC) / ab_length + 1)};
+  Near near{kRoundoff * (plain_norm(AC.hi) / ab_length + 1)};
   if (near.on(p.t, 0.0)) {
     p.t = 0.0;
     p.P = A;
@@ -49,8 +49,8 @@ Projection project(Point2 A, Point2 B, Point2 C) {
     p.P = B;
   } else {
     // A + t·AB with AB exact: one rounding per coordinate beyond t's own
-    p.P = {A.x + std::fma(p.t, p.AB.x, p.t * std::scalbn(AB.lo.x, e)),
-           A.y + std::fma(p.t, p.AB.y, p.t * std::scalbn(AB.lo.y, e))};
+    p.P = {A.x + std::fma(p.t, p.AB.x, p.t * times_pow2(AB.lo.x, e)),
+           A.y + std::fma(p.t, p.AB.y, p.t * times_pow2(AB.lo.y, e))};
   }
   p.position = p.t < 0 ? Position::before : p.t > 1 ? Position::after : Position::between;
   return p;

@@ -11,16 +11,6 @@
 
 namespace epure::geo::detail {
 
-// Powers of two move exponents only: exact, and they keep the squares below from overflowing
-// (a figure at 1e200) or underflowing (at 1e-200).
-inline Point2 scaled(Point2 p, int e) { return {std::scalbn(p.x, e), std::scalbn(p.y, e)}; }
-inline Point3 scaled(Point3 p, int e) {
-  return {std::scalbn(p.x, e), std::scalbn(p.y, e), std::scalbn(p.z, e)};
-}
-inline Vec2 scaled(Vec2 v, int e) { return {std::scalbn(v.x, e), std::scalbn(v.y, e)}; }
-inline Vec3 scaled(Vec3 v, int e) {
-  return {std::scalbn(v.x, e), std::scalbn(v.y, e), std::scalbn(v.z, e)};
-}
 inline double max_abs(Vec2 v) { return std::max(std::abs(v.x), std::abs(v.y)); }
 inline double max_abs(Vec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 inline double max_abs(Point2 p) { return max_abs(to_vec(p)); }
@@ -61,15 +51,15 @@ struct Offset3 {
 inline Offset3 offset_from_line(Vec3 u, double length_u, const ExactVec3& AC) {
   const Vec3 n = cross(as_exact(u), AC);  // ‖n‖ = ‖u‖·d
   // u × (AC × u) = ‖u‖²·AC − (u·AC)·u = ‖u‖²·w, and AC × u = −n
-  return {cross(n, u) / (length_u * length_u), norm(n) / length_u};
+  return {cross(n, u) / (length_u * length_u), plain_norm(n) / length_u};
 }
 
 template <class Result, class Hit, class Ray, class Point>
 Result intersect_ball(const Ray& ray, Point C, double r) {
   if (!(r > 0) || !std::isfinite(r)) throw DegenerateFigure("r", "must be > 0");
-  const double direction_length = norm(ray.direction);
-  if (!(direction_length > 0)) throw DegenerateFigure("u", "zero direction");
-  if (!std::isfinite(direction_length)) throw DegenerateFigure("u", "not a finite direction");
+  const double largest_u = max_abs(ray.direction);
+  if (!(largest_u > 0)) throw DegenerateFigure("u", "zero direction");
+  if (!std::isfinite(largest_u)) throw DegenerateFigure("u", "not a finite direction");
   const Point A = ray.origin;
 
   Result res{};
@@ -78,22 +68,22 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
   // The figure (A, C, r) brought near unit size by 2^-e and the direction by 2^-f: exact, and
   // every t below is in units of the scaled direction, t_world = t·2^(e−f).
   const int e = std::ilogb(std::max({max_abs(A), max_abs(C), r}));
-  const int f = std::ilogb(max_abs(ray.direction));
-  const auto u = scaled(ray.direction, -f);
-  const double rs = std::scalbn(r, -e);
-  const auto AC = exact_difference(scaled(C, -e), scaled(A, -e));
-  const double length_u = norm(u);
+  const int f = std::ilogb(largest_u);
+  const auto u = times_pow2(ray.direction, -f);
+  const double rs = times_pow2(r, -e);
+  const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
+  const double length_u = plain_norm(u);
   const double uu = length_u * length_u;
-  auto to_world_t = [&](double t) { return std::scalbn(t, e - f); };
+  auto to_world_t = [&](double t) { return times_pow2(t, e - f); };
 
-  const double ac = norm(AC.hi);
+  const double ac = plain_norm(AC.hi);
   // P = A + t_proj·u with (AC − t_proj·u)·u = 0
   const double t_proj = dot(as_exact(u), AC) / uu;
   res.t_proj = to_world_t(t_proj);
   res.P = A + res.t_proj * ray.direction;
   const auto offset = offset_from_line(u, length_u, AC);
   const double d = offset.d;
-  res.d2 = std::scalbn(d * d, 2 * e);
+  res.d2 = times_pow2(d * d, 2 * e);
 
   // AC and d are exact to a few ε of ‖AC‖: compare lengths with r within that.
   const Near near{kRoundoff * std::max(rs, ac)};
@@ -115,7 +105,7 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
   // rounding of tangency is tangent (PI = 0): the root of a rounding error is a far larger
   // error (an exact tangent whose u was rounded to unit length would get PI ≈ 1e-7·r).
   const double h = near.on(d, rs) ? 0.0 : std::sqrt((rs - d) * (rs + d));
-  res.half_chord = std::scalbn(h, e);
+  res.half_chord = times_pow2(h, e);
   const double h_param = h / length_u;
   // The roots t_proj ∓ h have the product c = (‖AC‖² − r²) / u·u. Each root is taken in the
   // form that does not cancel (the smaller one as c over the larger, when both are positive).
@@ -132,7 +122,7 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
   }
   // I − C = (t − t_proj)·u − w, of length r: no cancellation, whatever the size of AC.
   const auto radial = (along / length_u) * u - offset.w;
-  const double radial_length = norm(radial);
+  const double radial_length = plain_norm(radial);
   Hit hit{};
   hit.t = to_world_t(t);
   // I is A itself at t = 0; otherwise A + t·u or C + (I − C), whichever rounds less: the
@@ -140,7 +130,7 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
   const double from_a = max_abs(A) + std::abs(hit.t) * max_abs(ray.direction);
   const double from_c = max_abs(C) + r;
   if (!(t > 0)) hit.I = A;
-  else if (from_c < from_a) hit.I = C + scaled(radial, e);
+  else if (from_c < from_a) hit.I = C + times_pow2(radial, e);
   else hit.I = A + hit.t * ray.direction;
   hit.N = radial_length > 0 ? radial / radial_length : -1.0 * (AC.hi / ac);
   res.hit = hit;

@@ -10,6 +10,7 @@
 #include "geometry/degenerate.h"
 #include "geometry/exact.h"
 #include "geometry/tolerance.h"
+#include "geometry/vec.h"
 
 namespace epure::geo::detail {
 
@@ -51,8 +52,8 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A,
   // underflows whatever its length; t is found in units of it and returned as t·2^-f.
   const int f = std::ilogb(largest_u);
   std::array<double, Dim> u;
-  for (int k = 0; k < Dim; ++k) u[k] = std::scalbn(direction[k], -f);
-  largest_u = std::scalbn(largest_u, -f);
+  for (int k = 0; k < Dim; ++k) u[k] = times_pow2(direction[k], -f);
+  largest_u = times_pow2(largest_u, -f);
 
   // A's coordinates are data or carried from another frame (a few ε of |A| off): a coordinate
   // that close to ±1 is on that side.
@@ -85,7 +86,7 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A,
       }
     }
     res.I = point_at(*res.t, *res.face);
-    res.t = std::scalbn(*res.t, -f);
+    res.t = times_pow2(*res.t, -f);
     return res;
   }
 
@@ -107,7 +108,7 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A,
       res.I = I;
     }
   });
-  if (res.t) res.t = std::scalbn(*res.t, -f);
+  if (res.t) res.t = times_pow2(*res.t, -f);
   return res;
 }
 

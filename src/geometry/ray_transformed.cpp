@@ -54,20 +54,20 @@ RayTransformed<Canonical> carry_back(const Transform2& world, Point2 centre, con
 // same line through a point A' of it near the figure keeps the figure's digits (Box2D shifts to
 // a local origin likewise): A' − C = (A − C) + t0·u with A − C exact and one fma, so A' is on
 // the line to within ε of the figure's size. t0 stops 2·size short of the foot of C's
-// perpendicular, outside the figure's bounding circle (radius ≤ √2·size), so the first point
-// of the figure seen from A' is the one seen from A. The canonical solution from A (its frame,
-// its candidate sides) is kept for what it shows; only the hit is redone, and kept when it
-// agrees (the same side of the rectangle).
+// perpendicular, outside the figure's bounding circle (radius ≤ √2·size), so that the first
+// point of the figure seen from A' is the one seen from A. The canonical solution from A (its
+// frame, its candidate sides) is kept for what it shows; only the hit is redone, and kept when
+// it agrees (the same side of the rectangle).
 template <class Canonical, class Solve>
 void refine_from_nearby(RayTransformed<Canonical>& res, Point2 centre, double size, const Ray2& ray,
                         Solve solve) {
   if (!res.hit) return;
   // t_proj = u·AC / u·u in units of u, u rescaled by a power of two against overflow
   const int f = std::ilogb(max_abs(ray.direction));
-  const Vec2 u{std::scalbn(ray.direction.x, -f), std::scalbn(ray.direction.y, -f)};
+  const Vec2 u = times_pow2(ray.direction, -f);
   const ExactVec2 AC = exact_difference(centre, ray.origin);
-  const double length_u = norm(u);
-  const double t0 = std::scalbn((dot(as_exact(u), AC) / length_u - 2 * size) / length_u, -f);
+  const double length_u = plain_norm(u);
+  const double t0 = times_pow2((dot(as_exact(u), AC) / length_u - 2 * size) / length_u, -f);
   if (!(t0 > 0) || !(res.hit->t > t0)) return;  // near already: nothing to gain
   // A' − C = (A − C) + t0·u
   const Vec2 from_centre{std::fma(t0, ray.direction.x, -AC.hi.x) - AC.lo.x,

@@ -39,25 +39,26 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
   s.AB = B - A;
   s.CD = D - C;
   s.AC = C - A;
-  if (scale.negligible(norm(s.AB))) throw DegenerateFigure("B", "degenerate segment, A = B");
-  if (scale.negligible(norm(s.CD))) throw DegenerateFigure("D", "degenerate segment, C = D");
 
   // The parameters are ratios: computed on the figure brought near unit size by a power of two
   // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
-  const int e = std::ilogb(scale.value);
-  auto down = [e](Point2 p) { return Point2{std::scalbn(p.x, -e), std::scalbn(p.y, -e)}; };
+  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  auto down = [e](Point2 p) { return times_pow2(p, -e); };
   const ExactVec2 AB = exact_difference(down(B), down(A));
   const ExactVec2 CD = exact_difference(down(D), down(C));
   const ExactVec2 AC = exact_difference(down(C), down(A));
-  const double ab = norm(AB.hi), cd = norm(CD.hi), ac = norm(AC.hi);
+  const double ab = plain_norm(AB.hi), cd = plain_norm(CD.hi), ac = plain_norm(AC.hi);
+  const Scale unit_scale{times_pow2(scale.value, -e)};
+  if (unit_scale.negligible(ab)) throw DegenerateFigure("B", "degenerate segment, A = B");
+  if (unit_scale.negligible(cd)) throw DegenerateFigure("D", "degenerate segment, C = D");
 
   // Cross products of the exact differences, each rounded about once: nearly parallel lines
   // keep the digits of AB∧CD, and with them those of t_ab and t_cd.
   const double ab_cross_cd = cross(AB, CD);
   const double ac_cross_cd = cross(AC, CD), ac_cross_ab = cross(AC, AB);
-  s.ab_cross_cd = std::scalbn(ab_cross_cd, 2 * e);
-  s.ac_cross_cd = std::scalbn(ac_cross_cd, 2 * e);
-  s.ac_cross_ab = std::scalbn(ac_cross_ab, 2 * e);
+  s.ab_cross_cd = times_pow2(ab_cross_cd, 2 * e);
+  s.ac_cross_cd = times_pow2(ac_cross_cd, 2 * e);
+  s.ac_cross_ab = times_pow2(ac_cross_ab, 2 * e);
 
   // parallel: the sine of the angle between the lines is below the data's rounding
   if (std::abs(ab_cross_cd) <= kRoundoff * ab * cd) {
@@ -88,8 +89,8 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
   else if (t_cd >= 1.0) s.I = D;
   else {
     // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own
-    s.I = Point2{A.x + std::fma(t_ab, s.AB.x, t_ab * std::scalbn(AB.lo.x, e)),
-                 A.y + std::fma(t_ab, s.AB.y, t_ab * std::scalbn(AB.lo.y, e))};
+    s.I = Point2{A.x + std::fma(t_ab, s.AB.x, t_ab * times_pow2(AB.lo.x, e)),
+                 A.y + std::fma(t_ab, s.AB.y, t_ab * times_pow2(AB.lo.y, e))};
   }
   return s;
 }

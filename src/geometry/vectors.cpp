@@ -29,7 +29,7 @@ VectorPair compare_vectors(Vec2 u, Vec2 v) {
   // first would leave it an absolute error of ε). Exact power-of-two rescaling keeps the
   // products from overflowing or underflowing for extreme (even subnormal) vectors.
   const Vec2 us = rescaled(u), vs = rescaled(v);
-  const double lengths = norm(us) * norm(vs);
+  const double lengths = plain_norm(us) * plain_norm(vs);
   r.cos = std::clamp(dot(us, vs) / lengths, -1.0, 1.0);
   r.sin = std::clamp(cross(us, vs) / lengths, -1.0, 1.0);
   r.angle_deg = angle_degrees(r.cos, r.sin);

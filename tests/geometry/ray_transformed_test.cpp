@@ -432,7 +432,8 @@ TEST_CASE("geometry/ray_transformed: every branch") {
     }
   }
   SUBCASE("11. the canonical frame: T⁻¹ carries the ray, t names the same point") {
-    const Ray2 ray = Ray2::unit({-4, 1}, {3, -1});
+    // (A within two sizes of the figure: a ray from farther is solved again from nearby)
+    const Ray2 ray = Ray2::unit({-3, 1}, {3, -1});
     const RayEllipse e = intersect(ray, Ellipse{{0.2, 0.1}, 2, 0.5, 30});
     REQUIRE(e.canonical.hit.has_value());
     CHECK(exactly(e.canonical.hit->t, e.hit->t));
@@ -443,6 +444,13 @@ TEST_CASE("geometry/ray_transformed: every branch") {
     const Point2 Ac = e.to_world.inverse().apply(ray.origin);
     CHECK(e.canonical_ray.origin.x == T::within(Ac.x, 0, 8 * kEps * 4));
     CHECK(e.canonical_ray.origin.y == T::within(Ac.y, 0, 8 * kEps * 4));
+    // from farther: the canonical solution is still the one seen from A, the hit agrees with it
+    const Ray2 far = Ray2::unit({-40, 14}, {3, -1});
+    const RayEllipse f = intersect(far, Ellipse{{0.2, 0.1}, 2, 0.5, 30});
+    REQUIRE(f.canonical.hit.has_value());
+    CHECK(f.hit->t == T::within(f.canonical.hit->t, 4 * kEps, 0));
+    const Point2 Af = f.to_world.inverse().apply(far.origin);
+    CHECK(f.canonical_ray.origin.x == T::within(Af.x, 0, 8 * kEps * 40));
   }
 }
 
