@@ -51,13 +51,12 @@ struct Fragment {
   std::vector<PlacedText> texts;
 
   void text(std::vector<TextRun> runs, double x, double baseline, double size, Ink ink = Ink::text) {
-    const double width = text_width(runs, size);
-    texts.push_back({{x, baseline}, size, std::move(runs), ink, width});
+    texts.push_back({{x, baseline}, size, std::move(runs), ink});
   }
   // Right-aligned on `right`.
   void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
     const double width = text_width(runs, size);
-    texts.push_back({{right - width, baseline}, size, std::move(runs), ink, width});
+    texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
   }
 
   void move_into(LaidOutPage& page, double dy) {

@@ -41,7 +41,6 @@ struct PlacedText {
   double size = 10;  // font size, points
   std::vector<TextRun> runs;
   Ink ink = Ink::text;
-  double width = 0;  // advance width (text_width), which right-aligned texts were placed with
 };
 
 struct PlacedRule {
