@@ -368,9 +368,9 @@ class Result {
     return *this;
   }
   template <class Hit>
-  Result& hit(const std::optional<Hit>& h) {
+  Result& hit(const std::optional<Hit>& h, double length = 1) {
     boolean("hit", h.has_value());
-    if (h) number("t", h->t).point("I", h->I).point("N", h->N);
+    if (h) number("t", h->t * length).point("I", h->I).point("N", h->N);
     return *this;
   }
   void end() { w_.end_object(); }
@@ -410,9 +410,19 @@ void solve_segments(const Fields& f, Result& r) {
   if (s.I) r.point("I", *s.I);
 }
 
+// The ray as given, its direction only rescaled by a power of two (exact). Normalising it would
+// turn it by up to ε around A, which a figure 1e8 away sees as a shift of 1e-8, and an exact
+// tangent as a near one. The core's t is then in units of that direction: times its length
+// gives the distance the contract asks for.
+template <class Ray, class Point, class Vec>
+std::pair<Ray, double> raw_ray(Point A, Vec u) {
+  const Vec direction = geo::rescaled(u);
+  return {Ray{A, direction}, geo::norm(direction)};
+}
+
 template <class Round>
-void write_round(const Round& c, Result& r) {
-  r.number("t_proj", c.t_proj).number("d2", c.d2).boolean("inside", c.inside).hit(c.hit);
+void write_round(const Round& c, Result& r, double length) {
+  r.number("t_proj", c.t_proj * length).number("d2", c.d2).boolean("inside", c.inside).hit(c.hit, length);
   if (c.reason) r.string("reason", geo::to_string(*c.reason));
 }
 
@@ -422,13 +432,16 @@ void solve_ray_circle(const Fields& f, Result& r) {
   auto u = f.vec2("u");
   auto C = f.point2("C");
   double radius = f.number("r");
-  write_round(geo::intersect(geo::Ray2::unit(A, u), geo::Circle{C, radius}), r);
+  const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
+  write_round(geo::intersect(ray, geo::Circle{C, radius}), r, length);
 }
 
 void solve_ray_square(const Fields& f, Result& r) {
   auto A = f.point2("A");
-  auto s = geo::intersect_canonical_square(geo::Ray2::unit(A, f.vec2("u")));
-  r.faces(s.faces).boolean("inside", s.inside).hit(s.hit);
+  auto u = f.vec2("u");
+  const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
+  auto s = geo::intersect_canonical_square(ray);
+  r.faces(s.faces).boolean("inside", s.inside).hit(s.hit, length);
 }
 
 void solve_ray_ellipse(const Fields& f, Result& r) {
@@ -437,8 +450,9 @@ void solve_ray_ellipse(const Fields& f, Result& r) {
   auto C = f.point2("C");
   auto radii = f.numbers<2>("radii");
   double angle = f.number("angle");
-  auto e = geo::intersect(geo::Ray2::unit(A, u), geo::Ellipse{C, radii[0], radii[1], angle});
-  r.boolean("inside", e.inside).hit(e.hit);
+  const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
+  auto e = geo::intersect(ray, geo::Ellipse{C, radii[0], radii[1], angle});
+  r.boolean("inside", e.inside).hit(e.hit, length);
 }
 
 void solve_ray_rectangle(const Fields& f, Result& r) {
@@ -447,8 +461,9 @@ void solve_ray_rectangle(const Fields& f, Result& r) {
   auto C = f.point2("C");
   auto half = f.numbers<2>("half");
   double angle = f.number("angle");
-  auto e = geo::intersect(geo::Ray2::unit(A, u), geo::Rectangle{C, half[0], half[1], angle});
-  r.boolean("inside", e.inside).hit(e.hit);
+  const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
+  auto e = geo::intersect(ray, geo::Rectangle{C, half[0], half[1], angle});
+  r.boolean("inside", e.inside).hit(e.hit, length);
 }
 
 void solve_ray_sphere(const Fields& f, Result& r) {
@@ -456,13 +471,16 @@ void solve_ray_sphere(const Fields& f, Result& r) {
   auto u = f.vec3("u");
   auto C = f.point3("C");
   double radius = f.number("r");
-  write_round(geo::intersect(geo::Ray3::unit(A, u), geo::Sphere{C, radius}), r);
+  const auto [ray, length] = raw_ray<geo::Ray3>(A, u);
+  write_round(geo::intersect(ray, geo::Sphere{C, radius}), r, length);
 }
 
 void solve_ray_cube(const Fields& f, Result& r) {
   auto A = f.point3("A");
-  auto c = geo::intersect_canonical_cube(geo::Ray3::unit(A, f.vec3("u")));
-  r.faces(c.faces).boolean("inside", c.inside).hit(c.hit);
+  auto u = f.vec3("u");
+  const auto [ray, length] = raw_ray<geo::Ray3>(A, u);
+  auto c = geo::intersect_canonical_cube(ray);
+  r.faces(c.faces).boolean("inside", c.inside).hit(c.hit, length);
 }
 
 using Solver = void (*)(const Fields&, Result&);
