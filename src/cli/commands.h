@@ -9,5 +9,7 @@ namespace epure::cli {
 void add_solve_command(CLI::App& app, int& status);
 // Registers `epure generate`.
 void add_generate_command(CLI::App& app, int& status);
+// Registers `epure grade`.
+void add_grade_command(CLI::App& app, int& status);
 
 }  // namespace epure::cli

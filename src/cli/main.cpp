@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int status = 0;
   epure::cli::add_generate_command(app, status);
+  epure::cli::add_grade_command(app, status);
   epure::cli::add_solve_command(app, status);
   try {
     app.parse(argc, argv);

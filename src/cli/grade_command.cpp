@@ -1,0 +1,222 @@
+// `epure grade`: marks a class's answers (a spreadsheet's CSV export, or JSON) against the key
+// of their worksheet set, and writes the marks, the class statistics and a feedback sheet for
+// every student. Exit status: 0 when every row and value could be read, 1 when some could not
+// (each said on stderr with its file and line), 2 when nothing could be graded.
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "cli/commands.h"
+#include "exercises/spec.h"
+#include "grading/answer_key.h"
+#include "grading/answer_reading.h"
+#include "grading/answer_source.h"
+#include "grading/feedback_sheet.h"
+#include "grading/histogram.h"
+#include "grading/report_csv.h"
+#include "grading/report_json.h"
+#include "grading/session.h"
+#include "grading/summary_text.h"
+#include "grading/words.h"
+#include "output/atomic_file.h"
+
+#ifndef EPURE_VERSION
+#define EPURE_VERSION "0.0.0"
+#endif
+
+namespace epure::cli {
+
+namespace {
+
+using namespace epure::grading;
+
+struct GradeCliOptions {
+  std::string key_file;
+  std::string spec_file;
+  std::string answers;
+  std::string report;
+  std::string json;
+  std::string feedback;
+  std::string histogram;
+  std::string language;
+  std::string delimiter;
+  bool follow_through = false;
+  bool no_follow_through = false;
+  bool quiet = false;
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The first pass over the answers: how many rows carry each sheet (two submissions of one
+// sheet are flagged on both rows), and the ids to rebuild under --spec.
+class SheetCounter final : public RowHandler {
+ public:
+  explicit SheetCounter(const AnswerKey* key) : key_(key) {}
+  void header(const std::vector<std::string>& names, int) override {
+    column_ = -1;
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const auto w = read_word(trim_cell(names[c]));
+      if (w && *w == "sheet") {
+        column_ = static_cast<int>(c);
+        break;
+      }
+    }
+  }
+  void row(const AnswerRow& r) override {
+    if (column_ < 0 || static_cast<std::size_t>(column_) >= r.cells.size()) return;
+    const std::string_view typed = trim_cell(r.cells[static_cast<std::size_t>(column_)]);
+    if (typed.empty()) return;
+    if (key_ && key_->find(typed)) {
+      ++counts[std::string(typed)];
+      return;
+    }
+    const auto parsed = parse_sheet_id(typed);
+    if (!parsed.id) return;
+    auto [it, fresh] = counts.emplace(parsed.id->str(), 0);
+    ++it->second;
+    if (fresh) ids.push_back(*parsed.id);
+  }
+
+  std::unordered_map<std::string, int> counts;
+  std::vector<SheetId> ids;
+
+ private:
+  const AnswerKey* key_;
+  int column_ = -1;
+};
+
+std::optional<char> delimiter_of(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  if (name == "tab" || name == "\\t") return '\t';
+  return name[0];
+}
+
+int run_grade(const GradeCliOptions& o) {
+  const auto delimiter = delimiter_of(o.delimiter);
+  // the key: key.json, or rebuilt from the spec for the ids the answers name
+  std::optional<AnswerKey> key;
+  if (!o.key_file.empty()) key = read_key_json(read_text(o.key_file), o.key_file);
+  SheetCounter counter(key ? &*key : nullptr);
+  read_answers(o.answers, counter, delimiter);
+  if (!key) {
+    const WorksheetSpec spec =
+        o.spec_file == "builtin" ? builtin_spec() : parse_spec(read_text(o.spec_file), o.spec_file);
+    key = key_from_spec(spec, counter.ids, EPURE_VERSION);
+    if (key->sheets().empty()) {
+      fmt::print(stderr, "epure grade: {}: no sheet id in the answers could be rebuilt from {}\n", o.answers, o.spec_file);
+      for (const auto& [id, why] : key->refused()) fmt::print(stderr, "  {}: {}\n", id, why);
+      return 2;
+    }
+  }
+
+  SessionOptions options;
+  options.answers_name = o.answers;
+  if (o.follow_through) options.follow_through = true;
+  if (o.no_follow_through) options.follow_through = false;
+  options.language = o.language;
+  options.sheet_counts = std::move(counter.counts);
+  GradingSession session(*key, std::move(options));
+  if (key->info.draw_version != kDrawVersion)
+    session.problem(0, fmt::format("{} was written by epure {} (draw version {}); this is epure {} (draw version {}): "
+                                   "answers are marked with the key's own values and rules, but its sheets cannot be "
+                                   "redrawn on feedback sheets",
+                                   key->info.source, key->info.epure_version, key->info.draw_version, EPURE_VERSION,
+                                   kDrawVersion),
+                    false, "version");
+  else if (key->info.epure_version != EPURE_VERSION)
+    session.problem(0, fmt::format("{} was written by epure {}, this is epure {} (same draw version: the same sheets)",
+                                   key->info.source, key->info.epure_version, EPURE_VERSION),
+                    false, "version");
+
+  const std::string language = o.language.empty() ? key->info.language : o.language;
+  const FeedbackText text(language, key->info.decimals);
+  // the report in the answers' own dialect: peek at it through a tiny reader
+  std::optional<CsvReport> report;
+  std::optional<JsonReport> json;
+  std::optional<FeedbackSheets> sheets;
+  if (!o.report.empty()) {
+    SourceInfo dialect;
+    {
+      struct Nothing final : RowHandler {
+        void header(const std::vector<std::string>&, int) override {}
+        void row(const AnswerRow&) override {}
+      } nothing;
+      // a CSV's dialect is known after its header: reading the file again is the price of
+      // writing the report as the teacher's spreadsheet wrote the answers
+      dialect = read_answers(o.answers, nothing, delimiter);
+    }
+    const bool csv = dialect.format == "csv";
+    report.emplace(o.report, *key,
+                   CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf});
+    session.add_sink(*report);
+  }
+  if (!o.json.empty()) {
+    json.emplace(o.json, *key, text, o.answers, session.follow_through());
+    session.add_sink(*json);
+  }
+  if (!o.feedback.empty()) {
+    sheets.emplace(o.feedback, *key, text);
+    session.add_sink(*sheets);
+  }
+  const bool rows_on_stdout = o.report.empty() && o.json.empty();
+  TextSummary summary(stdout, *key, text, rows_on_stdout);
+  if (!o.quiet || rows_on_stdout) session.add_sink(summary);
+
+  const SourceInfo info = read_answers(o.answers, session, delimiter);
+  const Outcome& outcome = session.finish(info);
+  if (!o.histogram.empty()) output::write_file_atomically(o.histogram, histogram_svg(session.statistics(), text));
+  if (sheets && !o.quiet)
+    fmt::print("{} feedback sheets and class.svg in {}/\n", sheets->written(), o.feedback);
+  return outcome.exit_status();
+}
+
+}  // namespace
+
+void add_grade_command(CLI::App& app, int& status) {
+  auto o = std::make_shared<GradeCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "grade", "Mark students' answers (CSV or JSON) against the key: reports, statistics, feedback sheets");
+  auto* key = cmd->add_option("--key,-k", o->key_file, "The set's key.json (from epure generate)")->check(CLI::ExistingFile);
+  auto* spec = cmd->add_option("--spec", o->spec_file,
+                               "Instead of --key: the set's spec (TOML, or 'builtin'); keys rebuilt from the sheet ids");
+  key->excludes(spec);
+  cmd->add_option("--answers,-a", o->answers,
+                  "Answers: CSV with a header row (a 'sheet' column, optional 'student', one column per question id) "
+                  "or JSON (an array of objects, or one object per line)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--report,-r", o->report, "Write one CSV row per submission: sheet, student, score, max, points per question");
+  cmd->add_option("--json", o->json, "Write every mark as JSON: expected, given, verdict, points, feedback, mistake code");
+  cmd->add_option("--feedback", o->feedback, "Write a feedback sheet per student (SVG) and class.svg into this directory");
+  cmd->add_option("--histogram", o->histogram, "Write the class's score histogram (SVG)");
+  auto* ft = cmd->add_flag("--follow-through", o->follow_through, "Credit answers right from a wrong earlier answer (overrides the spec)");
+  auto* nft = cmd->add_flag("--no-follow-through", o->no_follow_through, "Do not credit follow-through (overrides the spec)");
+  ft->excludes(nft);
+  cmd->add_option("--lang", o->language, "Language of the feedback (default: the key's)")->check(CLI::IsMember({"en", "fr"}));
+  cmd->add_option("--delimiter", o->delimiter, "CSV delimiter (default: detected among , ; and tab)")
+      ->check(CLI::IsMember({",", ";", "tab", "\\t"}));
+  cmd->add_flag("--quiet,-q", o->quiet, "No summary on stdout when a report is written");
+  cmd->callback([o, &status] {
+    if (o->key_file.empty() && o->spec_file.empty()) {
+      fmt::print(stderr, "epure grade: give the set's key (--key key.json) or its spec (--spec FILE)\n");
+      status = 2;
+      return;
+    }
+    try {
+      status = run_grade(*o);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "epure grade: {}\n", e.what());
+      status = 2;
+    }
+  });
+}
+
+}  // namespace epure::cli

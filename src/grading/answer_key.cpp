@@ -1,0 +1,264 @@
+#include "grading/answer_key.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "exercises/key_json.h"
+#include "exercises/worksheet.h"
+#include "grading/kind_grader.h"
+
+namespace epure::grading {
+
+using nlohmann::json;
+
+namespace {
+
+// Where in the key a value sits, for messages: "key.json: sheet 1000-0001-000X: question 2.t".
+struct Where {
+  std::string_view source;
+  std::string sheet;
+  std::string item;
+
+  [[noreturn]] void fail(std::string_view why) const {
+    std::string at(source);
+    if (!sheet.empty()) at += fmt::format(": sheet {}", sheet);
+    if (!item.empty()) at += fmt::format(": {}", item);
+    throw KeyError(fmt::format("{}: {}", at, why));
+  }
+};
+
+const json& member(const json& object, const char* name, const Where& where) {
+  if (!object.is_object()) where.fail("expected an object");
+  auto it = object.find(name);
+  if (it == object.end()) where.fail(fmt::format("missing '{}'", name));
+  return *it;
+}
+
+std::string string_member(const json& object, const char* name, const Where& where) {
+  const json& v = member(object, name, where);
+  if (!v.is_string()) where.fail(fmt::format("'{}' must be a string", name));
+  return v.get<std::string>();
+}
+
+double number_member(const json& object, const char* name, const Where& where) {
+  const json& v = member(object, name, where);
+  if (!v.is_number()) where.fail(fmt::format("'{}' must be a number", name));
+  return v.get<double>();
+}
+
+ToleranceRule read_rule(const json& q, const Where& where) {
+  const json& t = member(q, "tolerance", where);
+  ToleranceRule r;
+  const std::string rule = string_member(t, "rule", where);
+  if (rule == "exact") r.kind = ToleranceRule::Kind::exact;
+  else if (rule == "isclose") r.kind = ToleranceRule::Kind::isclose;
+  else if (rule == "distance") r.kind = ToleranceRule::Kind::distance;
+  else where.fail(fmt::format("unknown tolerance rule '{}' (exact, isclose or distance)", rule));
+  if (r.kind == ToleranceRule::Kind::isclose) r.rel = number_member(t, "rel", where);
+  if (r.kind != ToleranceRule::Kind::exact) r.abs = number_member(t, "abs", where);
+  if (!(r.rel >= 0 && r.abs >= 0)) where.fail("tolerances must be ≥ 0");
+  if (auto why = t.find("why"); why != t.end() && why->is_string()) r.why = why->get<std::string>();
+  return r;
+}
+
+QuestionKey read_question(const json& q, int n, Where where) {
+  QuestionKey k;
+  k.id = string_member(q, "id", where);
+  where.item = fmt::format("question {}", k.id);
+  const std::string prefix = fmt::format("{}.", n);
+  if (k.id.rfind(prefix, 0) != 0 || k.id.size() == prefix.size())
+    where.fail(fmt::format("its id should start with '{}' (the exercise's number)", prefix));
+  k.field = k.id.substr(prefix.size());
+  const json& e = member(q, "expected", where);
+  if (e.is_number()) {
+    k.type = AnswerType::number;
+    k.number = e.get<double>();
+  } else if (e.is_boolean()) {
+    k.type = AnswerType::boolean;
+    k.boolean = e.get<bool>();
+  } else if (e.is_string()) {
+    k.type = AnswerType::word;
+    k.word = e.get<std::string>();
+  } else if (e.is_array()) {
+    k.type = AnswerType::faces;
+    for (const auto& f : e) {
+      const FaceBits bit = f.is_string() ? face_bit(f.get<std::string>()) : FaceBits(0);
+      if (!bit) where.fail(fmt::format("'expected' lists {}, not a face name (+x, -y, …)", f.dump()));
+      k.faces |= bit;
+    }
+  } else {
+    where.fail("'expected' must be a number, a boolean, a string or a list of faces");
+  }
+  if (auto ex = q.find("exact"); ex != q.end() && ex->is_string()) k.exact = ex->get<std::string>();
+  k.rule = read_rule(q, where);
+  k.points = number_member(q, "points", where);
+  if (!(k.points >= 0)) where.fail("'points' must be ≥ 0");
+  if (auto p = q.find("point"); p != q.end()) {
+    if (!p->is_string()) where.fail("'point' must be a string");
+    k.point = p->get<std::string>();
+  }
+  return k;
+}
+
+}  // namespace
+
+int ExerciseKey::find(std::string_view field) const {
+  for (std::size_t i = 0; i < questions.size(); ++i)
+    if (questions[i].field == field) return static_cast<int>(i);
+  return -1;
+}
+
+const SheetKey* AnswerKey::find(std::string_view canonical_id) const {
+  auto it = by_id_.find(std::string(canonical_id));
+  return it == by_id_.end() ? nullptr : &sheets_[it->second];
+}
+
+void AnswerKey::add(SheetKey sheet) {
+  // Merge this sheet's ids into the report order: a new id goes right after the id asked
+  // before it on this sheet (or first among its exercise's), so every exercise keeps the
+  // order its sheets ask in, whatever branch each sheet drew.
+  for (const auto& e : sheet.exercises) {
+    std::string previous;
+    for (const auto& q : e.questions) {
+      auto it = std::find(question_ids_.begin(), question_ids_.end(), q.id);
+      if (it == question_ids_.end()) {
+        auto at = question_ids_.end();
+        if (!previous.empty()) {
+          at = std::find(question_ids_.begin(), question_ids_.end(), previous) + 1;
+        } else {
+          // before the first id of a later exercise
+          at = std::find_if(question_ids_.begin(), question_ids_.end(), [&](const std::string& id) {
+            return std::stoi(id) > e.n;
+          });
+        }
+        question_ids_.insert(at, q.id);
+      }
+      previous = q.id;
+    }
+  }
+  const bool fresh = by_id_.emplace(sheet.id, sheets_.size()).second;
+  if (!fresh) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
+  sheets_.push_back(std::move(sheet));
+}
+
+SheetKey read_sheet_json(const json& s, std::string_view source) {
+  Where where{source, {}, {}};
+  SheetKey sheet;
+  const std::string id_text = string_member(s, "id", where);
+  where.sheet = id_text;
+  const auto parsed = parse_sheet_id(id_text);
+  if (!parsed.id) where.fail(fmt::format("not a sheet id: {}", parsed.error.message));
+  sheet.sheet = *parsed.id;
+  sheet.id = parsed.id->str();
+  const json& exercises = member(s, "exercises", where);
+  if (!exercises.is_array()) where.fail("'exercises' must be an array");
+  for (const auto& e : exercises) {
+    where.item.clear();
+    ExerciseKey ex;
+    const double n = number_member(e, "n", where);
+    ex.n = static_cast<int>(n);
+    where.item = fmt::format("exercise {}", ex.n);
+    ex.kind = string_member(e, "kind", where);
+    if (auto b = e.find("branch"); b != e.end() && b->is_string()) ex.branch = b->get<std::string>();
+    ex.instance = member(e, "instance", where);
+    ex.solution = member(e, "solution", where);
+    const json& qs = member(e, "questions", where);
+    if (!qs.is_array()) where.fail("'questions' must be an array");
+    for (const auto& q : qs) ex.questions.push_back(read_question(q, ex.n, where));
+    ex.grader = find_grader(ex.kind);
+    if (ex.grader) {
+      try {
+        ex.prepared = ex.grader->prepare(ex.instance);
+      } catch (const std::exception& err) {
+        where.fail(fmt::format("instance: {}", err.what()));
+      }
+    }
+    for (const auto& q : ex.questions) sheet.max_points += q.points;
+    sheet.exercises.push_back(std::move(ex));
+  }
+  return sheet;
+}
+
+AnswerKey read_key_json(std::string_view text, std::string_view source) {
+  AnswerKey key;
+  key.info.source = std::string(source);
+  bool in_sheets = false;
+  // Each sheet is converted as soon as its object closes, and dropped from the tree.
+  auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth == 1 && event == json::parse_event_t::key) in_sheets = parsed == "sheets";
+    if (depth == 2 && in_sheets && event == json::parse_event_t::object_end) {
+      key.add(read_sheet_json(parsed, source));
+      return false;
+    }
+    return true;
+  };
+  json root;
+  try {
+    root = json::parse(text.begin(), text.end(), callback);
+  } catch (const json::parse_error& e) {
+    throw KeyError(fmt::format("{}: not valid JSON (byte {}): {}", source, e.byte, e.what()));
+  }
+  Where where{source, {}, {}};
+  if (!root.is_object()) where.fail("expected one JSON object, as `epure generate` writes key.json");
+  const json& spec = member(root, "spec", where);
+  where.item = "spec";
+  key.info.title = spec.value("title", std::string{});
+  key.info.language = spec.value("language", std::string("en"));
+  key.info.decimals = spec.value("decimals", 2);
+  key.info.follow_through = spec.value("follow_through", true);
+  key.info.spec_text = spec.value("text", std::string{});
+  key.info.spec_source = spec.value("source", std::string{});
+  where.item.clear();
+  const json& seed = member(root, "seed", where);
+  if (!seed.is_number_unsigned() && !seed.is_number_integer()) where.fail("'seed' must be an integer");
+  key.info.seed = seed.get<std::uint64_t>();
+  const json& version = member(root, "version", where);
+  where.item = "version";
+  key.info.epure_version = string_member(version, "epure", where);
+  key.info.draw_version = static_cast<int>(number_member(version, "draw", where));
+  where.item.clear();
+  if (!root.contains("sheets")) where.fail("missing 'sheets'");
+  if (key.sheets().empty()) where.fail("the key has no sheets");
+  return key;
+}
+
+AnswerKey key_from_spec(const WorksheetSpec& spec, const std::vector<SheetId>& ids,
+                        std::string_view epure_version) {
+  AnswerKey key;
+  key.info.source = spec.source;
+  key.info.title = spec.title;
+  key.info.language = spec.language;
+  key.info.decimals = spec.decimals;
+  key.info.follow_through = spec.follow_through;
+  key.info.spec_text = spec.text;
+  key.info.spec_source = spec.source;
+  key.info.epure_version = std::string(epure_version);
+  key.info.draw_version = kDrawVersion;
+
+  std::vector<SheetId> sorted = ids;
+  std::sort(sorted.begin(), sorted.end(), [](const SheetId& a, const SheetId& b) {
+    return std::tie(a.seed, a.index) < std::tie(b.seed, b.index);
+  });
+  if (!sorted.empty()) key.info.seed = sorted.front().seed;
+  std::optional<WorksheetSet> set;
+  fmt::memory_buffer buffer;
+  for (const SheetId& id : sorted) {
+    if (id.version != kDrawVersion) {
+      key.refuse(id.str(), fmt::format("drawn by generator version {}; this epure draws version {} and "
+                                       "would rebuild a different sheet: grade it with key.json or with "
+                                       "the epure that made it",
+                                       id.version, kDrawVersion));
+      continue;
+    }
+    if (key.find(id.str())) continue;
+    if (!set || set->seed() != id.seed) set.emplace(spec, id.seed);
+    const Sheet sheet = set->rebuild(id);
+    buffer.clear();
+    KeyJson::sheet(buffer, sheet, true);
+    key.add(read_sheet_json(json::parse(std::string_view(buffer.data(), buffer.size())), spec.source));
+  }
+  return key;
+}
+
+}  // namespace epure::grading

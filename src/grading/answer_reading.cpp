@@ -1,0 +1,152 @@
+#include "grading/answer_reading.h"
+
+#include <algorithm>
+
+#include "grading/expression.h"
+#include "grading/words.h"
+
+namespace epure::grading {
+
+namespace {
+
+bool is_space_at(std::string_view s, std::size_t i, std::size_t& width) {
+  const char c = s[i];
+  if (c == ' ' || c == '\t' || c == '\r' || c == '\n') return width = 1, true;
+  if (c == '\xc2' && i + 1 < s.size() && s[i + 1] == '\xa0') return width = 2, true;
+  if (c == '\xe2' && i + 2 < s.size() && s[i + 1] == '\x80' && (s[i + 2] == '\xaf' || s[i + 2] == '\x89'))
+    return width = 3, true;
+  return false;
+}
+
+// yes/no in the spellings most cells use, without building a folded string.
+int fast_boolean(std::string_view s) {
+  if (s.size() > 5) return -1;
+  char b[6];
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    char c = s[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    b[i] = c;
+  }
+  const std::string_view w(b, s.size());
+  if (w == "yes" || w == "true" || w == "1" || w == "oui") return 1;
+  if (w == "no" || w == "false" || w == "0" || w == "non") return 0;
+  return -1;
+}
+
+Given unreadable(std::string_view raw, std::string_view why) {
+  Given g;
+  g.state = Given::State::unreadable;
+  g.raw = raw;
+  g.why = why;
+  return g;
+}
+
+}  // namespace
+
+std::string_view trim_cell(std::string_view s) {
+  std::size_t w = 0;
+  while (!s.empty() && is_space_at(s, 0, w)) s.remove_prefix(w);
+  // from the end: the last byte of a no-break space is 0xA0 / 0xAF / 0x89
+  for (;;) {
+    if (s.empty()) break;
+    const char c = s.back();
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      s.remove_suffix(1);
+    } else if (s.size() >= 2 && s.substr(s.size() - 2) == "\u00a0") {
+      s.remove_suffix(2);
+    } else if (s.size() >= 3 && (s.substr(s.size() - 3) == "\u202f" || s.substr(s.size() - 3) == "\u2009")) {
+      s.remove_suffix(3);
+    } else {
+      break;
+    }
+  }
+  return s;
+}
+
+bool read_faces(std::string_view text, FaceBits& out) {
+  out = 0;
+  if (auto w = read_word(text); w && *w == "none") return true;
+  const std::string s = fold_word(text);
+  std::size_t i = 0;
+  bool any = false;
+  while (i < s.size()) {
+    const char c = s[i];
+    if (c == ' ' || c == ',' || c == ';' || c == '/' || c == '|' || c == '&' || c == '{' || c == '}' ||
+        c == '[' || c == ']' || c == '(' || c == ')') {
+      ++i;
+      continue;
+    }
+    if (s.compare(i, 4, "and ") == 0 || s.compare(i, 3, "et ") == 0) {
+      i += s[i] == 'a' ? 4 : 3;
+      continue;
+    }
+    int sign = 0;
+    if (c == '+') sign = 1, ++i;
+    else if (c == '-') sign = -1, ++i;
+    else if (s.compare(i, 3, "\u2212") == 0) sign = -1, i += 3;
+    while (i < s.size() && s[i] == ' ') ++i;
+    if (i >= s.size()) return false;
+    const char axis = s[i];
+    if (axis != 'x' && axis != 'y' && axis != 'z') return false;
+    ++i;
+    if (sign == 0) {
+      // "x=1", "x = -1": the side's equation
+      while (i < s.size() && s[i] == ' ') ++i;
+      if (i >= s.size() || s[i] != '=') return false;
+      ++i;
+      while (i < s.size() && s[i] == ' ') ++i;
+      if (i < s.size() && s[i] == '+') ++i;
+      if (s.compare(i, 1, "1") == 0) sign = 1, i += 1;
+      else if (s.compare(i, 2, "-1") == 0) sign = -1, i += 2;
+      else if (s.compare(i, 4, "\u22121") == 0) sign = -1, i += 4;
+      else return false;
+    }
+    const std::string name{sign > 0 ? '+' : '-', axis};
+    out |= face_bit(name);
+    any = true;
+  }
+  return any;
+}
+
+Given read_answer(std::string_view cell, AnswerType type) {
+  const std::string_view s = trim_cell(cell);
+  Given g;
+  g.raw = s;
+  if (s.empty()) return g;  // not answered
+  switch (type) {
+    case AnswerType::number: {
+      const ParsedNumber p = parse_number(s);
+      if (!p.ok) return unreadable(s, p.why);
+      g.number = p.value;
+      break;
+    }
+    case AnswerType::boolean: {
+      int b = fast_boolean(s);
+      if (b < 0) {
+        const auto w = read_word(s);
+        if (w && *w == "true") b = 1;
+        else if (w && *w == "false") b = 0;
+        else return unreadable(s, "boolean");
+      }
+      g.boolean = b == 1;
+      break;
+    }
+    case AnswerType::word: {
+      const auto w = read_word(s);
+      static constexpr std::string_view kChoices[] = {"before",  "between",  "after",     "intersects", "outside",
+                                                      "parallel", "collinear", "behind", "miss"};
+      if (!w || std::find(std::begin(kChoices), std::end(kChoices), *w) == std::end(kChoices))
+        return unreadable(s, "word");
+      g.word = *w;
+      break;
+    }
+    case AnswerType::faces: {
+      if (!read_faces(s, g.faces)) return unreadable(s, "faces");
+      break;
+    }
+  }
+  g.state = Given::State::value;
+  return g;
+}
+
+}  // namespace epure::grading

@@ -1,0 +1,21 @@
+#pragma once
+// One cell read for its question's type: a number (expression.h), a yes/no, a word (a position
+// or a reason), or a set of faces. An empty cell is "not answered"; a cell that cannot be read
+// as the type is "unreadable", with the reason's code (templates: grading.unreadable.<code>).
+#include <string_view>
+
+#include "grading/answer_key.h"
+#include "grading/marks.h"
+
+namespace epure::grading {
+
+// Surrounding spaces (ASCII and no-break) removed.
+std::string_view trim_cell(std::string_view cell);
+
+// Faces as students list them: "+x -y", "-y;+x", "+x,+y", "x=1 y=-1", "none" / "aucune" / "∅".
+// Every face needs its sign. Returns false for anything else.
+bool read_faces(std::string_view text, FaceBits& out);
+
+Given read_answer(std::string_view cell, AnswerType type);
+
+}  // namespace epure::grading

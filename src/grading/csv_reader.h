@@ -1,0 +1,70 @@
+#pragma once
+// CSV as spreadsheets export it, streamed: UTF-8 with or without a byte-order mark, CRLF, LF or
+// CR line ends, RFC 4180 quoting (cells with delimiters, quotes doubled, line breaks inside
+// quotes), and the delimiter detected from the header line among comma, semicolon and tab.
+// Lenient where exporters are: a quote inside an unquoted cell is a plain character, text
+// after a closing quote is kept, an unclosed quote runs to the end of the file; each of these
+// is reported with the record, never silently.
+//
+// Hand-written rather than libcsv (Debian's libcsv-dev): measured on a 47-column, 200,000-row
+// export, libcsv alone takes 0.56 s (356,000 rows/s), most of grading's whole budget of
+// 200,000 rows/s, and its callbacks give no position while every problem here must name its
+// line. This reader finds lines with memchr and splits quote-free lines (nearly all of them)
+// without looking at each byte twice; tests/cli/grade_csv.sh compares it with Python's csv module.
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace epure::grading {
+
+struct CsvRecord {
+  int line = 0;       // physical line where the record starts, 1-based
+  int last_line = 0;  // where it ends (a quoted cell may span lines)
+  std::vector<std::string_view> cells;  // valid until the next call to next()
+  std::string_view problem;  // "unclosed_quote", "text_after_quote", or empty
+};
+
+class CsvReader {
+ public:
+  // Reads a file. Throws std::runtime_error naming it when it cannot be opened, or when it is
+  // UTF-16 (a spreadsheet's "Unicode text": save as "CSV UTF-8" instead).
+  explicit CsvReader(const std::filesystem::path& path, std::optional<char> delimiter = std::nullopt);
+  // Reads text held in memory (tests, JSON-free pipes).
+  static CsvReader from_text(std::string text, std::optional<char> delimiter = std::nullopt);
+  ~CsvReader();
+  CsvReader(CsvReader&&) noexcept;
+  CsvReader& operator=(CsvReader&&) = delete;
+  CsvReader(const CsvReader&) = delete;
+
+  // The next non-blank record; false at the end of the input. Blank lines are skipped (and
+  // counted in blank_lines()).
+  bool next(CsvRecord& record);
+
+  char delimiter() const { return delimiter_; }
+  bool had_bom() const { return bom_; }
+  bool crlf() const { return crlf_; }
+  int blank_lines() const { return blank_lines_; }
+
+ private:
+  CsvReader() = default;
+  void start(std::optional<char> delimiter);
+  bool fill();  // reads more; false at end of file
+  bool find_record(std::size_t& end, std::size_t& next, bool& quoted, bool& unclosed);
+  void split(std::size_t begin, std::size_t end, bool quoted, CsvRecord& record);
+
+  std::FILE* file_ = nullptr;
+  std::vector<char> buf_;
+  std::size_t begin_ = 0, end_ = 0;
+  bool eof_ = false;
+  char newline_ = '\n';
+  char delimiter_ = ',';
+  bool bom_ = false;
+  bool crlf_ = false;
+  int line_ = 1;
+  int blank_lines_ = 0;
+};
+
+}  // namespace epure::grading

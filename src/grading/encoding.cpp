@@ -1,0 +1,51 @@
+#include "grading/encoding.h"
+
+namespace epure::grading {
+
+bool valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
+    int extra = 0;
+    if (c >= 0xc2 && c <= 0xdf) extra = 1;
+    else if (c >= 0xe0 && c <= 0xef) extra = 2;
+    else if (c >= 0xf0 && c <= 0xf4) extra = 3;
+    else return false;
+    if (i + extra >= s.size()) return false;
+    for (int k = 1; k <= extra; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+    i += 1 + extra;
+  }
+  return true;
+}
+
+std::string cp1252_to_utf8(std::string_view s) {
+  // 0x80–0x9F, where Windows-1252 differs from Latin-1
+  static constexpr char16_t kHigh[32] = {
+      0x20ac, 0xfffd, 0x201a, 0x0192, 0x201e, 0x2026, 0x2020, 0x2021, 0x02c6, 0x2030, 0x0160,
+      0x2039, 0x0152, 0xfffd, 0x017d, 0xfffd, 0xfffd, 0x2018, 0x2019, 0x201c, 0x201d, 0x2022,
+      0x2013, 0x2014, 0x02dc, 0x2122, 0x0161, 0x203a, 0x0153, 0xfffd, 0x017e, 0x0178};
+  std::string out;
+  out.reserve(s.size() + 8);
+  for (char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    char16_t u = c < 0x80 ? c : c < 0xa0 ? kHigh[c - 0x80] : c;
+    if (u < 0x80) {
+      out.push_back(static_cast<char>(u));
+    } else if (u < 0x800) {
+      out.push_back(static_cast<char>(0xc0 | (u >> 6)));
+      out.push_back(static_cast<char>(0x80 | (u & 0x3f)));
+    } else {
+      out.push_back(static_cast<char>(0xe0 | (u >> 12)));
+      out.push_back(static_cast<char>(0x80 | ((u >> 6) & 0x3f)));
+      out.push_back(static_cast<char>(0x80 | (u & 0x3f)));
+    }
+  }
+  return out;
+}
+
+}  // namespace epure::grading

@@ -1,0 +1,209 @@
+#include "grading/expression.h"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+namespace epure::grading {
+
+namespace {
+
+// UTF-8 spellings the parser knows.
+constexpr std::string_view kMinus = "\u2212", kTimes = "\u00d7", kDot = "\u00b7", kDivide = "\u00f7",
+                           kRoot = "\u221a", kPi = "\u03c0", kSquared = "\u00b2", kAbout = "\u2248",
+                           kNbsp = "\u00a0", kNarrowNbsp = "\u202f", kThinSpace = "\u2009";
+
+// A plain decimal ("-2,17", "+3", "1.5e-3", "−0.25"): copied with '.' for ',' and '-' for '−',
+// then from_chars. Most answers are these.
+bool fast_decimal(std::string_view s, double& out) {
+  char buf[64];
+  std::size_t n = 0;
+  std::size_t i = 0;
+  if (s.size() > 60) return false;
+  if (!s.empty() && s[0] == '+') i = 1;
+  else if (s.substr(0, 3) == kMinus) buf[n++] = '-', i = 3;
+  bool separator = false;
+  for (; i < s.size(); ++i) {
+    char c = s[i];
+    if (c == ',' || c == '.') {
+      if (separator) return false;
+      separator = true;
+      c = '.';
+    } else if (!((c >= '0' && c <= '9') || c == '-' || c == 'e' || c == 'E')) {
+      return false;
+    }
+    buf[n++] = c;
+  }
+  if (n == 0) return false;
+  const auto [end, ec] = std::from_chars(buf, buf + n, out);
+  return ec == std::errc() && end == buf + n && std::isfinite(out);
+}
+
+class Parser {
+ public:
+  explicit Parser(std::string_view s) : s_(s) {}
+
+  ParsedNumber run() {
+    skip();
+    if (take(kAbout) || take("~") || take("=")) skip();
+    const double v = sum();
+    skip();
+    if (!failed_ && pos_ != s_.size()) fail("number");
+    if (!failed_ && !std::isfinite(v)) fail("number");
+    if (failed_) return {false, 0, why_};
+    return {true, v, {}};
+  }
+
+ private:
+  void fail(std::string_view why) {
+    if (!failed_) why_ = why;
+    failed_ = true;
+  }
+  void skip() {
+    while (pos_ < s_.size()) {
+      if (s_[pos_] == ' ' || s_[pos_] == '\t') ++pos_;
+      else if (at(kNbsp) || at(kNarrowNbsp) || at(kThinSpace)) pos_ += 2 + (s_[pos_] == '\xe2');
+      else break;
+    }
+  }
+  bool at(std::string_view t) const { return s_.substr(pos_, t.size()) == t; }
+  bool take(std::string_view t) {
+    if (!at(t)) return false;
+    pos_ += t.size();
+    return true;
+  }
+  // A word, any case ("sqrt", "SQRT", "Racine").
+  bool take_word(std::string_view w) {
+    if (s_.size() - pos_ < w.size()) return false;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      char c = s_[pos_ + i];
+      if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+      if (c != w[i]) return false;
+    }
+    pos_ += w.size();
+    return true;
+  }
+
+  double sum() {
+    double v = product();
+    for (;;) {
+      skip();
+      if (take("+")) v += product();
+      else if (take("-") || take(kMinus)) v -= product();
+      else return v;
+    }
+  }
+
+  double product() {
+    double v = unary();
+    for (;;) {
+      skip();
+      if (take("*") || take(kTimes) || take(kDot)) {
+        v *= unary();
+      } else if (take("/") || take(kDivide)) {
+        const double d = unary();
+        if (d == 0) {  // guards the division
+          fail("division_by_zero");
+          return 0;
+        }
+        v /= d;
+      } else if (starts_atom()) {
+        v *= power();  // implicit product: 2√3, 2sqrt(3), 3(1+√2)
+      } else {
+        return v;
+      }
+    }
+  }
+
+  bool starts_atom() const {
+    if (pos_ >= s_.size()) return false;
+    const char c = s_[pos_];
+    if (c == '(' || at(kRoot) || at(kPi)) return true;
+    if (c == 's' || c == 'S' || c == 'r' || c == 'R' || c == 'p' || c == 'P') return true;
+    return false;
+  }
+
+  double unary() {
+    skip();
+    if (take("+")) return unary();
+    if (take("-") || take(kMinus)) return -unary();
+    return power();
+  }
+
+  double power() {
+    const double base = atom();
+    skip();
+    if (take(kSquared)) return base * base;
+    if (take("^")) return std::pow(base, unary());
+    return base;
+  }
+
+  double atom() {
+    skip();
+    if (failed_ || pos_ >= s_.size()) {
+      fail("number");
+      return 0;
+    }
+    if (take("(")) {
+      const double v = sum();
+      skip();
+      if (!take(")")) fail("number");
+      return v;
+    }
+    if (take(kRoot) || take_word("sqrt") || take_word("racine")) {
+      skip();
+      const double v = s_.substr(pos_, 1) == "(" ? atom() : power();
+      if (v < 0) {
+        fail("negative_root");
+        return 0;
+      }
+      return std::sqrt(v);
+    }
+    if (take(kPi) || take_word("pi")) return std::numbers::pi;
+    return literal();
+  }
+
+  // Digits with one decimal point or comma.
+  double literal() {
+    const std::size_t start = pos_;
+    char buf[64];
+    std::size_t n = 0;
+    bool separator = false, digits = false;
+    while (pos_ < s_.size() && n < sizeof buf) {
+      const char c = s_[pos_];
+      if (c >= '0' && c <= '9') {
+        digits = true;
+      } else if ((c == '.' || c == ',') && !separator && pos_ + 1 < s_.size() && s_[pos_ + 1] >= '0' &&
+                 s_[pos_ + 1] <= '9') {
+        separator = true;
+      } else {
+        break;
+      }
+      buf[n++] = c == ',' ? '.' : c;
+      ++pos_;
+    }
+    if (!digits) {
+      pos_ = start;
+      fail("number");
+      return 0;
+    }
+    double v = 0;
+    std::from_chars(buf, buf + n, v);
+    return v;
+  }
+
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  bool failed_ = false;
+  std::string_view why_;
+};
+
+}  // namespace
+
+ParsedNumber parse_number(std::string_view text) {
+  double v = 0;
+  if (fast_decimal(text, v)) return {true, v, {}};
+  return Parser(text).run();
+}
+
+}  // namespace epure::grading

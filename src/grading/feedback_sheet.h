@@ -1,0 +1,42 @@
+#pragma once
+// --feedback DIR: a marked sheet for each student, as SVG pages (PDF once that backend
+// exists): per exercise the key's construction diagram with the student's wrong points and
+// vectors drawn beside the right ones, then every question with their answer, the expected
+// one, the points, and why (the named mistake, the follow-through it earned). A row that
+// could not be marked still gets a page saying why. Also class.svg, the score histogram.
+// Files are named by sheet id (a sheet submitted twice: "-line<N>" after the id), written
+// atomically.
+#include <filesystem>
+#include <memory>
+
+#include "grading/feedback_text.h"
+#include "grading/key_diagrams.h"
+#include "grading/submission.h"
+#include "render/document.h"
+
+namespace epure::grading {
+
+// The marked sheet of one submission, as a document (separate from the files, for tests).
+render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
+                                   KeyDiagrams* diagrams);
+
+// A scene with the student's wrong points and vectors of one exercise added to `scene`.
+void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const ExerciseMarks& marks,
+                     const FeedbackText& text);
+
+class FeedbackSheets final : public SubmissionSink {
+ public:
+  FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text);
+  void submission(const Submission& s) override;
+  void finish(const ClassStatistics& stats, const Outcome& outcome) override;
+  int written() const { return written_; }
+
+ private:
+  std::filesystem::path dir_;
+  const AnswerKey& key_;
+  const FeedbackText& text_;
+  KeyDiagrams diagrams_;
+  int written_ = 0;
+};
+
+}  // namespace epure::grading

@@ -1,0 +1,45 @@
+#pragma once
+// The sentences a student reads about each answer, from templates/text/<lang>/grading.toml:
+// the expected answer as the key prints it, what they gave, and why it is right or wrong (the
+// named mistake, the follow-through it earned). Written only when an output asks for them.
+#include <string>
+#include <string_view>
+
+#include "exercises/numbers.h"
+#include "exercises/texts.h"
+#include "grading/answer_key.h"
+#include "grading/marks.h"
+
+namespace epure::grading {
+
+class FeedbackText {
+ public:
+  // Throws std::invalid_argument for a language without texts.
+  FeedbackText(std::string_view language, int decimals);
+
+  const Texts& texts() const { return texts_; }
+  const NumberStyle& numbers() const { return numbers_; }
+
+  // The key's answer: "0.26 (= 16/61)", "yes", "between A and B", "+x, −y", "none".
+  std::string expected(const QuestionKey& q) const;
+  // The student's answer as written, or an empty string when not answered.
+  std::string given(const QuestionMark& m) const { return std::string(m.given.raw); }
+  // The verdict's word in the language ("right", "juste", …).
+  const std::string& verdict(Verdict v) const;
+  // Why: empty for a right answer.
+  std::string sentence(const QuestionKey& q, const QuestionMark& m) const;
+  // A number as the language writes it, to the key's decimals ("2,17").
+  std::string number(double x) const { return numbers_.rounded(x, decimals_); }
+  // Points without trailing zeros ("1", "0.5", "0,5").
+  std::string points(double x) const;
+
+ private:
+  const Texts& texts_;
+  NumberStyle numbers_;
+  int decimals_;
+};
+
+// A machine exact form for people: "(5-2*sqrt(2))/3" → "(5 − 2√2)/3".
+std::string pretty_exact(std::string_view machine);
+
+}  // namespace epure::grading

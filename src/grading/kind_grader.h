@@ -1,0 +1,45 @@
+#pragma once
+// What one exercise kind knows about marking, beyond the key's per-question rule: how its
+// answers depend on one another (so that a later answer right from the student's own wrong
+// earlier value earns follow-through credit, as on paper) and the classic mistakes of its
+// method (recognised by recomputing what the mistake gives, from the instance, with the
+// geometry core). One file per kind under kinds/.
+#include <nlohmann/json_fwd.hpp>
+
+#include <any>
+#include <string_view>
+#include <vector>
+
+namespace epure::grading {
+
+class ExerciseReview;
+
+// A point or vector answer that a feedback sheet draws on the key's diagram.
+struct DrawnField {
+  std::string_view group;   // "P", "I", "N", "Ac"
+  int panel = 0;            // which panel of the key's scene (0: the world frame)
+  std::string_view anchor;  // for a vector: the group of the point it is drawn from ("I")
+};
+
+class KindGrader {
+ public:
+  virtual ~KindGrader() = default;
+  virtual std::string_view kind() const = 0;
+  // Reads the instance once, when the key is loaded. Throws std::runtime_error naming the
+  // field for an instance that is not a valid solve input of the kind.
+  virtual std::any prepare(const nlohmann::json& instance) const = 0;
+  // Called for an exercise with at least one wrong answer: credits follow-through and names
+  // mistakes through `review`, in the order of the method.
+  virtual void review(const std::any& prepared, ExerciseReview& review) const = 0;
+  // The mistake codes this kind can name.
+  virtual std::vector<std::string_view> mistakes() const = 0;
+  // The point and vector answers a feedback sheet draws.
+  virtual std::vector<DrawnField> drawn() const { return {}; }
+};
+
+// The grader of a kind, or null for a kind without one (its answers are marked by the key's
+// rules alone).
+const KindGrader* find_grader(std::string_view kind);
+std::vector<const KindGrader*> all_graders();
+
+}  // namespace epure::grading

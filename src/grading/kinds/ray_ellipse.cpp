@@ -1,0 +1,28 @@
+// The course's open question on ellipses: the canonical circle under a transform. What the
+// grader knows is shared with the rectangle (transformed.h), the circle's far root included.
+#include "grading/kinds/registry.h"
+#include "grading/kinds/transformed.h"
+
+namespace epure::grading::kinds {
+
+namespace {
+
+class RayEllipseGrader final : public KindGrader {
+ public:
+  std::string_view kind() const override { return "ray_ellipse"; }
+  std::any prepare(const nlohmann::json& instance) const override { return read_transformed(instance, true); }
+  void review(const std::any& prepared, ExerciseReview& r) const override {
+    review_transformed(std::any_cast<const TransformedData&>(prepared), r);
+  }
+  std::vector<std::string_view> mistakes() const override { return transformed_mistakes(); }
+  std::vector<DrawnField> drawn() const override { return transformed_drawn(); }
+};
+
+}  // namespace
+
+const KindGrader& ray_ellipse_grader() {
+  static const RayEllipseGrader grader;
+  return grader;
+}
+
+}  // namespace epure::grading::kinds

@@ -1,0 +1,15 @@
+#pragma once
+// The graders of the exercise kinds, one file each under kinds/; registry.cpp lists them.
+#include "grading/kind_grader.h"
+
+namespace epure::grading::kinds {
+
+const KindGrader& vectors_grader();
+const KindGrader& projection_grader();
+const KindGrader& segments_grader();
+const KindGrader& ray_circle_grader();
+const KindGrader& ray_square_grader();
+const KindGrader& ray_ellipse_grader();
+const KindGrader& ray_rectangle_grader();
+
+}  // namespace epure::grading::kinds

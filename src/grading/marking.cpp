@@ -1,0 +1,99 @@
+#include "grading/marking.h"
+
+#include <cmath>
+
+#include "grading/answer_reading.h"
+#include "grading/kind_grader.h"
+#include "grading/review.h"
+
+namespace epure::grading {
+
+std::string_view to_string(Verdict v) {
+  switch (v) {
+    case Verdict::right: return "right";
+    case Verdict::follow_through: return "follow_through";
+    case Verdict::wrong: return "wrong";
+    case Verdict::unanswered: return "unanswered";
+    case Verdict::unreadable: return "unreadable";
+  }
+  return "?";
+}
+
+namespace {
+
+bool equal_by_rule(const QuestionKey& q, const Given& g) {
+  switch (q.type) {
+    case AnswerType::number: return within(q, g.number, q.number);
+    case AnswerType::boolean: return g.boolean == q.boolean;
+    case AnswerType::word: return g.word == q.word;
+    case AnswerType::faces: return g.faces == q.faces;
+  }
+  return false;
+}
+
+// The other coordinate of a point marked as a whole, or −1.
+int partner(const ExerciseKey& key, std::size_t i) {
+  const auto& q = key.questions[i];
+  if (q.point.empty() || q.rule.kind != ToleranceRule::Kind::distance) return -1;
+  for (std::size_t j = 0; j < key.questions.size(); ++j)
+    if (j != i && key.questions[j].point == q.point) return static_cast<int>(j);
+  return -1;
+}
+
+}  // namespace
+
+void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cells, const MarkingOptions& options,
+                   ExerciseMarks& out) {
+  const std::size_t n = key.questions.size();
+  out.resize(n);
+  bool any_wrong = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const QuestionKey& q = key.questions[i];
+    QuestionMark& m = out[i];
+    m.given = read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type);
+    m.points = 0;
+    m.mistake = {};
+    m.from = {};
+    m.detail.clear();
+    m.value = NAN;
+    switch (m.given.state) {
+      case Given::State::blank: m.verdict = Verdict::unanswered; break;
+      case Given::State::unreadable: m.verdict = Verdict::unreadable; break;
+      case Given::State::value:
+        if (partner(key, i) >= 0) {
+          m.verdict = Verdict::wrong;  // decided below, with its partner
+        } else if (equal_by_rule(q, m.given)) {
+          m.verdict = Verdict::right;
+          m.points = q.points;
+        } else {
+          m.verdict = Verdict::wrong;
+          any_wrong = true;
+        }
+        break;
+    }
+  }
+  // Points marked as a whole: right when the given point is within the distance.
+  for (std::size_t i = 0; i < n; ++i) {
+    const int j = partner(key, i);
+    if (j < 0 || static_cast<std::size_t>(j) < i) continue;
+    QuestionMark &a = out[i], &b = out[static_cast<std::size_t>(j)];
+    if (a.verdict != Verdict::wrong && b.verdict != Verdict::wrong) continue;  // neither readable
+    const auto& qa = key.questions[i];
+    const auto& qb = key.questions[static_cast<std::size_t>(j)];
+    const bool both = a.given.readable() && b.given.readable();
+    const double abs = std::max(qa.rule.abs, qb.rule.abs);
+    if (both && std::hypot(a.given.number - qa.number, b.given.number - qb.number) <= abs) {
+      a.verdict = b.verdict = Verdict::right;
+      a.points = qa.points;
+      b.points = qb.points;
+    } else {
+      any_wrong = true;
+    }
+  }
+  if (any_wrong && key.grader) {
+    ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
+    key.grader->review(key.prepared, review);
+  }
+}
+
+}  // namespace epure::grading

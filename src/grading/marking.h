@@ -1,0 +1,26 @@
+#pragma once
+// Marks one exercise of one submission: every cell read for its question's type, compared by
+// the key's rule (isclose for numbers, distance for a point marked as a whole, equality for
+// yes/no, words and face sets in any order), and then, if some answer is wrong, the kind's
+// second look (review.h) for follow-through credit and named mistakes.
+#include <span>
+#include <string_view>
+
+#include "exercises/numbers.h"
+#include "grading/answer_key.h"
+#include "grading/marks.h"
+
+namespace epure::grading {
+
+struct MarkingOptions {
+  bool follow_through = true;
+  NumberStyle numbers;  // for the earlier answers a follow-through sentence quotes
+  int decimals = 2;
+};
+
+// `cells[i]` is the student's cell for key.questions[i] (empty: not answered). `out` is
+// resized and overwritten; its buffers are reused from call to call.
+void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cells,
+                   const MarkingOptions& options, ExerciseMarks& out);
+
+}  // namespace epure::grading

@@ -1,0 +1,53 @@
+#pragma once
+// What marking says of one answer: what was read, the verdict, the points, and why (a named
+// mistake, or the earlier answers a follow-through credit came from). The sentence for a
+// student is written from these only when an output needs it (feedback_text.h): marking a
+// class set into a CSV report formats no sentence at all.
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grading/faces.h"
+
+namespace epure::grading {
+
+// What the student wrote in one cell, read for the question's type.
+struct Given {
+  enum class State : unsigned char { blank, value, unreadable } state = State::blank;
+  double number = 0;
+  bool boolean = false;
+  FaceBits faces = 0;
+  std::string_view word;  // a contract word ("before", "miss"), static storage
+  std::string_view raw;   // the cell as written: valid while its row is
+  std::string_view why;   // unreadable: the reason's code ("number", "division_by_zero", …)
+
+  bool readable() const { return state == State::value; }
+};
+
+enum class Verdict : unsigned char {
+  right,           // by the key's rule
+  follow_through,  // wrong by the key, right from the student's own earlier answers: credited
+  wrong,
+  unanswered,
+  unreadable,      // marked wrong, and said so: "unreadable: …"
+};
+
+std::string_view to_string(Verdict v);
+
+struct QuestionMark {
+  Given given;
+  Verdict verdict = Verdict::unanswered;
+  double points = 0;
+  std::string_view mistake;  // a named mistake's code ("far_intersection"), static storage
+  std::string_view from;     // follow-through: the fields it followed from ("t", "t_proj d2")
+  std::string detail;        // those earlier answers as the student gave them ("t = 0.31")
+  double value = NAN;        // what the named mistake or the student's own values give
+
+  bool credited() const { return points > 0; }
+};
+
+// The marks of one exercise, in the order of its key's questions.
+using ExerciseMarks = std::vector<QuestionMark>;
+
+}  // namespace epure::grading

@@ -1,0 +1,114 @@
+#include "grading/report_csv.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "output/atomic_file.h"
+
+namespace epure::grading {
+
+struct CsvReport::Impl {
+  output::AtomicFile file;
+  const AnswerKey& key;
+  CsvDialect dialect;
+  fmt::memory_buffer buf;
+  std::vector<double> points;  // by question id index; NaN: not asked
+  std::vector<char> asked;
+
+  Impl(const std::filesystem::path& path, const AnswerKey& k, CsvDialect d) : file(path), key(k), dialect(d) {}
+
+  void end_line() {
+    if (dialect.crlf) buf.push_back('\r');
+    buf.push_back('\n');
+    if (buf.size() > (1 << 16)) flush();
+  }
+  void flush() {
+    file.write(std::string_view(buf.data(), buf.size()));
+    buf.clear();
+  }
+  void cell(std::string_view s, bool first = false) {
+    if (!first) buf.push_back(dialect.delimiter);
+    const bool quote = s.find_first_of(std::string{dialect.delimiter, '"', '\n', '\r'}) != std::string_view::npos;
+    if (!quote) {
+      buf.append(s);
+      return;
+    }
+    buf.push_back('"');
+    for (char c : s) {
+      if (c == '"') buf.push_back('"');
+      buf.push_back(c);
+    }
+    buf.push_back('"');
+  }
+  void number(double x) {
+    buf.push_back(dialect.delimiter);
+    // thousandths are enough for points; no trailing zeros
+    const double r = std::round(x * 1000) / 1000;
+    const auto start = buf.size();
+    fmt::format_to(fmt::appender(buf), "{}", r == 0 ? 0.0 : r);
+    if (dialect.decimal_comma)
+      for (auto i = start; i < buf.size(); ++i)
+        if (buf[i] == '.') buf[i] = ',';
+  }
+};
+
+CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, CsvDialect dialect)
+    : impl_(std::make_unique<Impl>(path, key, dialect)) {
+  auto& m = *impl_;
+  if (dialect.bom) m.buf.append(std::string_view("\xef\xbb\xbf"));
+  m.cell("sheet", true);
+  m.cell("student");
+  m.cell("score");
+  m.cell("max");
+  for (const auto& id : key.question_ids()) m.cell(id);
+  m.cell("line");
+  m.cell("flags");
+  m.end_line();
+  m.points.assign(key.question_ids().size(), 0);
+  m.asked.assign(key.question_ids().size(), 0);
+}
+
+CsvReport::~CsvReport() = default;
+
+void CsvReport::submission(const Submission& s) {
+  auto& m = *impl_;
+  m.cell(s.sheet ? std::string_view(s.sheet->id) : s.sheet_text, true);
+  m.cell(s.student);
+  if (s.marked()) {
+    m.number(s.score);
+    m.number(s.max);
+    std::fill(m.asked.begin(), m.asked.end(), 0);
+    for (std::size_t e = 0; e < s.marks.size(); ++e)
+      for (std::size_t q = 0; q < s.marks[e].size(); ++q) {
+        const auto i = static_cast<std::size_t>(s.report_index[e][q]);
+        m.points[i] = s.marks[e][q].points;
+        m.asked[i] = 1;
+      }
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+      if (m.asked[i]) m.number(m.points[i]);
+      else m.buf.push_back(m.dialect.delimiter);
+    }
+  } else {
+    m.buf.push_back(m.dialect.delimiter);
+    m.buf.push_back(m.dialect.delimiter);
+    for (std::size_t i = 0; i < m.points.size(); ++i) m.buf.push_back(m.dialect.delimiter);
+  }
+  m.buf.push_back(m.dialect.delimiter);
+  fmt::format_to(fmt::appender(m.buf), "{}", s.line);
+  std::string flags;
+  for (const auto& f : s.flags) {
+    if (flags.find(f.code) != std::string::npos) continue;
+    if (!flags.empty()) flags += ' ';
+    flags += f.code;
+  }
+  m.cell(flags);
+  m.end_line();
+}
+
+void CsvReport::finish(const ClassStatistics&, const Outcome&) {
+  impl_->flush();
+  impl_->file.commit();
+}
+
+}  // namespace epure::grading

@@ -1,0 +1,88 @@
+#include "grading/statistics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace epure::grading {
+
+namespace {
+
+std::int64_t thousandths(double score) { return std::llround(score * 1000); }
+
+}  // namespace
+
+ClassStatistics::ClassStatistics(std::vector<std::string> question_ids) {
+  for (auto& id : question_ids) questions_.push_back(QuestionRate{std::move(id)});
+}
+
+void ClassStatistics::add(const Submission& s) {
+  ++rows_;
+  if (!s.marked()) return;
+  ++marked_;
+  sum_ += s.score;
+  max_points_ = std::max(max_points_, s.max);
+  ++scores_[thousandths(s.score)];
+  for (std::size_t e = 0; e < s.marks.size(); ++e) {
+    const auto& marks = s.marks[e];
+    const auto& index = s.report_index[e];
+    for (std::size_t q = 0; q < marks.size(); ++q) {
+      QuestionRate& r = questions_[static_cast<std::size_t>(index[q])];
+      const QuestionMark& m = marks[q];
+      ++r.asked;
+      const double full = s.sheet->exercises[e].questions[q].points;
+      if (m.points >= full && (m.verdict == Verdict::right || m.verdict == Verdict::follow_through)) ++r.credited;
+      if (m.verdict == Verdict::follow_through) ++r.follow_through;
+      if (m.verdict == Verdict::unanswered) ++r.unanswered;
+      if (!m.mistake.empty()) ++mistakes_[{index[q], m.mistake}];
+    }
+  }
+}
+
+double ClassStatistics::median() const {
+  if (marked_ == 0) return 0;
+  // the mean of the two middle scores when the count is even
+  const int lo = (marked_ - 1) / 2, hi = marked_ / 2;
+  int seen = 0;
+  double a = 0, b = 0;
+  bool have_a = false;
+  for (const auto& [score, count] : scores_) {
+    if (!have_a && seen + count > lo) {
+      a = score / 1000.0;
+      have_a = true;
+    }
+    if (seen + count > hi) {
+      b = score / 1000.0;
+      break;
+    }
+    seen += count;
+  }
+  return (a + b) / 2;
+}
+
+double ClassStatistics::min() const { return scores_.empty() ? 0 : scores_.begin()->first / 1000.0; }
+double ClassStatistics::max() const { return scores_.empty() ? 0 : scores_.rbegin()->first / 1000.0; }
+
+std::vector<MistakeCount> ClassStatistics::mistakes(std::size_t limit) const {
+  std::vector<MistakeCount> out;
+  for (const auto& [at, count] : mistakes_) out.push_back({at.second, questions_[at.first].id, count});
+  std::stable_sort(out.begin(), out.end(), [](const MistakeCount& a, const MistakeCount& b) { return a.count > b.count; });
+  if (limit && out.size() > limit) out.resize(limit);
+  return out;
+}
+
+std::vector<HistogramBin> ClassStatistics::histogram(int bins) const {
+  const double top = std::max(1.0, std::ceil(max_points_));
+  const int n = std::max(1, std::min(bins, static_cast<int>(top)));
+  const double width = top / n;
+  std::vector<HistogramBin> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out[i] = {i * width, (i + 1) * width, 0};
+  for (const auto& [score, count] : scores_) {
+    const double s = score / 1000.0;
+    int i = static_cast<int>(std::floor(s / width));
+    i = std::clamp(i, 0, n - 1);
+    out[static_cast<std::size_t>(i)].count += count;
+  }
+  return out;
+}
+
+}  // namespace epure::grading

@@ -1,0 +1,65 @@
+#pragma once
+// Class statistics, gathered as submissions stream past in memory that does not grow with
+// their number: scores are counted by value (a sheet's scores take few distinct values), so
+// the median is exact; questions and mistakes are counted by report column.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "grading/submission.h"
+
+namespace epure::grading {
+
+struct QuestionRate {
+  std::string id;
+  int asked = 0;     // marked submissions whose sheet asks it
+  int credited = 0;  // full points (right, or follow-through credited)
+  int follow_through = 0;
+  int unanswered = 0;
+  double rate() const { return asked ? double(credited) / asked : 0; }
+};
+
+struct MistakeCount {
+  std::string_view code;
+  std::string question;  // the question id it was seen on
+  int count = 0;
+};
+
+struct HistogramBin {
+  double from = 0, to = 0;  // [from, to), the last bin closed
+  int count = 0;
+};
+
+class ClassStatistics {
+ public:
+  explicit ClassStatistics(std::vector<std::string> question_ids);
+
+  void add(const Submission& s);
+
+  int rows() const { return rows_; }
+  int marked() const { return marked_; }
+  double mean() const { return marked_ ? sum_ / marked_ : 0; }
+  double median() const;
+  double min() const;
+  double max() const;
+  // The most points a sheet of the key offers (sheets of one spec offer about the same).
+  double max_points() const { return max_points_; }
+
+  const std::vector<QuestionRate>& questions() const { return questions_; }
+  // Most frequent first (ties by question, then code); `limit` 0 for all.
+  std::vector<MistakeCount> mistakes(std::size_t limit = 0) const;
+  // Scores in `bins` equal bins over [0, max_points()], or one per point when that is fewer.
+  std::vector<HistogramBin> histogram(int bins = 10) const;
+
+ private:
+  int rows_ = 0, marked_ = 0;
+  double sum_ = 0, max_points_ = 0;
+  std::map<std::int64_t, int> scores_;  // score in thousandths → count
+  std::vector<QuestionRate> questions_;
+  std::map<std::pair<int, std::string_view>, int> mistakes_;  // (question, code) → count
+};
+
+}  // namespace epure::grading

@@ -1,0 +1,74 @@
+// The ray/circle grader. A(0,0), u = (2,0) so û = (1,0), C(5,1), r = 2: t_proj = 5, d² = 1,
+// √(r² − d²) = √3, t = 5 − √3 ≈ 3.268, I ≈ (3.268, 0), N = (I − C)/r ≈ (−0.866, −0.5); the
+// far point J is at t = 5 + √3 ≈ 6.732.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "grading/exercise_fixture.h"
+
+using epure::grading::Verdict;
+using epure::test::exercise;
+using epure::test::mark;
+
+namespace {
+const char* kInstance = R"({"kind":"ray_circle","A":[0,0],"u":[2,0],"C":[5,1],"r":2})";
+const std::vector<std::string> kFields = {"t_proj", "d2", "inside", "hit", "t", "I.x", "I.y", "N.x", "N.y"};
+}
+
+TEST_CASE("ray_circle: the far intersection J instead of I; I follows from it") {
+  const auto key = exercise(kInstance, kFields);
+  const auto m = mark(key, {{"t_proj", "5"}, {"d2", "1"}, {"inside", "no"}, {"hit", "yes"}, {"t", "6.73"},
+                            {"I.x", "6.73"}, {"I.y", "0"}});
+  CHECK(m["t"].mistake == "far_intersection");
+  CHECK(m["I.x"].verdict == Verdict::follow_through);
+  CHECK(m["I.x"].from == "t");
+}
+
+TEST_CASE("ray_circle: J given directly as I") {
+  const auto key = exercise(kInstance, kFields);
+  const auto m = mark(key, {{"t", "3.27"}, {"I.x", "6.73"}, {"I.y", "0"}});
+  CHECK(m["I.x"].mistake == "far_intersection");
+}
+
+TEST_CASE("ray_circle: a normal not normalised, or pointing inward") {
+  const auto key = exercise(kInstance, kFields);
+  SUBCASE("not unit: I − C") {
+    const auto m = mark(key, {{"I.x", "3.27"}, {"I.y", "0"}, {"N.x", "-1.73"}, {"N.y", "-1"}});
+    CHECK(m["N.x"].mistake == "normal_not_unit");
+    CHECK(m["N.y"].mistake == "normal_not_unit");
+  }
+  SUBCASE("inward: (C − I)/r") {
+    const auto m = mark(key, {{"I.x", "3.27"}, {"I.y", "0"}, {"N.x", "0.87"}, {"N.y", "0.5"}});
+    CHECK(m["N.x"].mistake == "normal_inward");
+  }
+  SUBCASE("from a wrong I: N = (I − C)/r follows") {
+    // I = (3, 0) (wrong): (I − C)/r = (−1, −0.5)
+    const auto m = mark(key, {{"I.x", "3"}, {"I.y", "0"}, {"N.x", "-1"}, {"N.y", "-0.5"}});
+    CHECK(m["N.x"].verdict == Verdict::follow_through);
+    CHECK(m["N.y"].verdict == Verdict::right);
+  }
+}
+
+TEST_CASE("ray_circle: u not normalised; d² and t follow from the wrong t_proj") {
+  const auto key = exercise(kInstance, kFields);
+  // t_proj = u·AC = 10; d² = ‖AC‖² − 10² = −74 is absurd, but t from t_proj = 4.5, d² = 1.5:
+  const auto m = mark(key, {{"t_proj", "10"}});
+  CHECK(m["t_proj"].mistake == "direction_not_unit");
+  const auto m2 = mark(key, {{"t_proj", "4.5"}, {"d2", "5.75"}, {"t", "3.91"}});
+  // d² = 26 − 4.5² = 5.75 follows; 5.75 > r² = 4: no hit by their values, t cannot follow
+  CHECK(m2["d2"].verdict == Verdict::follow_through);
+  CHECK(m2["t"].verdict == Verdict::wrong);
+  const auto m3 = mark(key, {{"t_proj", "5"}, {"d2", "2"}, {"t", "3.59"}});
+  // their d² = 2: t = 5 − √2 ≈ 3.586
+  CHECK(m3["t"].verdict == Verdict::follow_through);
+  CHECK(m3["t"].from == "t_proj d2");
+}
+
+TEST_CASE("ray_circle: A inside, the root behind A") {
+  // A(5,1) is the centre: t_proj = 0, d² = 0, t = +2 (leaving), the other root −2
+  const auto key = exercise(R"({"kind":"ray_circle","A":[5,0.5],"u":[1,0],"C":[5,1],"r":2})", kFields);
+  const double behind = 0 - std::sqrt(4 - 0.25);
+  const auto m = mark(key, {{"t", fmt::format("{:.2f}", behind)}});
+  CHECK(m["t"].mistake == "near_root_inside");
+}
