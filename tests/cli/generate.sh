@@ -51,8 +51,23 @@ branches = collections.defaultdict(collections.Counter)
 for s in sheets:
     for e in s["exercises"]:
         branches[(e["n"], e["kind"])][e["branch"]] += 1
+# the course's weights (templates/course.toml and the kinds' defaults): every branch appears,
+# each within 2 sheets of its share of 30
+weights = {
+    "vectors": {"acute": 2, "right": 1, "obtuse": 2},
+    "projection": {"before": 1, "between": 2, "after": 1},
+    "segments": {"intersects": 2, "outside": 1, "parallel": 1},
+    "ray_circle": {"hit": 3, "behind": 1, "miss": 1, "inside": 1},
+    "ray_square": {"hit": 3, "miss": 1, "inside": 1},
+    "ray_ellipse": {"hit": 2, "miss": 1, "inside": 1},
+    "ray_rectangle": {"hit": 2, "miss": 1, "inside": 1},
+}
 for (n, kind), counts in sorted(branches.items()):
     print(n, kind, dict(counts))
+    w = weights[kind]
+    for b, weight in w.items():
+        share = 30 * weight / sum(w.values())
+        assert abs(counts[b] - share) <= 2, (kind, b, counts[b], share)
 PY
 "$EPURE" solve "$tmp/a/instances.jsonl" > "$tmp/a/resolved.jsonl" || fail "solve refused a generated instance"
 python3 - "$tmp/a/solutions.jsonl" "$tmp/a/resolved.jsonl" <<'PY' || fail "a key.json solution differs from epure solve"
