@@ -70,6 +70,7 @@ class SheetCounter final : public RowHandler {
       }
     }
   }
+  std::size_t cells_needed() const override { return column_ < 0 ? 0 : static_cast<std::size_t>(column_) + 1; }
   void row(const AnswerRow& r) override {
     if (column_ < 0 || static_cast<std::size_t>(column_) >= r.cells.size()) return;
     const std::string_view typed = trim_cell(r.cells[static_cast<std::size_t>(column_)]);
@@ -105,7 +106,7 @@ int run_grade(const GradeCliOptions& o) {
   std::optional<AnswerKey> key;
   if (!o.key_file.empty()) key = read_key_json(read_text(o.key_file), o.key_file);
   SheetCounter counter(key ? &*key : nullptr);
-  read_answers(o.answers, counter, delimiter);
+  const SourceInfo dialect = read_answers(o.answers, counter, delimiter);
   if (!key) {
     const WorksheetSpec spec =
         o.spec_file == "builtin" ? builtin_spec() : parse_spec(read_text(o.spec_file), o.spec_file);
@@ -138,21 +139,11 @@ int run_grade(const GradeCliOptions& o) {
 
   const std::string language = o.language.empty() ? key->info.language : o.language;
   const FeedbackText text(language, key->info.decimals);
-  // the report in the answers' own dialect: peek at it through a tiny reader
   std::optional<CsvReport> report;
   std::optional<JsonReport> json;
   std::optional<FeedbackSheets> sheets;
   if (!o.report.empty()) {
-    SourceInfo dialect;
-    {
-      struct Nothing final : RowHandler {
-        void header(const std::vector<std::string>&, int) override {}
-        void row(const AnswerRow&) override {}
-      } nothing;
-      // a CSV's dialect is known after its header: reading the file again is the price of
-      // writing the report as the teacher's spreadsheet wrote the answers
-      dialect = read_answers(o.answers, nothing, delimiter);
-    }
+    // the report in the dialect the first pass found
     const bool csv = dialect.format == "csv";
     report.emplace(o.report, *key,
                    CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf});

@@ -7,6 +7,7 @@
 #include "exercises/key_json.h"
 #include "exercises/worksheet.h"
 #include "grading/kind_grader.h"
+#include "grading/words.h"
 
 namespace epure::grading {
 
@@ -70,6 +71,7 @@ QuestionKey read_question(const json& q, int n, Where where) {
   if (k.id.rfind(prefix, 0) != 0 || k.id.size() == prefix.size())
     where.fail(fmt::format("its id should start with '{}' (the exercise's number)", prefix));
   k.field = k.id.substr(prefix.size());
+  k.field_hash = field_hash(k.field);
   const json& e = member(q, "expected", where);
   if (e.is_number()) {
     k.type = AnswerType::number;
@@ -104,13 +106,21 @@ QuestionKey read_question(const json& q, int n, Where where) {
 }  // namespace
 
 int ExerciseKey::find(std::string_view field) const {
+  // kinds' graders ask by name many times per exercise: by hash alone once packed (every
+  // field name the kinds use hashes apart, tests/grading/answer_key_test.cpp checks it)
+  const std::uint32_t h = field_hash(field);
+  if (hot.size() == questions.size()) {
+    for (std::size_t i = 0; i < hot.size(); ++i)
+      if (hot[i].field_hash == h) return static_cast<int>(i);
+    return -1;
+  }
   for (std::size_t i = 0; i < questions.size(); ++i)
-    if (questions[i].field == field) return static_cast<int>(i);
+    if (questions[i].field_hash == h && questions[i].field == field) return static_cast<int>(i);
   return -1;
 }
 
 const SheetKey* AnswerKey::find(std::string_view canonical_id) const {
-  auto it = by_id_.find(std::string(canonical_id));
+  auto it = by_id_.find(canonical_id);
   return it == by_id_.end() ? nullptr : &sheets_[it->second];
 }
 
@@ -174,8 +184,36 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
         where.fail(fmt::format("instance: {}", err.what()));
       }
     }
-    for (const auto& q : ex.questions) sheet.max_points += q.points;
+    for (std::size_t i = 0; i < ex.questions.size(); ++i) {
+      auto& q = ex.questions[i];
+      sheet.max_points += q.points;
+      if (q.point.empty() || q.rule.kind != ToleranceRule::Kind::distance) continue;
+      for (std::size_t j = 0; j < ex.questions.size(); ++j)
+        if (j != i && ex.questions[j].point == q.point) q.partner = static_cast<int>(j);
+    }
     sheet.exercises.push_back(std::move(ex));
+  }
+  // packed last, one exercise after the other, so that they sit together in memory
+  for (auto& ex : sheet.exercises) {
+    ex.hot.reserve(ex.questions.size());
+    for (const auto& q : ex.questions) {
+      HotQuestion h;
+      h.number = q.number;
+      h.points = q.points;
+      h.rel = q.rule.rel;
+      h.abs = q.rule.abs;
+      if (q.type == AnswerType::word) {
+        const auto token = read_word(q.word);
+        h.word = token && *token == q.word ? token->data() : nullptr;  // null: no answer reads as it
+      }
+      h.partner = q.partner;
+      h.field_hash = q.field_hash;
+      h.type = q.type;
+      h.rule = q.rule.kind;
+      h.boolean = q.boolean;
+      h.faces = q.faces;
+      ex.hot.push_back(h);
+    }
   }
   return sheet;
 }

@@ -27,18 +27,45 @@ class KindGrader;
 // What a question expects, read from the type of its `expected` value.
 enum class AnswerType { number, boolean, word, faces };
 
+// What marking reads for every answer comes first, in one cache line: a large key is read
+// sheet after sheet, each row of answers touching another sheet's questions.
 struct QuestionKey {
+  AnswerType type = AnswerType::number;
+  bool boolean = false;
+  FaceBits faces = 0;  // a set of face names
+  int partner = -1;    // a point marked as a whole (rule distance): its other coordinate
+  double number = 0;
+  double points = 1;
+  ToleranceRule rule;
+  std::uint32_t field_hash = 0;  // of `field`, for ExerciseKey::find
   std::string id;     // "2.P.x"
   std::string field;  // "P.x"
-  AnswerType type = AnswerType::number;
-  double number = 0;
-  bool boolean = false;
-  std::string word;    // a contract word: "before", "miss", …
-  FaceBits faces = 0;  // a set of face names
+  std::string word;   // a contract word: "before", "miss", …
   std::optional<std::string> exact;
-  ToleranceRule rule;
-  double points = 1;
   std::string point;  // "2.P" for a coordinate of a point, else empty
+};
+
+// FNV-1a of a field name, as QuestionKey::field_hash holds it.
+inline std::uint32_t field_hash(std::string_view s) {
+  std::uint32_t h = 2166136261u;
+  for (char c : s) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return h;
+}
+
+// The part of a question marking reads for every answer, packed: an exercise's questions side
+// by side in a few cache lines (a large key is read sheet after sheet, each row of answers
+// touching another sheet).
+struct HotQuestion {
+  double number = 0;
+  double points = 1;
+  double rel = 0, abs = 0;
+  const char* word = nullptr;  // the contract word's static spelling (words.h), compared by address
+  int partner = -1;
+  std::uint32_t field_hash = 0;
+  AnswerType type = AnswerType::number;
+  ToleranceRule::Kind rule = ToleranceRule::Kind::exact;
+  bool boolean = false;
+  FaceBits faces = 0;
 };
 
 struct ExerciseKey {
@@ -48,6 +75,7 @@ struct ExerciseKey {
   nlohmann::json instance;  // exactly a solve input
   nlohmann::json solution;  // exactly the solve output for it
   std::vector<QuestionKey> questions;
+  std::vector<HotQuestion> hot;  // questions[i] packed, made by read_sheet_json
   const KindGrader* grader = nullptr;  // null for a kind grading has no knowledge of
   std::any prepared;                   // the grader's reading of the instance, made once
 
@@ -88,6 +116,8 @@ class AnswerKey {
   const std::vector<SheetKey>& sheets() const { return sheets_; }
   // The sheet of a canonical id, or null.
   const SheetKey* find(std::string_view canonical_id) const;
+  // A sheet's place in sheets().
+  std::size_t index_of(const SheetKey& sheet) const { return static_cast<std::size_t>(&sheet - sheets_.data()); }
   // Every question id of every sheet, in report order (by exercise, then as the sheets ask).
   const std::vector<std::string>& question_ids() const { return question_ids_; }
   // Ids that were asked for but could not be rebuilt (--spec), with why.
@@ -99,7 +129,11 @@ class AnswerKey {
 
  private:
   std::vector<SheetKey> sheets_;
-  std::unordered_map<std::string, std::size_t> by_id_;
+  struct Hash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, std::size_t, Hash, std::equal_to<>> by_id_;
   std::vector<std::string> question_ids_;
   std::map<std::string, std::string> refused_;
 };

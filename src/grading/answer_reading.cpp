@@ -52,9 +52,9 @@ std::string_view trim_cell(std::string_view s) {
     const char c = s.back();
     if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
       s.remove_suffix(1);
-    } else if (s.size() >= 2 && s.substr(s.size() - 2) == "\u00a0") {
+    } else if (c == '\xa0' && s.size() >= 2 && s[s.size() - 2] == '\xc2') {
       s.remove_suffix(2);
-    } else if (s.size() >= 3 && (s.substr(s.size() - 3) == "\u202f" || s.substr(s.size() - 3) == "\u2009")) {
+    } else if ((c == '\xaf' || c == '\x89') && s.size() >= 3 && s[s.size() - 3] == '\xe2' && s[s.size() - 2] == '\x80') {
       s.remove_suffix(3);
     } else {
       break;

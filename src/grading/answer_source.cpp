@@ -26,6 +26,7 @@ void read_csv(CsvReader& reader, RowHandler& handler, SourceInfo& info) {
     if (header) {
       std::vector<std::string> names(rec.cells.begin(), rec.cells.end());
       handler.header(names, rec.line);
+      reader.limit_cells(handler.cells_needed());
       header = false;
       continue;
     }

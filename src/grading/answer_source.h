@@ -36,6 +36,8 @@ class RowHandler {
   // The column names (CSV: the header row; JSON: every name seen so far, growing).
   virtual void header(const std::vector<std::string>& names, int line) = 0;
   virtual void row(const AnswerRow& row) = 0;
+  // After header(): how many leading cells of each row it reads (a CSV row is split no further).
+  virtual std::size_t cells_needed() const { return static_cast<std::size_t>(-1); }
 };
 
 // The format by the first character after blanks and a byte-order mark ('[' or '{': JSON).

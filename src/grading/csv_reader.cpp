@@ -174,14 +174,17 @@ void CsvReader::split(std::size_t b, std::size_t e, bool quoted, CsvRecord& r) {
   char* buf = buf_.data();
   r.cells.clear();
   if (!quoted) {
+    // cells are a few bytes long: a plain scan beats a call to memchr for each
+    const char d = delimiter_;
     std::size_t p = b;
-    for (;;) {
-      const auto* d = static_cast<const char*>(std::memchr(buf + p, delimiter_, e - p));
-      const std::size_t cell_end = d ? static_cast<std::size_t>(d - buf) : e;
-      r.cells.emplace_back(buf + p, cell_end - p);
-      if (!d) return;
-      p = cell_end + 1;
+    for (std::size_t i = b; i < e; ++i) {
+      if (buf[i] != d) continue;
+      r.cells.emplace_back(buf + p, i - p);
+      p = i + 1;
+      if (r.cells.size() >= limit_) return;
     }
+    r.cells.emplace_back(buf + p, e - p);
+    return;
   }
   std::size_t p = b;
   for (;;) {
@@ -215,7 +218,7 @@ void CsvReader::split(std::size_t b, std::size_t e, bool quoted, CsvRecord& r) {
       cell_end = d ? static_cast<std::size_t>(d - buf) : e;
       r.cells.emplace_back(buf + p, cell_end - p);
     }
-    if (cell_end >= e) return;
+    if (cell_end >= e || r.cells.size() >= limit_) return;
     p = cell_end + 1;
   }
 }
@@ -226,6 +229,9 @@ bool CsvReader::next(CsvRecord& r) {
     bool quoted = false, unclosed = false;
     if (!find_record(end, next, quoted, unclosed)) return false;
     r.line = line_;
+    // an unclosed quote runs to the end of the file: its last line end is the file's, not the
+    // record's
+    while (unclosed && end > begin_ && (buf_[end - 1] == newline_ || buf_[end - 1] == '\r')) --end;
     int breaks = 0;
     if (quoted)
       for (std::size_t i = begin_; i < end; ++i) breaks += buf_[i] == newline_;

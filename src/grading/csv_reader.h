@@ -42,6 +42,9 @@ class CsvReader {
   // The next non-blank record; false at the end of the input. Blank lines are skipped (and
   // counted in blank_lines()).
   bool next(CsvRecord& record);
+  // Only the first `cells` cells are split (the rest of the record is still read past, quotes
+  // and all): a pass that needs one column does not pay for all of them.
+  void limit_cells(std::size_t cells) { limit_ = cells; }
 
   char delimiter() const { return delimiter_; }
   bool had_bom() const { return bom_; }
@@ -65,6 +68,7 @@ class CsvReader {
   bool crlf_ = false;
   int line_ = 1;
   int blank_lines_ = 0;
+  std::size_t limit_ = static_cast<std::size_t>(-1);
 };
 
 }  // namespace epure::grading

@@ -1,6 +1,7 @@
 #include "grading/expression.h"
 
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 
@@ -35,6 +36,32 @@ bool fast_decimal(std::string_view s, double& out) {
     buf[n++] = c;
   }
   if (n == 0) return false;
+  // up to 15 digits and no exponent: the integer and its power of ten are exact doubles, and one
+  // division rounds correctly (Clinger's fast path), as from_chars would
+  {
+    std::size_t k = buf[0] == '-' ? 1 : 0;
+    std::int64_t digits = 0;
+    int count = 0, after = -1;
+    bool plain = k < n;
+    for (; k < n && plain; ++k) {
+      if (buf[k] == '.') {
+        plain = after < 0;
+        after = 0;
+      } else if (buf[k] >= '0' && buf[k] <= '9') {
+        digits = digits * 10 + (buf[k] - '0');
+        if (++count > 15) plain = false;
+        if (after >= 0) ++after;
+      } else {
+        plain = false;
+      }
+    }
+    if (plain && count > 0) {
+      static constexpr double kPow10[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+      out = static_cast<double>(digits) / kPow10[after < 0 ? 0 : after];
+      if (buf[0] == '-') out = -out;
+      return true;
+    }
+  }
   const auto [end, ec] = std::from_chars(buf, buf + n, out);
   return ec == std::errc() && end == buf + n && std::isfinite(out);
 }

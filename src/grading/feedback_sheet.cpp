@@ -125,7 +125,7 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
     if (diagrams) {
       if (auto scene = diagrams->scene(*s.sheet, e)) {
         overlay_answers(*scene, ex, marks, text);
-        section.add(render::Figure{std::move(*scene), scene->panels.size() > 1 ? 0.9 : 0.55});
+        section.add(render::Figure{std::move(*scene), scene->panels.size() > 1 ? 0.8 : 0.45});
       }
     }
     for (std::size_t q = 0; q < marks.size(); ++q) {
@@ -138,8 +138,8 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
                                        m.given.raw.empty() ? std::string("—") : rich_escape(m.given.raw));
       answer += fmt::format("  ({}/{})", text.points(m.points), text.points(qk.points));
       if (!right) {
-        answer += fmt::format(" — {}: {}", T.get("grading.sheet.expected"), text.expected(qk));
-        const std::string why = text.sentence(qk, m);
+        answer += fmt::format(" — {} {}", T.get("grading.sheet.expected"), text.expected(qk));
+        const std::string why = text.explanation(qk, m);
         if (!why.empty()) answer += ". " + why;
       }
       section.add(render::AnswerLine{qk.id, prompt, answer});

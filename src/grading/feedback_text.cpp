@@ -6,6 +6,10 @@
 
 namespace epure::grading {
 
+namespace {
+constexpr std::size_t kShortExact = 12;
+}  // namespace
+
 std::string pretty_exact(std::string_view s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -45,7 +49,8 @@ std::string FeedbackText::expected(const QuestionKey& q) const {
   switch (q.type) {
     case AnswerType::number: {
       std::string s = numbers_.rounded(q.number, decimals_);
-      if (q.exact && q.exact->find_first_not_of("-0123456789") != std::string::npos)
+      // an exact form when it is short enough to help ("16/61", "5 − √11"), not "25√1066/1066"
+      if (q.exact && q.exact->find_first_not_of("-0123456789") != std::string::npos && q.exact->size() <= kShortExact)
         s += fmt::format(" (= {})", numbers_.localise(pretty_exact(*q.exact)));
       return s;
     }
@@ -63,7 +68,11 @@ const std::string& FeedbackText::verdict(Verdict v) const {
   return texts_.get(fmt::format("grading.verdict.{}", to_string(v)));
 }
 
-std::string FeedbackText::sentence(const QuestionKey& q, const QuestionMark& m) const {
+std::string FeedbackText::sentence(const QuestionKey& q, const QuestionMark& m) const { return compose(q, m, true); }
+
+std::string FeedbackText::explanation(const QuestionKey& q, const QuestionMark& m) const { return compose(q, m, false); }
+
+std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, bool whole) const {
   const TextVars vars = {{"expected", expected(q)},
                          {"given", std::string(m.given.raw)},
                          {"value", std::isfinite(m.value) ? number(m.value) : std::string()},
@@ -80,10 +89,10 @@ std::string FeedbackText::sentence(const QuestionKey& q, const QuestionMark& m) 
   switch (m.verdict) {
     case Verdict::right: return {};
     case Verdict::follow_through: return join(mistake, say("grading.say.follow_through"));
-    case Verdict::unanswered: return say("grading.say.unanswered");
-    case Verdict::unreadable: return say("grading.say.unreadable");
+    case Verdict::unanswered: return whole ? say("grading.say.unanswered") : std::string();
+    case Verdict::unreadable: return whole ? say("grading.say.unreadable") : say("grading.say.unreadable_short");
     case Verdict::wrong: {
-      std::string s = join(say("grading.say.wrong"), mistake);
+      std::string s = join(whole ? say("grading.say.wrong") : std::string(), mistake);
       if (!m.from.empty()) s = join(s, say("grading.say.follow_through_off"));
       return s;
     }

@@ -26,14 +26,20 @@ class FeedbackText {
   std::string given(const QuestionMark& m) const { return std::string(m.given.raw); }
   // The verdict's word in the language ("right", "juste", …).
   const std::string& verdict(Verdict v) const;
-  // Why: empty for a right answer.
+  // Why, as a sentence that stands alone (expected and given included): empty for a right
+  // answer.
   std::string sentence(const QuestionKey& q, const QuestionMark& m) const;
+  // Why, for a page that already shows the answer and the expected one beside it: the named
+  // mistake, the follow-through, why a cell was unreadable; empty when there is nothing more.
+  std::string explanation(const QuestionKey& q, const QuestionMark& m) const;
   // A number as the language writes it, to the key's decimals ("2,17").
   std::string number(double x) const { return numbers_.rounded(x, decimals_); }
   // Points without trailing zeros ("1", "0.5", "0,5").
   std::string points(double x) const;
 
  private:
+  std::string compose(const QuestionKey& q, const QuestionMark& m, bool whole) const;
+
   const Texts& texts_;
   NumberStyle numbers_;
   int decimals_;

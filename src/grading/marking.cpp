@@ -21,23 +21,25 @@ std::string_view to_string(Verdict v) {
 
 namespace {
 
-bool equal_by_rule(const QuestionKey& q, const Given& g) {
+bool within_hot(const HotQuestion& q, double given) {
+  if (!std::isfinite(given)) return false;
+  const double d = std::abs(given - q.number);
+  switch (q.rule) {
+    case ToleranceRule::Kind::isclose: return d <= std::max(q.rel * std::abs(q.number), q.abs);
+    case ToleranceRule::Kind::distance: return d <= q.abs;
+    case ToleranceRule::Kind::exact: break;
+  }
+  return d <= 1e-9 * std::max(1.0, std::abs(q.number));
+}
+
+bool equal_by_rule(const HotQuestion& q, const Given& g) {
   switch (q.type) {
-    case AnswerType::number: return within(q, g.number, q.number);
+    case AnswerType::number: return within_hot(q, g.number);
     case AnswerType::boolean: return g.boolean == q.boolean;
-    case AnswerType::word: return g.word == q.word;
+    case AnswerType::word: return g.word.data() == q.word;
     case AnswerType::faces: return g.faces == q.faces;
   }
   return false;
-}
-
-// The other coordinate of a point marked as a whole, or −1.
-int partner(const ExerciseKey& key, std::size_t i) {
-  const auto& q = key.questions[i];
-  if (q.point.empty() || q.rule.kind != ToleranceRule::Kind::distance) return -1;
-  for (std::size_t j = 0; j < key.questions.size(); ++j)
-    if (j != i && key.questions[j].point == q.point) return static_cast<int>(j);
-  return -1;
 }
 
 }  // namespace
@@ -48,7 +50,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
   out.resize(n);
   bool any_wrong = false;
   for (std::size_t i = 0; i < n; ++i) {
-    const QuestionKey& q = key.questions[i];
+    const HotQuestion& q = key.hot[i];
     QuestionMark& m = out[i];
     m.given = read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type);
     m.points = 0;
@@ -60,7 +62,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
       case Given::State::blank: m.verdict = Verdict::unanswered; break;
       case Given::State::unreadable: m.verdict = Verdict::unreadable; break;
       case Given::State::value:
-        if (partner(key, i) >= 0) {
+        if (q.partner >= 0) {
           m.verdict = Verdict::wrong;  // decided below, with its partner
         } else if (equal_by_rule(q, m.given)) {
           m.verdict = Verdict::right;
@@ -74,7 +76,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
   }
   // Points marked as a whole: right when the given point is within the distance.
   for (std::size_t i = 0; i < n; ++i) {
-    const int j = partner(key, i);
+    const int j = key.hot[i].partner;
     if (j < 0 || static_cast<std::size_t>(j) < i) continue;
     QuestionMark &a = out[i], &b = out[static_cast<std::size_t>(j)];
     if (a.verdict != Verdict::wrong && b.verdict != Verdict::wrong) continue;  // neither readable

@@ -1,5 +1,6 @@
 #include "grading/report_csv.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -43,13 +44,24 @@ struct CsvReport::Impl {
   }
   void number(double x) {
     buf.push_back(dialect.delimiter);
-    // thousandths are enough for points; no trailing zeros
-    const double r = std::round(x * 1000) / 1000;
-    const auto start = buf.size();
-    fmt::format_to(fmt::appender(buf), "{}", r == 0 ? 0.0 : r);
-    if (dialect.decimal_comma)
-      for (auto i = start; i < buf.size(); ++i)
-        if (buf[i] == '.') buf[i] = ',';
+    // thousandths are enough for points, written without trailing zeros; most are 0 or 1
+    if (x == 0 || x == 1) {  // exact: the points as the key gives them
+      buf.push_back(x == 0 ? '0' : '1');
+      return;
+    }
+    long long m = static_cast<long long>(std::abs(x) * 1000 + 0.5);
+    if (x < 0) buf.push_back('-');
+    char digits[24];
+    int n = 0;
+    for (long long whole = m / 1000; n == 0 || whole > 0; whole /= 10) digits[n++] = static_cast<char>('0' + whole % 10);
+    while (n > 0) buf.push_back(digits[--n]);
+    long long frac = m % 1000;
+    if (frac == 0) return;
+    buf.push_back(dialect.decimal_comma ? ',' : '.');
+    for (long long d = 100; frac > 0; d /= 10) {
+      buf.push_back(static_cast<char>('0' + frac / d));
+      frac %= d;
+    }
   }
 };
 

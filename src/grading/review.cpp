@@ -20,11 +20,20 @@ void each_name(std::string_view list, Fn&& fn) {
   }
 }
 
-std::string coordinate(std::string_view group, char axis) {
-  std::string s(group);
-  s += '.';
-  s += axis;
-  return s;
+// "P" and 'x' → "P.x", without an allocation (groups are short names).
+struct Coordinate {
+  char text[16];
+  std::size_t size;
+  operator std::string_view() const { return {text, size}; }
+};
+Coordinate coordinate(std::string_view group, char axis) {
+  Coordinate c{};
+  const std::size_t n = std::min(group.size(), sizeof c.text - 2);
+  for (std::size_t i = 0; i < n; ++i) c.text[i] = group[i];
+  c.text[n] = '.';
+  c.text[n + 1] = axis;
+  c.size = n + 2;
+  return c;
 }
 
 }  // namespace
@@ -55,33 +64,49 @@ const QuestionMark* ExerciseReview::mark(std::string_view field) const {
   return i < 0 ? nullptr : &marks_[static_cast<std::size_t>(i)];
 }
 
+// One lookup per public call: the index-based helpers below do the rest.
+bool ExerciseReview::open_at(int i) const {
+  if (i < 0) return false;
+  const QuestionMark& m = marks_[static_cast<std::size_t>(i)];
+  return m.verdict == Verdict::wrong && m.from.empty() && m.mistake.empty();
+}
+
+const QuestionMark* ExerciseReview::readable_at(int i, AnswerType type) const {
+  if (i < 0) return nullptr;
+  const QuestionMark& m = marks_[static_cast<std::size_t>(i)];
+  if (!m.given.readable() || key_.questions[static_cast<std::size_t>(i)].type != type) return nullptr;
+  return &m;
+}
+
 std::optional<double> ExerciseReview::number(std::string_view field) const {
-  const auto* m = mark(field);
-  if (!m || !m->given.readable() || key_.questions[key_.find(field)].type != AnswerType::number) return std::nullopt;
+  const auto* m = readable_at(key_.find(field), AnswerType::number);
+  if (!m) return std::nullopt;
   return m->given.number;
 }
 
 std::optional<geo::Point2> ExerciseReview::point(std::string_view group) const {
-  const auto x = number(coordinate(group, 'x')), y = number(coordinate(group, 'y'));
-  if (!x || !y) return std::nullopt;
+  const auto x = number(coordinate(group, 'x'));
+  if (!x) return std::nullopt;
+  const auto y = number(coordinate(group, 'y'));
+  if (!y) return std::nullopt;
   return geo::Point2{*x, *y};
 }
 
 std::optional<bool> ExerciseReview::boolean(std::string_view field) const {
-  const auto* m = mark(field);
-  if (!m || !m->given.readable() || key_.questions[key_.find(field)].type != AnswerType::boolean) return std::nullopt;
+  const auto* m = readable_at(key_.find(field), AnswerType::boolean);
+  if (!m) return std::nullopt;
   return m->given.boolean;
 }
 
 std::optional<FaceBits> ExerciseReview::faces(std::string_view field) const {
-  const auto* m = mark(field);
-  if (!m || !m->given.readable() || key_.questions[key_.find(field)].type != AnswerType::faces) return std::nullopt;
+  const auto* m = readable_at(key_.find(field), AnswerType::faces);
+  if (!m) return std::nullopt;
   return m->given.faces;
 }
 
 std::optional<std::string_view> ExerciseReview::word(std::string_view field) const {
-  const auto* m = mark(field);
-  if (!m || !m->given.readable() || key_.questions[key_.find(field)].type != AnswerType::word) return std::nullopt;
+  const auto* m = readable_at(key_.find(field), AnswerType::word);
+  if (!m) return std::nullopt;
   return m->given.word;
 }
 
@@ -103,10 +128,7 @@ bool ExerciseReview::right_coordinates(std::string_view group, int count) const 
   return any;
 }
 
-bool ExerciseReview::open(std::string_view field) const {
-  const auto* m = mark(field);
-  return m && m->verdict == Verdict::wrong && m->from.empty() && m->mistake.empty();
-}
+bool ExerciseReview::open(std::string_view field) const { return open_at(key_.find(field)); }
 
 bool ExerciseReview::some_wrong(std::string_view from) const {
   bool wrong = false;
@@ -153,41 +175,44 @@ void ExerciseReview::credit(int index, std::string_view from, std::string_view m
 
 bool ExerciseReview::follow(std::string_view field, double value, std::string_view from, std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field) || !some_wrong(from)) return false;
-  const auto g = number(field);
-  if (!g || !within(key_.questions[i], *g, value, kMatchFactor)) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::number);
+  if (!m || !within(key_.questions[i], m->given.number, value, kMatchFactor) || !some_wrong(from)) return false;
   credit(i, from, code, value);
   return true;
 }
 
 bool ExerciseReview::follow_point(std::string_view group, geo::Point2 value, std::string_view from,
                                   std::string_view code) {
-  const std::string fx = coordinate(group, 'x'), fy = coordinate(group, 'y');
-  const int ix = key_.find(fx), iy = key_.find(fy);
-  if (ix < 0 || iy < 0 || !some_wrong(from)) return false;
+  const int ix = key_.find(coordinate(group, 'x')), iy = key_.find(coordinate(group, 'y'));
+  const bool ox = open_at(ix), oy = open_at(iy);
+  if (!(ox || oy) || ix < 0 || iy < 0) return false;
   const auto& qx = key_.questions[ix];
+  const auto& qy = key_.questions[iy];
+  const QuestionMark &mx = marks_[ix], &my = marks_[iy];
   if (qx.rule.kind == ToleranceRule::Kind::distance) {
     // the point as a whole
-    const auto g = point(group);
-    if (!g || !(open(fx) || open(fy))) return false;
-    const double abs = std::max(qx.rule.abs, key_.questions[iy].rule.abs);
-    if (!(std::hypot(g->x - value.x, g->y - value.y) <= kMatchFactor * abs)) return false;
-    if (open(fx)) credit(ix, from, code, value.x);
-    if (open(fy)) credit(iy, from, code, value.y);
+    if (!mx.given.readable() || !my.given.readable()) return false;
+    const double abs = std::max(qx.rule.abs, qy.rule.abs);
+    if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
+    if (!some_wrong(from)) return false;
+    if (ox) credit(ix, from, code, value.x);
+    if (oy) credit(iy, from, code, value.y);
     return true;
   }
-  bool any = false;
-  if (open(fx) && within(qx, marks_[ix].given.number, value.x, kMatchFactor)) credit(ix, from, code, value.x), any = true;
-  if (open(fy) && within(key_.questions[iy], marks_[iy].given.number, value.y, kMatchFactor))
-    credit(iy, from, code, value.y), any = true;
-  return any;
+  const bool fit_x = ox && within(qx, mx.given.number, value.x, kMatchFactor);
+  const bool fit_y = oy && within(qy, my.given.number, value.y, kMatchFactor);
+  if (!(fit_x || fit_y) || !some_wrong(from)) return false;
+  if (fit_x) credit(ix, from, code, value.x);
+  if (fit_y) credit(iy, from, code, value.y);
+  return true;
 }
 
 bool ExerciseReview::follow_boolean(std::string_view field, bool value, std::string_view from, std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field) || !some_wrong(from)) return false;
-  const auto g = boolean(field);
-  if (!g || *g != value) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::boolean);
+  if (!m || m->given.boolean != value || !some_wrong(from)) return false;
   credit(i, from, code, NAN);
   return true;
 }
@@ -195,67 +220,63 @@ bool ExerciseReview::follow_boolean(std::string_view field, bool value, std::str
 bool ExerciseReview::follow_word(std::string_view field, std::string_view w, std::string_view from,
                                  std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field) || !some_wrong(from)) return false;
-  const auto g = word(field);
-  if (!g || *g != w) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::word);
+  if (!m || m->given.word != w || !some_wrong(from)) return false;
   credit(i, from, code, NAN);
   return true;
 }
 
 bool ExerciseReview::mistake(std::string_view field, double value, std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field)) return false;
-  const auto g = number(field);
-  if (!g || !within(key_.questions[i], *g, value, kMatchFactor)) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::number);
+  if (!m || !within(key_.questions[i], m->given.number, value, kMatchFactor)) return false;
   marks_[i].mistake = code;
   marks_[i].value = value;
   return true;
 }
 
 bool ExerciseReview::mistake_point(std::string_view group, geo::Point2 value, std::string_view code) {
-  const std::string fx = coordinate(group, 'x'), fy = coordinate(group, 'y');
-  const int ix = key_.find(fx), iy = key_.find(fy);
-  if (ix < 0 || iy < 0) return false;
-  const auto& qx = key_.questions[ix];
-  auto name = [&](int i, double v) {
-    marks_[i].mistake = code;
-    marks_[i].value = v;
-  };
-  if (qx.rule.kind == ToleranceRule::Kind::distance) {
-    const auto g = point(group);
-    if (!g || !(open(fx) || open(fy))) return false;
-    const double abs = std::max(qx.rule.abs, key_.questions[iy].rule.abs);
-    if (!(std::hypot(g->x - value.x, g->y - value.y) <= kMatchFactor * abs)) return false;
-    if (open(fx)) name(ix, value.x);
-    if (open(fy)) name(iy, value.y);
-    return true;
-  }
-  // Both coordinates must fit the mistake, right ones included: one coordinate alone
-  // matching is a coincidence, not a diagnosis.
-  const auto g = point(group);
-  if (!g) return false;
-  if (!within(qx, g->x, value.x, kMatchFactor) || !within(key_.questions[iy], g->y, value.y, kMatchFactor))
+  const int ix = key_.find(coordinate(group, 'x')), iy = key_.find(coordinate(group, 'y'));
+  const bool ox = open_at(ix), oy = open_at(iy);
+  if (!(ox || oy) || ix < 0 || iy < 0) return false;
+  const QuestionMark &mx = marks_[ix], &my = marks_[iy];
+  if (!mx.given.readable() || !my.given.readable() || key_.questions[ix].type != AnswerType::number ||
+      key_.questions[iy].type != AnswerType::number)
     return false;
-  bool any = false;
-  if (open(fx)) name(ix, value.x), any = true;
-  if (open(fy)) name(iy, value.y), any = true;
-  return any;
+  const auto& qx = key_.questions[ix];
+  const auto& qy = key_.questions[iy];
+  if (qx.rule.kind == ToleranceRule::Kind::distance) {
+    const double abs = std::max(qx.rule.abs, qy.rule.abs);
+    if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
+  } else if (!within(qx, mx.given.number, value.x, kMatchFactor) || !within(qy, my.given.number, value.y, kMatchFactor)) {
+    // both coordinates must fit the mistake, right ones included: one coordinate alone
+    // matching is a coincidence, not a diagnosis
+    return false;
+  }
+  for (auto [i, open] : {std::pair{ix, ox}, std::pair{iy, oy}}) {
+    if (!open) continue;
+    marks_[i].mistake = code;
+    marks_[i].value = i == ix ? value.x : value.y;
+  }
+  return true;
 }
 
 bool ExerciseReview::mistake_faces(std::string_view field, FaceBits value, std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field)) return false;
-  const auto g = faces(field);
-  if (!g || *g != value) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::faces);
+  if (!m || m->given.faces != value) return false;
   marks_[i].mistake = code;
   return true;
 }
 
 bool ExerciseReview::mistake_word(std::string_view field, std::string_view w, std::string_view code) {
   const int i = key_.find(field);
-  if (i < 0 || !open(field)) return false;
-  const auto g = word(field);
-  if (!g || *g != w) return false;
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::word);
+  if (!m || m->given.word != w) return false;
   marks_[i].mistake = code;
   return true;
 }

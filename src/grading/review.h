@@ -65,6 +65,8 @@ class ExerciseReview {
   bool mistake_word(std::string_view field, std::string_view word, std::string_view code);
 
  private:
+  bool open_at(int i) const;
+  const QuestionMark* readable_at(int i, AnswerType type) const;
   QuestionMark* mark(std::string_view field);
   const QuestionMark* mark(std::string_view field) const;
   bool right_coordinates(std::string_view group, int count) const;

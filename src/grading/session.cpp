@@ -46,6 +46,10 @@ GradingSession::GradingSession(const AnswerKey& key, SessionOptions options)
   outcome_.answers = options_.answers_name;
   outcome_.follow_through = marking_.follow_through;
   outcome_.language = language;
+  counts_.assign(key.sheets().size(), 0);
+  first_line_.assign(key.sheets().size(), 0);
+  for (const auto& [id, n] : options_.sheet_counts)
+    if (const SheetKey* s = key.find(id)) counts_[key.index_of(*s)] = n;
 }
 
 void GradingSession::problem(int line, std::string message, bool error, std::string_view kind) {
@@ -68,8 +72,11 @@ void GradingSession::problem(int line, std::string message, bool error, std::str
 
 void GradingSession::header(const std::vector<std::string>& names, int line) {
   names_ = names;
+  for (auto& n : names_)
+    if (!valid_utf8(n)) n = cp1252_to_utf8(n);
   if (line > 0) header_line_ = line;
   columns_.clear();
+  columns_.resize(key_.sheets().size());
   sheet_column_ = student_column_ = -1;
   const auto& ids = key_.question_ids();
   question_column_.assign(ids.size(), -1);
@@ -125,8 +132,8 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
 }
 
 const GradingSession::SheetColumns& GradingSession::columns_for(const SheetKey& sheet) {
-  auto it = columns_.find(&sheet);
-  if (it != columns_.end()) return it->second;
+  auto& slot = columns_[key_.index_of(sheet)];
+  if (slot) return *slot;
   SheetColumns c;
   c.asked.assign(names_.size(), 0);
   const auto& ids = key_.question_ids();
@@ -141,7 +148,8 @@ const GradingSession::SheetColumns& GradingSession::columns_for(const SheetKey& 
       if (column >= 0) c.asked[static_cast<std::size_t>(column)] = 1;
     }
   }
-  return columns_.emplace(&sheet, std::move(c)).first->second;
+  slot = std::make_unique<SheetColumns>(std::move(c));
+  return *slot;
 }
 
 void GradingSession::flag(Submission& s, std::string_view code, std::string message, bool error) {
@@ -149,7 +157,23 @@ void GradingSession::flag(Submission& s, std::string_view code, std::string mess
   s.flags.push_back({code, std::move(message)});
 }
 
-void GradingSession::row(const AnswerRow& r) {
+void GradingSession::row(const AnswerRow& in) {
+  // Windows-1252 text (Excel's plain "CSV"): every cell that is not UTF-8 is read as such
+  AnswerRow r = in;
+  bool foreign = false;
+  for (auto c : in.cells) foreign = foreign || !valid_utf8(c);
+  if (foreign) {
+    transcoded_.clear();
+    for (auto c : in.cells) transcoded_.push_back(valid_utf8(c) ? std::string(c) : cp1252_to_utf8(c));
+    transcoded_views_.assign(transcoded_.begin(), transcoded_.end());
+    r.cells = transcoded_views_;
+    if (!transcoded_warned_) {
+      transcoded_warned_ = true;
+      problem(r.line, "text that is not UTF-8 (a spreadsheet's plain \"CSV\" on Windows): read as Windows-1252; "
+                      "export as \"CSV UTF-8\" to be sure",
+              false, "encoding");
+    }
+  }
   const std::size_t width = names_.size();
   auto cell = [&](int c) -> std::string_view {
     return c >= 0 && static_cast<std::size_t>(c) < r.cells.size() ? r.cells[static_cast<std::size_t>(c)]
@@ -170,18 +194,7 @@ void GradingSession::row(const AnswerRow& r) {
   s.score = s.max = 0;
   s.flags.clear();
   s.sheet_text = trim_cell(cell(sheet_column_));
-  const std::string_view student = trim_cell(cell(student_column_));
-  if (valid_utf8(student)) {
-    s.student.assign(student);
-  } else {
-    s.student = cp1252_to_utf8(student);
-    if (!transcoded_warned_) {
-      transcoded_warned_ = true;
-      problem(r.line, "text that is not UTF-8 (a spreadsheet's plain \"CSV\" on Windows): read as Windows-1252; "
-                      "export as \"CSV UTF-8\" to be sure",
-              false, "encoding");
-    }
-  }
+  s.student.assign(trim_cell(cell(student_column_)));
 
   if (r.problem == "unclosed_quote")
     flag(s, "malformed", fmt::format("a quote opened on this row is never closed: lines {} to {} were read as one row", r.line, r.last_line), true);
@@ -222,16 +235,19 @@ void GradingSession::row(const AnswerRow& r) {
     const SheetKey& sheet = *s.sheet;
     const SheetColumns& cols = columns_for(sheet);
     // two submissions of one sheet: both marked, both flagged
-    const auto counted = options_.sheet_counts.find(sheet.id);
-    const int count = counted == options_.sheet_counts.end() ? 0 : counted->second;
-    auto [first, fresh] = seen_.emplace(sheet.id, r.line);
-    if (count > 1 || !fresh) {
-      auto& lines = duplicate_lines_[sheet.id];
-      if (lines.empty() && !fresh && count <= 1) lines.push_back(first->second);
-      lines.push_back(r.line);
+    const std::size_t index = key_.index_of(sheet);
+    const int count = counts_[index];
+    const int first = first_line_[index];
+    if (first == 0) first_line_[index] = r.line;
+    if (count > 1 || first != 0) {
+      auto& [lines, more] = duplicate_lines_[sheet.id];
+      if (lines.empty() && first != 0 && count <= 1) lines.push_back(first);
+      // the first few lines are named; the rest are counted, so memory does not grow with rows
+      if (lines.size() < kNamedLines) lines.push_back(r.line);
+      else ++more;
       s.flags.push_back({"duplicate", count > 1 ? fmt::format("sheet {} is submitted {} times: every one is marked", sheet.id, count)
                                                 : fmt::format("sheet {} was already submitted on line {}: both are marked",
-                                                              sheet.id, first->second)});
+                                                              sheet.id, first)});
     }
     marks_.resize(sheet.exercises.size());
     std::string unreadable;
@@ -277,11 +293,13 @@ const Outcome& GradingSession::finish(const SourceInfo& source) {
     problem(0, "the file is empty: no header row, no answers", true, "empty");
   else if (outcome_.rows == 0)
     problem(0, "no answers: the file has a header but no rows", true, "empty");
-  for (auto& [id, lines] : duplicate_lines_) {
+  for (auto& [id, seen] : duplicate_lines_) {
+    const auto& [lines, more] = seen;
     std::vector<std::string> at;
     for (int l : lines) at.push_back(std::to_string(l));
+    if (more > 0) at.push_back(fmt::format("and {} more", more));
     problem(0, fmt::format("sheet {} is submitted {} times (lines {}): every submission is marked and flagged", id,
-                           lines.size(), fmt::join(at, ", ")),
+                           lines.size() + more, fmt::join(at, ", ")),
             false, "duplicate_summary");
     outcome_.duplicates.emplace_back(id, lines);
   }

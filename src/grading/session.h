@@ -12,6 +12,7 @@
 // not ask. Errors (data that could not be read) make the exit status 1; warnings do not.
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -44,7 +45,7 @@ struct Outcome {
   int errors = 0, warnings = 0;
   std::vector<Problem> problems;  // the first kKeptProblems
   int problems_not_kept = 0;
-  std::vector<std::pair<std::string, std::vector<int>>> duplicates;  // sheet → its lines
+  std::vector<std::pair<std::string, std::vector<int>>> duplicates;  // sheet → its first lines
 
   int exit_status() const { return errors > 0 ? 1 : 0; }
 };
@@ -104,15 +105,19 @@ class GradingSession final : public RowHandler {
   std::vector<int> question_column_;  // by question id index → answers column or −1
   std::vector<int> column_question_;  // by answers column → question id index or −1
   std::map<std::string, bool, std::less<>> warned_columns_;
-  std::unordered_map<const SheetKey*, SheetColumns> columns_;
+  std::vector<std::unique_ptr<SheetColumns>> columns_;  // by sheet index, made on first use
 
   // per row, reused
   Submission current_;
   std::vector<ExerciseMarks> marks_;
   std::vector<std::string_view> cells_;
-  std::string row_text_;
-  std::unordered_map<std::string, int> seen_;       // sheet → first line, without sheet_counts
-  std::map<std::string, std::vector<int>> duplicate_lines_;
+  std::vector<std::string> transcoded_;
+  std::vector<std::string_view> transcoded_views_;
+  std::vector<int> counts_;      // by sheet index: rows carrying it (first pass)
+  std::vector<int> first_line_;  // by sheet index: where it was first seen, 0 not yet
+  // sheet → the first lines it is on, and how many more
+  std::map<std::string, std::pair<std::vector<int>, int>> duplicate_lines_;
+  static constexpr std::size_t kNamedLines = 10;
   bool transcoded_warned_ = false;
 };
 

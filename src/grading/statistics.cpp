@@ -29,7 +29,7 @@ void ClassStatistics::add(const Submission& s) {
       QuestionRate& r = questions_[static_cast<std::size_t>(index[q])];
       const QuestionMark& m = marks[q];
       ++r.asked;
-      const double full = s.sheet->exercises[e].questions[q].points;
+      const double full = s.sheet->exercises[e].hot[q].points;
       if (m.points >= full && (m.verdict == Verdict::right || m.verdict == Verdict::follow_through)) ++r.credited;
       if (m.verdict == Verdict::follow_through) ++r.follow_through;
       if (m.verdict == Verdict::unanswered) ++r.unanswered;
