@@ -60,6 +60,29 @@ class Reader {
     return node->as_string()->get();
   }
 
+  // A string, or a table of strings by language ({ en = "…", fr = "…" }): the value in
+  // `language`, else `fallback`; every language given goes into `by_language[lang].*field`.
+  std::string localized(const toml::table& t, std::string_view key, std::string_view language,
+                        std::string fallback, std::map<std::string, SpecWords>& by_language,
+                        std::string SpecWords::*field) const {
+    const toml::node* node = t.get(key);
+    if (!node) return fallback;
+    if (node->is_string()) return node->as_string()->get();
+    const auto* table = node->as_table();
+    if (!table) fail(*node, key, "expected a string, or a table of strings by language ({ en = \"…\", fr = \"…\" })");
+    std::string value = std::move(fallback);
+    for (const auto& [lang, v] : *table) {
+      const std::string name = qualified(key, lang.str());
+      bool known = false;
+      for (const auto& l : builtin_languages()) known = known || l == lang.str();
+      if (!known) fail(v, name, "unknown language (languages: en, fr)");
+      if (!v.is_string()) fail(v, name, "expected a string");
+      by_language[std::string(lang.str())].*field = v.as_string()->get();
+      if (lang.str() == language) value = v.as_string()->get();
+    }
+    return value;
+  }
+
   double number(const toml::node& node, std::string_view key) const {
     if (auto i = node.as_integer()) return static_cast<double>(i->get());
     if (auto f = node.as_floating_point()) {
@@ -193,16 +216,17 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
   WorksheetSpec spec;
   spec.source = std::string(source_name);
   spec.text = std::string(toml_text);
-  spec.title = r.string(root, "", "title", "Worksheet");
-  spec.course = r.string(root, "", "course", "");
-  spec.author = r.string(root, "", "author", "");
-  spec.subject = r.string(root, "", "subject", "");
   spec.language = r.string(root, "", "language", "en");
   {
     bool known = false;
     for (const auto& l : builtin_languages()) known = known || l == spec.language;
     if (!known) r.fail(*root.get("language"), "language", "expected en or fr");
   }
+  auto& by = spec.words_by_language;
+  spec.title = r.localized(root, "title", spec.language, "Worksheet", by, &SpecWords::title);
+  spec.course = r.localized(root, "course", spec.language, "", by, &SpecWords::course);
+  spec.author = r.localized(root, "author", spec.language, "", by, &SpecWords::author);
+  spec.subject = r.localized(root, "subject", spec.language, "", by, &SpecWords::subject);
   spec.page = r.string(root, "", "page", "A4");
   if (spec.page != "A4" && spec.page != "letter")
     r.fail(*root.get("page"), "page", "expected \"A4\" or \"letter\"");
@@ -233,6 +257,15 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
     spec.exercises.push_back(read_exercise(r, *t, prefix, difficulty, node));
   }
   return spec;
+}
+
+SpecWords WorksheetSpec::words_in(std::string_view lang) const {
+  SpecWords words{title, course, author, subject};
+  const auto it = words_by_language.find(std::string(lang));
+  if (it == words_by_language.end()) return words;
+  for (auto field : {&SpecWords::title, &SpecWords::course, &SpecWords::author, &SpecWords::subject})
+    if (!(it->second.*field).empty()) words.*field = it->second.*field;
+  return words;
 }
 
 WorksheetSpec builtin_spec() {

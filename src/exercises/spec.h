@@ -33,12 +33,27 @@ struct ExerciseSpec {
   double points = 1;  // default points of each question
 };
 
-struct WorksheetSpec {
-  std::string source;  // where it was read from, for messages
+// The spec's own words, printed on every page and in the PDF's metadata.
+struct SpecWords {
   std::string title;
   std::string course;
   std::string author;
   std::string subject;
+};
+
+struct WorksheetSpec {
+  std::string source;  // where it was read from, for messages
+  // In the spec's language. Each may also be written per language, `title = { en = "…",
+  // fr = "…" }`, so that one spec serves `--lang en` and `--lang fr`: see words_in.
+  std::string title;
+  std::string course;
+  std::string author;
+  std::string subject;
+  std::map<std::string, SpecWords> words_by_language;  // only the languages the file names
+
+  // The words to print in `language`: those the file gives for it, the spec language's for the
+  // rest (a teacher who translates only the title still gets a course line).
+  SpecWords words_in(std::string_view language) const;
   std::string language = "en";
   std::string page = "A4";  // "A4" or "letter"
   int decimals = 2;         // students round data-derived answers to this many decimals

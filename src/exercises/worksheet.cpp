@@ -13,6 +13,12 @@ WorksheetSet::WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOpti
     throw SpecError(fmt::format("seed {} is out of range: sheet ids hold seeds from 0 to {}", seed_, kMaxSeed));
   language_ = options.language.value_or(spec_.language);
   Texts::builtin(language_);  // throws for a language without texts
+  // From here on the spec speaks the set's language: pages, key.json, index and metadata.
+  const SpecWords words = spec_.words_in(language_);
+  spec_.title = words.title;
+  spec_.course = words.course;
+  spec_.author = words.author;
+  spec_.subject = words.subject;
   if (options.difficulty)
     for (auto& e : spec_.exercises) e.difficulty = *options.difficulty;
   for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {

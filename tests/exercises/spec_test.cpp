@@ -52,6 +52,40 @@ constraints = { t_margin = 0.2 }
   CHECK(e.constraints.at("t_margin") == doctest::Approx(0.2).epsilon(1e-15));
 }
 
+TEST_CASE("title, course, author and subject may be given per language") {
+  const auto spec = parse_spec(R"(
+language = "en"
+title = { en = "Utilities", fr = "Utilitaires" }
+course = "Graphics"
+subject = { fr = "Produits" }
+[[exercise]]
+kind = "projection"
+)", "w.toml");
+  CHECK(spec.title == "Utilities");
+  CHECK(spec.course == "Graphics");
+  CHECK(spec.subject == "");  // no English subject given
+  const auto fr = spec.words_in("fr");
+  CHECK(fr.title == "Utilitaires");
+  CHECK(fr.course == "Graphics");  // not translated: the spec language's words
+  CHECK(fr.subject == "Produits");
+  const auto en = spec.words_in("en");
+  CHECK(en.title == "Utilities");
+  CHECK(en.subject == "");
+
+  SUBCASE("the built-in course speaks both languages") {
+    const auto course = epure::builtin_spec();
+    CHECK(course.words_in("fr").title != course.words_in("en").title);
+    CHECK(course.words_in("fr").course != course.words_in("en").course);
+  }
+  SUBCASE("an unknown language or a non-string is an error naming the key") {
+    const auto e = error_of("title = { de = \"Titel\" }\n[[exercise]]\nkind = \"projection\"\n");
+    CHECK(e.find("my.toml:1:") == 0);
+    CHECK(e.find("'title.de'") != std::string::npos);
+    CHECK(error_of("title = { en = 3 }\n[[exercise]]\nkind = \"projection\"\n").find("'title.en'") != std::string::npos);
+    CHECK(error_of("title = 3\n[[exercise]]\nkind = \"projection\"\n").find("'title'") != std::string::npos);
+  }
+}
+
 TEST_CASE("every mistake names the file, the line and the key") {
   SUBCASE("1. not TOML") { CHECK(error_of("title = \n").find("my.toml:1:") == 0); }
   SUBCASE("2. unknown top-level key") {
