@@ -3,6 +3,7 @@
 // over many seeds.
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -171,4 +172,21 @@ TEST_CASE("records longer than the read buffer, from a file") {
   CHECK(count == 3000);
   CHECK(last_line == 1 + 2 * 3000);
   std::filesystem::remove(path);
+}
+
+// A line of 3 MB made of stray quotes in an unquoted cell ('a"a"a"…'): each quote sends the
+// reader to its slow path and back, and it once searched for the line's end again every time,
+// 25 s for this line (quadratic). Now each byte is looked at a bounded number of times.
+TEST_CASE("regression: stray quotes on a very long line are read in linear time") {
+  std::string line = "1000-0005-002N;";
+  for (int i = 0; i < 1500000; ++i) line += "a\"";
+  const auto start = std::chrono::steady_clock::now();
+  auto r = CsvReader::from_text("sheet;1.t\n" + line + "\nx;y\n");
+  const auto rows = all(r);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[1].size() == 2);
+  CHECK(rows[1][1].size() == 3000000);
+  CHECK(rows[2] == std::vector<std::string>{"x", "y"});
+  CHECK(seconds < 5);  // linear: milliseconds; the quadratic reader took 25 s
 }
