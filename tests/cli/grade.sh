@@ -144,6 +144,15 @@ for x, y in zip(a["submissions"], b["submissions"]):
         assert py[q["id"]] == q["points"], (x["sheet"], q["id"], q["points"], py[q["id"]])
 PY
 
+# the spec as a file (the built-in one, templates/course.toml) marks as --spec builtin does
+"$EPURE" grade --spec "$EPURE_SOURCE_DIR/templates/course.toml" --answers "$data/export_fr.csv" --json "$tmp/spec_file.json" -q \
+  >/dev/null 2>"$tmp/spec_file.err" || fail "--spec FILE: exit $? ($(cat "$tmp/spec_file.err"))"
+python3 - "$tmp/spec.json" "$tmp/spec_file.json" <<'PY' || fail "--spec FILE marks differ from --spec builtin's"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+assert [s["score"] for s in a["submissions"]] == [s["score"] for s in b["submissions"]]
+PY
+
 # feedback sheets: one per student and the class histogram, well-formed and renderable
 [ "$(ls "$tmp/fb" | wc -l)" -eq 5 ] || fail "expected 4 feedback sheets and class.svg, got: $(ls "$tmp/fb")"
 for f in "$tmp"/fb/*.svg "$tmp/hist.svg"; do
