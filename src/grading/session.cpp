@@ -219,6 +219,8 @@ void GradingSession::row(const AnswerRow& in) {
     flag(s, "malformed", "text after a closing quote, kept in its cell (a quote inside a cell is written \"\")", true);
   else if (r.problem == "not_an_object")
     flag(s, "malformed", "not a JSON object: nothing on it could be read", true);
+  else if (r.problem == "too_many_names")
+    flag(s, "malformed", "names beyond the file's first 1024 different ones are not read", true);
 
   if (r.cells.size() < width && r.problem.empty()) {
     flag(s, "ragged", fmt::format("{} cells where the header has {}: the missing ones read as not answered", r.cells.size(), width),
