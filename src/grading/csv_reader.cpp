@@ -100,10 +100,11 @@ void CsvReader::start(std::optional<char> delimiter) {
 }
 
 bool CsvReader::find_record(std::size_t& end, std::size_t& next, bool& quoted, bool& unclosed) {
-  std::size_t pos = begin_;
-  State st = State::field_start;
   quoted = false;
   unclosed = false;
+  if (begin_ == end_ && eof_) return false;  // nothing left (and an empty text has no buffer at all)
+  std::size_t pos = begin_;
+  State st = State::field_start;
   // The next line end at or after pos, and how far none was found, both relative to begin_
   // (fill() moves the buffer): a line with many stray quotes in unquoted cells comes back to
   // the fast path once per quote, and must not search for its end again each time (that was

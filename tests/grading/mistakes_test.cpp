@@ -3,6 +3,7 @@
 // codes the graders declare (a new code without a case here fails the last check).
 #include <doctest/doctest.h>
 
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -96,14 +97,14 @@ std::vector<Case> cases() {
 
 epure::test::Marked mark_case(const Case& c) {
   // the fixture takes an initializer list; rebuild the cells by hand
-  std::vector<std::string> storage(c.key.questions.size());
+  auto storage = std::make_shared<std::vector<std::string>>(c.key.questions.size());
   for (const auto& [field, text] : c.answers) {
     const int i = c.key.find(field);
     REQUIRE_MESSAGE(i >= 0, field);
-    storage[static_cast<std::size_t>(i)] = text;
+    (*storage)[static_cast<std::size_t>(i)] = text;
   }
-  std::vector<std::string_view> cells(storage.begin(), storage.end());
-  epure::test::Marked m{&c.key, {}};
+  std::vector<std::string_view> cells(storage->begin(), storage->end());
+  epure::test::Marked m{&c.key, {}, storage};
   epure::grading::mark_exercise(c.key, cells, epure::grading::MarkingOptions{}, m.marks);
   return m;
 }
