@@ -12,6 +12,8 @@ data="$EPURE_SOURCE_DIR/tests/grading/data"
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 files=${GRADE_FUZZ_FILES:-60}
+# under ASan/UBSan a finding must not pass for exit status 1 ("something could not be read")
+export ASAN_OPTIONS="exitcode=86:${ASAN_OPTIONS:-}" UBSAN_OPTIONS="exitcode=86:${UBSAN_OPTIONS:-}"
 seed=${GRADE_FUZZ_SEED:-1}
 
 for i in $(seq "$files"); do
@@ -49,7 +51,7 @@ PY
   timeout 10 "$EPURE" grade --key "$data/key_small.json" --answers "$tmp/answers.csv" --json "$tmp/m.json" \
     --report "$tmp/r.csv" -q >/dev/null 2>"$tmp/err"
   st=$?
-  if [ "$st" -gt 2 ]; then
+  if [ "$st" -gt 2 ] || grep -aq -e "ERROR: AddressSanitizer" -e "runtime error:" "$tmp/err"; then
     cp "$tmp/answers.csv" "/tmp/grade_fuzz_failure_$i.csv" 2>/dev/null
     fail "file $i (seed $seed): exit $st (124 = hung) — kept as /tmp/grade_fuzz_failure_$i.csv: $(head -c 300 "$tmp/err")"
     continue
