@@ -5,14 +5,15 @@
 # (semicolons, decimal commas, CRLF, quoted names), cycling through the sheets: about 70 % of
 # the answers right, the rest rounded differently, wrong, blank, or a named mistake; and times
 # `taskset -c CPU epure grade --key … --answers … --report …` over RUNS runs (median), once
-# with ROWS rows and once with ROWS/4, printing rows/s and the peak resident memory of each.
+# with ROWS rows and once with ROWS/10, printing rows/s and the peak resident memory of each
+# (GNU time's maximum RSS). A run whose exit status is 2 (nothing graded) stops the benchmark.
 #
 #   bench/grade_bench.sh [BUILD_DIR] [ROWS] [RUNS] [CPU] [SHEETS]     EPURE=path for another binary
 set -eu
 build=${1:-build-bench}
-rows=${2:-400000}
+rows=${2:-1000000}
 runs=${3:-5}
-cpu=${4:-1}
+cpu=${4:-0}
 sheets=${5:-1000}
 epure=${EPURE:-$build/epure}
 work=${BENCH_DIR:-$(mktemp -d)}
@@ -55,14 +56,18 @@ with open(sys.argv[2], "w", newline="", encoding="utf-8-sig") as f:
         row = per_sheet[i % len(per_sheet)]
         w.writerow([row[0], f"Étudiant {i}, groupe {i % 7}"] + row[1:])
 PY
-head -n $((rows / 4 + 1)) "$work/answers.csv" >"$work/answers_quarter.csv"
+head -n $((rows / 10 + 1)) "$work/answers.csv" >"$work/answers_tenth.csv"
 
 measure() {  # FILE ROWS
   local file=$1 n=$2 times=() peak=0
   for _ in $(seq "$runs"); do
     /usr/bin/time -f "%e %M" -o "$work/time" taskset -c "$cpu" "$epure" grade --key "$work/set/key.json" \
-      --answers "$file" --report "$work/report.csv" -q >/dev/null 2>&1 || true
-    read -r secs kb <"$work/time"
+      --answers "$file" --report "$work/report.csv" -q >/dev/null 2>"$work/err" && st=0 || st=$?
+    [ "$st" -le 1 ] || { echo "epure grade failed (exit $st): $(head -3 "$work/err")" >&2; exit 1; }
+    local reported
+    reported=$(($(wc -l <"$work/report.csv") - 1))
+    [ "$reported" -eq "$n" ] || { echo "rows in $n, reported $reported" >&2; exit 1; }
+    read -r secs kb < <(tail -1 "$work/time")
     times+=("$secs")
     [ "$kb" -gt "$peak" ] && peak=$kb
   done
@@ -72,5 +77,5 @@ measure() {  # FILE ROWS
     "$n" "$median" "$peak"
 }
 echo "epure grade, $sheets-sheet key, $(du -h "$work/answers.csv" | cut -f1) of answers, CPU $cpu, $runs runs:"
-measure "$work/answers_quarter.csv" $((rows / 4))
+measure "$work/answers_tenth.csv" $((rows / 10))
 measure "$work/answers.csv" "$rows"

@@ -51,6 +51,7 @@ class JsonRows {
     if (!o.is_object()) {
       problem = "not_an_object";
     } else {
+      dropped_ = false;
       for (const auto& [k, v] : o.items()) {
         if (k == "answers" && v.is_object()) {
           for (const auto& [ak, av] : v.items()) put(ak, av, grew);
@@ -58,6 +59,7 @@ class JsonRows {
           put(k, v, grew);
         }
       }
+      if (dropped_) problem = "too_many_names";
     }
     if (grew) handler_.header(names_, 0);
     views_.assign(cells_.begin(), cells_.end());
@@ -66,7 +68,19 @@ class JsonRows {
   }
 
  private:
+  // Every row is as wide as the names seen so far: a file with a new name on every line would
+  // make the work grow as rows × names (53 s for 20,000 lines). Past kMaxNames different names,
+  // a new one is not a column: the row says so (too_many_names), nothing is dropped silently.
+  static constexpr std::size_t kMaxNames = 1024;
+  static constexpr std::size_t kNoColumn = static_cast<std::size_t>(-1);
+
   std::size_t column(const std::string& name, bool& grew) {
+    if (names_.size() >= kMaxNames) {
+      const auto it = index_.find(name);
+      if (it != index_.end()) return it->second;
+      dropped_ = true;
+      return kNoColumn;
+    }
     auto [it, fresh] = index_.emplace(name, names_.size());
     if (fresh) {
       names_.push_back(name);
@@ -78,28 +92,37 @@ class JsonRows {
 
   void put(const std::string& name, const json& v, bool& grew) {
     if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number()) {
-      cells_[column(name + ".x", grew)] = text(v[0]);
-      cells_[column(name + ".y", grew)] = text(v[1]);
+      set(column(name + ".x", grew), text(v[0]));
+      set(column(name + ".y", grew), text(v[1]));
       return;
     }
-    cells_[column(name, grew)] = text(v);
+    set(column(name, grew), text(v));
+  }
+  void set(std::size_t c, std::string value) {
+    if (c != kNoColumn) cells_[c] = std::move(value);
   }
 
-  static std::string text(const json& v) {
+  // A value as the cell a spreadsheet would hold. Arrays are flattened (faces, a point's two
+  // coordinates) a few levels deep at most, and an object is not an answer: a file of
+  // [[[[…]]]] a million deep or an object inside an answer becomes an unreadable cell, not a
+  // recursion as deep as the file (that overflowed the stack).
+  static std::string text(const json& v, int depth = 0) {
+    constexpr int kMaxDepth = 4;
     if (v.is_string()) return v.get<std::string>();
     if (v.is_null()) return {};
     if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
     if (v.is_number_integer()) return std::to_string(v.get<long long>());
     if (v.is_number()) return fmt::format("{}", v.get<double>());
     if (v.is_array()) {
+      if (depth >= kMaxDepth) return "[…]";
       std::string out;
       for (const auto& e : v) {
         if (!out.empty()) out += ' ';
-        out += text(e);
+        out += text(e, depth + 1);
       }
       return out.empty() ? std::string("none") : out;  // [] is the empty set of faces
     }
-    return v.dump();
+    return "{…}";
   }
 
   RowHandler& handler_;
@@ -108,6 +131,7 @@ class JsonRows {
   std::unordered_map<std::string, std::size_t> index_;
   std::vector<std::string> cells_;
   std::vector<std::string_view> views_;
+  bool dropped_ = false;
 };
 
 // A JSON array of objects, each handed on as soon as it closes and then dropped.
@@ -118,7 +142,8 @@ void read_json_array(Input&& input, RowHandler& handler, SourceInfo& info) {
   JsonRows rows(handler, info);
   int record = 0;
   auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (depth == 1 && (event == json::parse_event_t::object_end || event == json::parse_event_t::value)) {
+    if (depth == 1 && (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end ||
+                       event == json::parse_event_t::value)) {
       rows.object(parsed, ++record);
       return false;
     }

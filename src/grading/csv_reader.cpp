@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -99,18 +100,31 @@ void CsvReader::start(std::optional<char> delimiter) {
 }
 
 bool CsvReader::find_record(std::size_t& end, std::size_t& next, bool& quoted, bool& unclosed) {
-  std::size_t pos = begin_;
-  State st = State::field_start;
   quoted = false;
   unclosed = false;
+  if (begin_ == end_ && eof_) return false;  // nothing left (and an empty text has no buffer at all)
+  std::size_t pos = begin_;
+  State st = State::field_start;
+  // The next line end at or after pos, and how far none was found, both relative to begin_
+  // (fill() moves the buffer): a line with many stray quotes in unquoted cells comes back to
+  // the fast path once per quote, and must not search for its end again each time (that was
+  // quadratic in the line's length, minutes on a few megabytes without a line break).
+  constexpr std::size_t kUnknown = static_cast<std::size_t>(-1);
+  std::size_t nl_rel = kUnknown, clean_rel = 0;
   for (;;) {
     if (st == State::field_start || st == State::unquoted) {
       // fast path: no quote before the line's end means the record ends there
       const char* base = buf_.data();
-      const auto* nl = static_cast<const char*>(std::memchr(base + pos, newline_, end_ - pos));
-      const std::size_t limit = nl ? static_cast<std::size_t>(nl - base) : end_;
+      if (nl_rel == kUnknown || begin_ + nl_rel < pos) {
+        const std::size_t from = std::max(pos, begin_ + clean_rel);
+        const auto* nl = static_cast<const char*>(std::memchr(base + from, newline_, end_ - from));
+        nl_rel = nl ? static_cast<std::size_t>(nl - base) - begin_ : kUnknown;
+        if (!nl) clean_rel = end_ - begin_;
+      }
+      const bool found = nl_rel != kUnknown;
+      const std::size_t limit = found ? begin_ + nl_rel : end_;
       if (!std::memchr(base + pos, '"', limit - pos)) {
-        if (nl) {
+        if (found) {
           end = limit;
           next = limit + 1;
           return true;

@@ -111,9 +111,12 @@ class Parser {
     return true;
   }
 
+  // Every loop below stops at the first failure, and every turn of a loop consumes input
+  // (an operator, or an atom that advanced), so the parser is linear in the cell's length.
   double sum() {
     double v = product();
     for (;;) {
+      if (failed_) return 0;
       skip();
       if (take("+")) v += product();
       else if (take("-") || take(kMinus)) v -= product();
@@ -124,6 +127,7 @@ class Parser {
   double product() {
     double v = unary();
     for (;;) {
+      if (failed_) return 0;
       skip();
       if (take("*") || take(kTimes) || take(kDot)) {
         v *= unary();
@@ -135,7 +139,12 @@ class Parser {
         }
         v /= d;
       } else if (starts_atom()) {
-        v *= power();  // implicit product: 2√3, 2sqrt(3), 3(1+√2)
+        // implicit product: 2√3, 2sqrt(3), 3(1+√2). An atom that fails leaves the position
+        // where it was: that ends the loop, never starts another turn of it. (Before, "√-√"
+        // failed on "-", then "√" started an atom that returned at once, forever.)
+        const std::size_t before = pos_;
+        v *= power();
+        if (!failed_ && pos_ == before) fail("number");
       } else {
         return v;
       }
@@ -150,7 +159,20 @@ class Parser {
     return false;
   }
 
+  // Nesting is bounded: "((((…", "----…" or "√√√…" a million deep is not a number a student
+  // typed, and must not overflow the stack.
+  struct Depth {
+    explicit Depth(Parser& p) : p_(p) {
+      if (++p_.depth_ > kMaxDepth) p_.fail("number");
+    }
+    ~Depth() { --p_.depth_; }
+    Parser& p_;
+  };
+  static constexpr int kMaxDepth = 64;
+
   double unary() {
+    Depth guard(*this);
+    if (failed_) return 0;
     skip();
     if (take("+")) return unary();
     if (take("-") || take(kMinus)) return -unary();
@@ -166,6 +188,7 @@ class Parser {
   }
 
   double atom() {
+    Depth guard(*this);
     skip();
     if (failed_ || pos_ >= s_.size()) {
       fail("number");
@@ -222,12 +245,17 @@ class Parser {
   std::string_view s_;
   std::size_t pos_ = 0;
   bool failed_ = false;
+  int depth_ = 0;
   std::string_view why_;
 };
 
 }  // namespace
 
 ParsedNumber parse_number(std::string_view text) {
+  // No number a student types is longer than this; a longer cell is not parsed at all, so the
+  // work per cell is bounded whatever the file holds.
+  constexpr std::size_t kMaxNumberLength = 256;
+  if (text.size() > kMaxNumberLength) return {false, 0, "number"};
   double v = 0;
   if (fast_decimal(text, v)) return {true, v, {}};
   return Parser(text).run();

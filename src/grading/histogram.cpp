@@ -22,7 +22,8 @@ render::Scene histogram_scene(const ClassStatistics& stats, const FeedbackText& 
                                                           {"mean", text.number(stats.mean())},
                                                           {"median", text.number(stats.median())}});
   render::Panel p;
-  p.view = {-top * 0.08, -top * 0.12, top * 1.04, highest * unit + top * 0.1};
+  // room right of the axis for its name, so that it never sits on the last bar
+  p.view = {-top * 0.08, -top * 0.12, top * 1.14, highest * unit + top * 0.1};
   p.caption = s.description;
   for (const auto& b : bins) {
     if (b.count > 0) {

@@ -13,6 +13,22 @@ namespace epure::grading {
 
 namespace {
 
+// Control characters written as escapes (\n, \t, \x00): a problem is one line of the
+// terminal, whatever the file's cells and header hold.
+std::string one_line(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out;
+}
+
 // "2.t “abc”": a cell quoted in a message, cut when long.
 std::string quoted(std::string_view s) {
   constexpr std::size_t kMax = 40;
@@ -53,6 +69,7 @@ GradingSession::GradingSession(const AnswerKey& key, SessionOptions options)
 }
 
 void GradingSession::problem(int line, std::string message, bool error, std::string_view kind) {
+  message = one_line(message);
   (error ? outcome_.errors : outcome_.warnings)++;
   int& printed = printed_[std::string(kind)];
   if (options_.log) {
@@ -128,7 +145,7 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     throw std::runtime_error(fmt::format("{}:{}: no sheet column: the header row needs a column named 'sheet' "
                                          "(the sheet id of each row); it has: {}",
                                          options_.answers_name, std::max(header_line_, 1),
-                                         fmt::join(names_, ", ")));
+                                         one_line(fmt::format("{}", fmt::join(names_, ", ")))));
 }
 
 const GradingSession::SheetColumns& GradingSession::columns_for(const SheetKey& sheet) {
@@ -202,6 +219,8 @@ void GradingSession::row(const AnswerRow& in) {
     flag(s, "malformed", "text after a closing quote, kept in its cell (a quote inside a cell is written \"\")", true);
   else if (r.problem == "not_an_object")
     flag(s, "malformed", "not a JSON object: nothing on it could be read", true);
+  else if (r.problem == "too_many_names")
+    flag(s, "malformed", "names beyond the file's first 1024 different ones are not read", true);
 
   if (r.cells.size() < width && r.problem.empty()) {
     flag(s, "ragged", fmt::format("{} cells where the header has {}: the missing ones read as not answered", r.cells.size(), width),

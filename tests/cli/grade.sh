@@ -30,7 +30,9 @@ for s in subs:
     q = s["questions"]
     assert abs(sum(x["points"] for x in q) - s["score"]) < 1e-9, s["student"]
     assert abs(sum(x["max_points"] for x in q) - s["max"]) < 1e-9, s["student"]
+    assert {"line", "sheet", "student", "marked", "score", "max", "flags", "questions"} <= set(s), set(s)
     for x in q:
+        assert {"id", "expected", "given", "verdict", "points", "max_points", "feedback", "mistake"} <= set(x), set(x)
         assert x["verdict"] in ("right", "follow_through", "wrong", "unanswered", "unreadable"), x
         if x["verdict"] == "right":
             assert x["feedback"] == "" and x["points"] == x["max_points"], x
@@ -61,6 +63,11 @@ q = {x["id"]: x for x in by["Müller, Jörg"]["questions"]}
 assert q["1.norm_u"]["mistake"] == "norm_not_rooted" and q["1.cos"]["verdict"] == "follow_through"
 st = marks["statistics"]
 assert st["rows"] == 4 and st["marked"] == 4
+assert {"mean", "median", "min", "max", "questions", "mistakes", "histogram"} <= set(st), set(st)
+scores = sorted(s["score"] for s in subs)
+rate = {x["id"]: x["success_rate"] for x in st["questions"]}
+assert rate["1.cross"] == 0.75 and rate["1.dot"] == 1, rate
+assert abs(st["mean"] - sum(scores) / 4) < 1e-9 and abs(st["median"] - (scores[1] + scores[2]) / 2) < 1e-9, st
 codes = {(m["code"], m["question"]) for m in st["mistakes"]}
 assert ("far_intersection", "4.t") in codes and ("t_unsquared_norm", "2.t") in codes, codes
 assert marks["exit_status"] == 0 and marks["errors"] == 0
@@ -135,6 +142,15 @@ for x, y in zip(a["submissions"], b["submissions"]):
     py = {q["id"]: q["points"] for q in y["questions"]}
     for q in x["questions"]:
         assert py[q["id"]] == q["points"], (x["sheet"], q["id"], q["points"], py[q["id"]])
+PY
+
+# the spec as a file (the built-in one, templates/course.toml) marks as --spec builtin does
+"$EPURE" grade --spec "$EPURE_SOURCE_DIR/templates/course.toml" --answers "$data/export_fr.csv" --json "$tmp/spec_file.json" -q \
+  >/dev/null 2>"$tmp/spec_file.err" || fail "--spec FILE: exit $? ($(cat "$tmp/spec_file.err"))"
+python3 - "$tmp/spec.json" "$tmp/spec_file.json" <<'PY' || fail "--spec FILE marks differ from --spec builtin's"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+assert [s["score"] for s in a["submissions"]] == [s["score"] for s in b["submissions"]]
 PY
 
 # feedback sheets: one per student and the class histogram, well-formed and renderable

@@ -130,7 +130,31 @@ grade cp
 [ "$(grep -c "Windows-1252" "$tmp/cp.err")" -eq 1 ] || fail "Windows-1252 not said exactly once"
 grep -q '"Lefèvre, Zoé"' "$tmp/cp.json" || fail "Windows-1252 name not transcoded"
 
-# 12. every problem names the file, and a line where it has one
+# 12. JSON answers nested a million deep, an object as an answer, a new name on every line:
+# no crash (the flattening once recursed as deep as the file), no hang, every row reported
+python3 - "$tmp/deep.csv" "$tmp/wide.csv" <<'PY'
+import json, sys
+deep = "[" * 1000000 + "]" * 1000000
+with open(sys.argv[1], "w") as f:
+    f.write('{"sheet": "1000-0005-002N", "answers": {"2.t": ' + deep + ', "1.dot": {"a": [1, {"b": 2}]}}}\n')
+    f.write('{"sheet": "1000-0005-0089", "answers": {"2.t": "0,5"}}\n')
+with open(sys.argv[2], "w") as f:
+    for i in range(20000):
+        f.write(json.dumps({"sheet": "1000-0005-002N", f"extra{i}": "x"}) + "\n")
+PY
+printf '[{"sheet": "1000-0005-002N"}, [1, 2], [[[3]]], 7, "x", {"sheet": "1000-0005-0089"}]' >"$tmp/mixed.csv"
+grade mixed
+[ "$(report_rows mixed)" -eq 6 ] || fail "a JSON array of objects and others: rows in 6, reported $(report_rows mixed)"
+says mixed "mixed.csv:3: error: not a JSON object"
+grade deep
+[ "$(status deep)" -eq 1 ] || fail "deep JSON: exit $(status deep): $(head -c 300 "$tmp/deep.err")"
+[ "$(report_rows deep)" -eq 2 ] || fail "deep JSON: rows in 2, reported $(report_rows deep)"
+timeout 60 "$EPURE" grade --key "$key" --answers "$tmp/wide.csv" --report "$tmp/wide.report.csv" -q >/dev/null 2>"$tmp/wide.err"
+st=$?
+[ "$st" -le 1 ] || fail "a new JSON name on each of 20,000 lines: exit $st (124 = over 60 s)"
+[ "$(report_rows wide)" -eq 20000 ] || fail "wide JSON: rows in 20000, reported $(report_rows wide)"
+
+# 13. every problem names the file, and a line where it has one
 for f in "$tmp"/*.err; do
   while IFS= read -r line; do
     case "$line" in

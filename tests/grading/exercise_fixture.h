@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <initializer_list>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +54,9 @@ inline grading::ExerciseKey exercise(const std::string& instance, std::vector<st
 struct Marked {
   const grading::ExerciseKey* key;
   grading::ExerciseMarks marks;
+  // the cells' text: marks keep views of it (what was given), so it lives as long as they do,
+  // on the heap, where moving a Marked never moves a string
+  std::shared_ptr<const std::vector<std::string>> cells;
 
   const grading::QuestionMark& operator[](const std::string& field) const {
     const int i = key->find(field);
@@ -69,16 +73,16 @@ struct Marked {
 // Cells by field; the others blank.
 inline Marked mark(const grading::ExerciseKey& key, std::initializer_list<std::pair<std::string, std::string>> answers,
                    bool follow_through = true) {
-  std::vector<std::string> storage(key.questions.size());
+  auto storage = std::make_shared<std::vector<std::string>>(key.questions.size());
   for (const auto& [field, text] : answers) {
     const int i = key.find(field);
     REQUIRE_MESSAGE(i >= 0, field);
-    storage[static_cast<std::size_t>(i)] = text;
+    (*storage)[static_cast<std::size_t>(i)] = text;
   }
-  std::vector<std::string_view> cells(storage.begin(), storage.end());
+  std::vector<std::string_view> cells(storage->begin(), storage->end());
   grading::MarkingOptions options;
   options.follow_through = follow_through;
-  Marked m{&key, {}};
+  Marked m{&key, {}, storage};
   grading::mark_exercise(key, cells, options, m.marks);
   return m;
 }

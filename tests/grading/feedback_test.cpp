@@ -1,0 +1,82 @@
+// The sentences students read (every mistake code of every grader has them in English and
+// French), the expected answers as the key prints them, and the wrong points drawn on a
+// diagram.
+#include <doctest/doctest.h>
+
+#include "exercises/texts.h"
+#include "grading/exercise_fixture.h"
+#include "grading/feedback_sheet.h"
+#include "grading/feedback_text.h"
+#include "grading/histogram.h"
+#include "grading/kind_grader.h"
+
+using namespace epure::grading;
+
+TEST_CASE("every mistake code has its sentence in every language") {
+  for (const auto& language : epure::builtin_languages()) {
+    const auto& texts = epure::Texts::builtin(language);
+    for (const auto* grader : all_graders())
+      for (auto code : grader->mistakes()) {
+        CAPTURE(language);
+        CAPTURE(code);
+        CHECK(texts.has("grading.mistake." + std::string(code)));
+      }
+  }
+}
+
+TEST_CASE("sentences: named mistake, follow-through, unanswered, unreadable") {
+  const auto key = epure::test::exercise(R"({"kind":"projection","A":[1,1],"B":[5,4],"C":[2,6]})",
+                                         {"t", "P.x", "P.y", "position"}, {}, "isclose");
+  const auto m = epure::test::mark(key, {{"t", "3.8"}, {"P.x", "16.2"}, {"P.y", "12.4"}});
+  const FeedbackText en("en", 2), fr("fr", 2);
+  CHECK(en.sentence(key.questions[0], m["t"]).find("Expected 0.76, you gave 3.8.") == 0);
+  CHECK(en.sentence(key.questions[0], m["t"]).find("‖AB‖²") != std::string::npos);
+  CHECK(en.sentence(key.questions[1], m["P.x"]).find("Right from your own t = 3.8") == 0);
+  CHECK(fr.sentence(key.questions[1], m["P.x"]).find("report d’erreur") != std::string::npos);
+  CHECK(en.sentence(key.questions[3], m["position"]) == "Not answered: expected between A and B.");
+  CHECK(fr.expected(key.questions[0]) == "0,76");
+  auto with_exact = key.questions[0];
+  with_exact.exact = "19/25";
+  CHECK(fr.expected(with_exact) == "0,76 (= 19/25)");
+  with_exact.exact = "25*sqrt(1066)/1066";  // too long to help: left out
+  CHECK(en.expected(with_exact) == "0.76");
+  CHECK(en.explanation(key.questions[3], m["position"]).empty());
+  const auto u = epure::test::mark(key, {{"t", "n/a"}});
+  CHECK(en.sentence(key.questions[0], u["t"]).find("unreadable: “n/a” is not a number") == 0);
+}
+
+TEST_CASE("exact forms for people") {
+  CHECK(pretty_exact("(5-2*sqrt(2))/3") == "(5 \u2212 2\u221a2)/3");
+  CHECK(pretty_exact("-sqrt(3)/2") == "\u2212\u221a3/2");
+  CHECK(pretty_exact("16/61") == "16/61");
+}
+
+TEST_CASE("a wrong point is drawn on the key's diagram, a right one is not") {
+  const auto key = epure::test::exercise(R"({"kind":"projection","A":[1,1],"B":[5,4],"C":[2,6]})",
+                                         {"t", "P.x", "P.y", "position"});
+  const FeedbackText en("en", 2);
+  auto scene_with = [&](const char* px) {
+    epure::render::Scene scene;
+    scene.panels.emplace_back();
+    scene.panels[0].view = {0, 0, 6, 6};
+    const auto m = epure::test::mark(key, {{"t", "0.76"}, {"P.x", px}, {"P.y", "3.28"}});
+    overlay_answers(scene, key, m.marks, en);
+    return scene;
+  };
+  const auto wrong = scene_with("4.5");
+  REQUIRE(wrong.panels[0].items.size() == 1);
+  const auto* mark = std::get_if<epure::render::PointMark>(&wrong.panels[0].items[0]);
+  REQUIRE(mark);
+  CHECK(mark->role == epure::render::Role::highlight);
+  CHECK(mark->at.x == doctest::Approx(4.5).epsilon(1e-12));
+  CHECK(mark->label->text == "P (yours)");
+  CHECK(scene_with("4.04").panels[0].items.empty());
+}
+
+TEST_CASE("the histogram has a bar for every non-empty bin") {
+  ClassStatistics stats({});
+  const FeedbackText en("en", 2);
+  const auto scene = histogram_scene(stats, en);
+  REQUIRE(scene.panels.size() == 1);
+  CHECK(scene.title == "Scores of the class");
+}

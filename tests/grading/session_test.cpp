@@ -1,0 +1,147 @@
+// A grading run on text: rows in = rows reported, totals, flags and problems with their lines,
+// sheet ids with their nearest suggestion, follow-through on and off.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "grading/answer_source.h"
+#include "grading/session.h"
+#include "grading/sheet_lookup.h"
+
+using namespace epure::grading;
+
+namespace {
+const AnswerKey& key() {
+  static const AnswerKey k = [] {
+    std::ifstream in(EPURE_SOURCE_DIR "/tests/grading/data/key_small.json");
+    std::stringstream s;
+    s << in.rdbuf();
+    return read_key_json(s.str(), "key_small.json");
+  }();
+  return k;
+}
+
+struct Collect final : SubmissionSink {
+  std::vector<std::pair<double, std::vector<std::string>>> rows;  // score, flag codes
+  void submission(const Submission& s) override {
+    std::vector<std::string> flags;
+    for (const auto& f : s.flags) flags.emplace_back(f.code);
+    rows.emplace_back(s.marked() ? s.score : -1, flags);
+  }
+  void finish(const ClassStatistics&, const Outcome&) override {}
+};
+
+struct Run {
+  Collect rows;
+  Outcome outcome;
+};
+
+Run grade(const std::string& csv, bool follow_through = true) {
+  SessionOptions o;
+  o.answers_name = "a.csv";
+  o.log = nullptr;
+  o.follow_through = follow_through;
+  GradingSession session(key(), std::move(o));
+  Run run;
+  session.add_sink(run.rows);
+  const SourceInfo info = read_answers_text(csv, "a.csv", session);
+  run.outcome = session.finish(info);
+  return run;
+}
+
+bool has_problem(const Outcome& o, int line, const std::string& part) {
+  for (const auto& p : o.problems)
+    if (p.line == line && p.message.find(part) != std::string::npos) return true;
+  return false;
+}
+}  // namespace
+
+TEST_CASE("totals: right answers earn the sheet's points, blanks nothing") {
+  const auto run = grade("sheet,student,2.t,2.P.x,2.P.y,2.position\n"
+                         "1000-0005-002N,A,-0.48,9.41,3.97,before\n"
+                         "1000-0005-002N,B,,,,\n");
+  REQUIRE(run.rows.rows.size() == 2);
+  CHECK(run.rows.rows[0].first == doctest::Approx(5).epsilon(1e-12));  // t 2 + P 1+1 + position 1
+  CHECK(run.rows.rows[1].first == doctest::Approx(0).epsilon(1e-12));
+  CHECK(run.outcome.rows == 2);
+  CHECK(run.outcome.exit_status() == 0);
+}
+
+TEST_CASE("bad input, each case said with its line, every row reported") {
+  SUBCASE("a mistyped id, with the nearest id of the key") {
+    const auto run = grade("sheet,2.t\n1000-0005-002M,1\n");
+    CHECK(run.rows.rows.size() == 1);
+    CHECK(run.rows.rows[0].second == std::vector<std::string>{"unknown_sheet"});
+    CHECK(has_problem(run.outcome, 2, "nearest sheet of this key is 1000-0005-002N (1 character away)"));
+    CHECK(run.outcome.exit_status() == 1);
+  }
+  SUBCASE("an id with its dashes left out and lower case still reads") {
+    const auto run = grade("sheet,2.t\n10000005002n,-0.48\n");
+    CHECK(run.rows.rows[0].first == doctest::Approx(2).epsilon(1e-12));
+  }
+  SUBCASE("no sheet id") {
+    const auto run = grade("sheet,2.t\n,1\n");
+    CHECK(run.rows.rows[0].second == std::vector<std::string>{"no_sheet"});
+  }
+  SUBCASE("a sheet twice: both rows marked, both flagged (later ones without a first pass)") {
+    const auto run = grade("sheet,2.t\n1000-0005-002N,1\n1000-0005-002N,-0.48\n");
+    CHECK(run.rows.rows[0].first == doctest::Approx(0).epsilon(1e-12));
+    CHECK(run.rows.rows[1].first == doctest::Approx(2).epsilon(1e-12));
+    CHECK(run.rows.rows[1].second == std::vector<std::string>{"duplicate"});
+    CHECK(run.outcome.duplicates.size() == 1);
+    CHECK(run.outcome.exit_status() == 0);
+  }
+  SUBCASE("an unknown column, warned once") {
+    const auto run = grade("sheet,remark,2.t\n1000-0005-002N,x,1\n1000-0005-0089,y,1\n");
+    int warnings = 0;
+    for (const auto& p : run.outcome.problems) warnings += p.message.find("'remark'") != std::string::npos;
+    CHECK(warnings == 1);
+    CHECK(run.outcome.errors == 0);
+  }
+  SUBCASE("an unreadable value is marked wrong and said") {
+    const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n");
+    CHECK(run.rows.rows[0].second == std::vector<std::string>{"unreadable"});
+    CHECK(has_problem(run.outcome, 2, "2.t \"abc\" is not a number"));
+  }
+  SUBCASE("ragged rows") {
+    const auto run = grade("sheet,2.t,2.P.x\n1000-0005-002N,-0.48\n1000-0005-002N,-0.48,9.41,extra\n");
+    CHECK(run.rows.rows.size() == 2);
+    CHECK(has_problem(run.outcome, 2, "2 cells where the header has 3"));
+    CHECK(has_problem(run.outcome, 3, "the extra ones are not read: \"extra\""));
+  }
+  SUBCASE("an answer to a question the sheet does not ask") {
+    // 4.reason is asked on 003K (a miss), not on 002N (a hit)
+    const auto run = grade("sheet,4.reason\n1000-0005-002N,miss\n");
+    CHECK(run.rows.rows[0].second == std::vector<std::string>{"not_asked"});
+  }
+  SUBCASE("an empty file") {
+    const auto run = grade("");
+    CHECK(run.rows.rows.empty());
+    CHECK(has_problem(run.outcome, 0, "the file is empty"));
+    CHECK(run.outcome.exit_status() == 1);
+  }
+  SUBCASE("empty rows are skipped, not reported, and counted") {
+    const auto run = grade("sheet,2.t\n,\n1000-0005-002N,1\n");
+    CHECK(run.rows.rows.size() == 1);
+    CHECK(run.outcome.empty_rows == 1);
+  }
+  SUBCASE("no sheet column: nothing can be graded") { CHECK_THROWS_AS(grade("name,2.t\nx,1\n"), std::runtime_error); }
+}
+
+TEST_CASE("follow-through on and off change only the follow-through points") {
+  // t = AB·AC/‖AB‖ on 002N's projection: A(7,3), B(2,1), C(9,5): AB = (−5,−2), AC = (2,2),
+  // AB·AC = −14, ‖AB‖ = √29: t = −2.60, P = A + t·AB = (20, 8.2), still before A
+  const std::string csv = "sheet,2.t,2.P.x,2.P.y,2.position\n1000-0005-002N,-2.60,20.00,8.20,before\n";
+  const auto on = grade(csv, true), off = grade(csv, false);
+  CHECK(on.rows.rows[0].first == doctest::Approx(3).epsilon(1e-12));   // P 1+1 by follow-through, position 1
+  CHECK(off.rows.rows[0].first == doctest::Approx(1).epsilon(1e-12));  // the position alone
+}
+
+TEST_CASE("edit distance between ids, as typed") {
+  CHECK(id_distance("1000-0005-002N", "10000005002n") == 0);
+  CHECK(id_distance("1000-0005-002N", "1000-0005-002M") == 1);
+  CHECK(id_distance("1000-0005-002N", "1000-0005-020N") == 1);  // two neighbours swapped
+  CHECK(id_distance("1000-0005-002N", "1000-0005-O02N") == 0);  // O read as 0
+  CHECK(id_distance("", "abc") == 3);
+}
