@@ -2,13 +2,35 @@
 // One file per subcommand (CLI11's subcom_in_files manner): each registers its options on the
 // app and runs the library; nothing here computes geometry.
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <exception>
+
+#include "exercises/spec.h"
 
 namespace epure::cli {
+
+// Runs a subcommand's body: a spec error (the user's file) is exit status 2, any other failure
+// (a file that cannot be written, …) 1, each reported as one line prefixed with the command.
+template <class Body>
+int run_reporting(const char* command, Body&& body) {
+  try {
+    return body();
+  } catch (const SpecError& e) {
+    fmt::print(stderr, "{}: {}\n", command, e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: {}\n", command, e.what());
+    return 1;
+  }
+}
 
 // Registers `epure solve`; the callback stores its exit status in `status`.
 void add_solve_command(CLI::App& app, int& status);
 // Registers `epure generate`.
 void add_generate_command(CLI::App& app, int& status);
+// Registers `epure preview`.
+void add_preview_command(CLI::App& app, int& status);
 // Registers `epure grade`.
 void add_grade_command(CLI::App& app, int& status);
 

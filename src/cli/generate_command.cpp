@@ -11,6 +11,7 @@
 #include "exercises/spec.h"
 #include "exercises/worksheet.h"
 #include "output/generate.h"
+#include "render/pdf_document.h"
 
 namespace epure::cli {
 
@@ -24,6 +25,9 @@ struct GenerateCliOptions {
   std::string difficulty;
   std::string out = "out";
   std::string format = "svg";
+  std::string paper;
+  bool split = false;
+  bool duplex = false;
   bool quiet = false;
   int jobs = 0;  // 0: every core
 };
@@ -49,6 +53,15 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+std::string written_files(const output::GenerateOptions& o) {
+  std::string files;
+  if (o.svg) files += "sheets/*.svg, keys/*.svg, ";
+  if (o.pdf) files += o.split ? "sheets/*.pdf, keys/*.pdf, " : "sheets.pdf, keys.pdf, ";
+  files += "key.json";
+  if (o.svg) files += ", index.html";
+  return files;
+}
+
 int run_generate(const GenerateCliOptions& o) {
   WorksheetSpec spec;
   if (o.spec_file.empty()) {
@@ -66,19 +79,25 @@ int run_generate(const GenerateCliOptions& o) {
   SetOptions set_options;
   if (!o.language.empty()) set_options.language = o.language;
   if (!o.difficulty.empty()) set_options.difficulty = parse_difficulty(o.difficulty);
+  if (!o.paper.empty()) set_options.page = o.paper == "letter" ? "letter" : "A4";
   WorksheetSet set(std::move(spec), o.seed, set_options);
 
   output::GenerateOptions options;
   options.sheets = o.sheets;
   options.out = o.out;
+  options.svg = o.format.find("svg") != std::string::npos;
+  options.pdf = o.format.find("pdf") != std::string::npos;
+  options.split = o.split;
+  options.duplex = o.duplex;
+  if (options.pdf) options.pdf_date = render::source_date_epoch();
   options.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   options.epure_version = EPURE_VERSION;
   Progress progress(!o.quiet);
   options.progress = [&](int done, int total) { progress(done, total); };
   const auto report = output::generate_set(set, options);
   if (!o.quiet)
-    fmt::print("epure generate: {} sheets ({} … {}) into {}/ (sheets/, keys/, key.json, index.html)\n",
-               report.sheets, report.first_id, report.last_id, o.out);
+    fmt::print("epure generate: {} sheets ({} … {}) into {}/ ({})\n", report.sheets, report.first_id,
+               report.last_id, o.out, written_files(options));
   return 0;
 }
 
@@ -99,22 +118,18 @@ void add_generate_command(CLI::App& app, int& status) {
   cmd->add_option("--difficulty", o->difficulty, "Difficulty of every exercise (overrides the spec)")
       ->check(CLI::IsMember({"easy", "standard", "hard"}));
   cmd->add_option("--out,-o", o->out, "Output directory")->capture_default_str();
-  cmd->add_option("--format", o->format, "Output format")->check(CLI::IsMember({"svg"}))->capture_default_str();
+  cmd->add_option("--format", o->format, "Output formats: svg, pdf, or both (svg,pdf)")
+      ->check(CLI::IsMember({"svg", "pdf", "svg,pdf", "pdf,svg"}))
+      ->capture_default_str();
+  cmd->add_flag("--split", o->split, "PDF: one file per sheet and per key (sheets/<id>.pdf, keys/<id>.pdf) instead of sheets.pdf and keys.pdf");
+  cmd->add_flag("--duplex", o->duplex, "PDF: start every sheet on an odd page (a blank page where needed), for double-sided printing");
+  cmd->add_option("--paper", o->paper, "Paper size (overrides the spec): a4 or letter")
+      ->transform(CLI::IsMember({"a4", "letter"}, CLI::ignore_case));
   cmd->add_option("--jobs,-j", o->jobs, "Parallel jobs, 0 for every core (output is the same for any number)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
   cmd->add_flag("--quiet,-q", o->quiet, "No progress bar nor summary");
-  cmd->callback([o, &status] {
-    try {
-      status = run_generate(*o);
-    } catch (const SpecError& e) {
-      fmt::print(stderr, "epure generate: {}\n", e.what());
-      status = 2;
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "epure generate: {}\n", e.what());
-      status = 1;
-    }
-  });
+  cmd->callback([o, &status] { status = run_reporting("epure generate", [&] { return run_generate(*o); }); });
 }
 
 }  // namespace epure::cli

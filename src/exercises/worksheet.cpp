@@ -19,6 +19,7 @@ WorksheetSet::WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOpti
   spec_.course = words.course;
   spec_.author = words.author;
   spec_.subject = words.subject;
+  if (options.page) spec_.page = *options.page;
   if (options.difficulty)
     for (auto& e : spec_.exercises) e.difficulty = *options.difficulty;
   for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {

@@ -27,6 +27,7 @@ struct Sheet {
 struct SetOptions {
   std::optional<std::string> language;     // overrides the spec's
   std::optional<Difficulty> difficulty;    // overrides every exercise's
+  std::optional<std::string> page;         // "A4" or "letter": overrides the spec's
 };
 
 class WorksheetSet {

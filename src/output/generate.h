@@ -1,11 +1,13 @@
 #pragma once
-// Writes a worksheet set to a directory: sheets/<id>.svg, keys/<id>.svg, key.json and
-// index.html. Sheets stream through in small batches (memory stays flat for 10,000 sheets);
-// with several jobs, drawing and drawing-to-SVG run in parallel and the output (order and bytes)
-// is the same as with one.
+// Writes a worksheet set to a directory: key.json, and as SVG sheets/<id>.svg, keys/<id>.svg and
+// index.html, as PDF sheets.pdf and keys.pdf (the class set in id order) or, split, one
+// sheets/<id>.pdf and keys/<id>.pdf per sheet. Sheets stream through in small batches (memory
+// stays flat for 10,000 sheets); with several jobs, drawing, layout and SVG run in parallel and
+// the output (order and bytes) is the same as with one.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "exercises/worksheet.h"
@@ -16,6 +18,10 @@ struct GenerateOptions {
   int sheets = 30;
   std::filesystem::path out = "out";
   bool svg = true;
+  bool pdf = false;
+  bool split = false;   // PDF: one file per sheet and per key instead of the class-set files
+  bool duplex = false;  // PDF class sets: every sheet starts on an odd page (blank pages added)
+  std::optional<std::int64_t> pdf_date;  // the PDFs' creation date (SOURCE_DATE_EPOCH)
   int jobs = 1;
   std::string epure_version;
   // Called after each batch with the number of sheets written so far.

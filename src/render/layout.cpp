@@ -49,6 +49,7 @@ struct Fragment {
   std::vector<PlacedRule> rules;
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
+  std::vector<PlacedQr> codes;
 
   void text(std::vector<TextRun> runs, double x, double baseline, double size, Ink ink = Ink::text) {
     texts.push_back({{x, baseline}, size, std::move(runs), ink});
@@ -76,6 +77,10 @@ struct Fragment {
     for (auto& t : texts) {
       t.baseline.y += dy;
       page.texts.push_back(std::move(t));
+    }
+    for (auto& q : codes) {
+      q.rect.y += dy;
+      page.codes.push_back(std::move(q));
     }
   }
 };
@@ -126,18 +131,29 @@ class Builder {
     if (doc_.student_fields) {
       Atom a;
       a.height = s_.name_row_height;
+      // The sheet id's QR code at the right end of the row (its quiet zone is its margin), the
+      // writing lines in what is left.
+      double fields_right = right_;
+      if (!doc_.sheet_id.empty()) {
+        QrCode code = encode_qr(doc_.sheet_id);
+        const double side = s_.qr_module * (code.size + 2 * kQrQuietZone);
+        const double quiet = s_.qr_module * kQrQuietZone;
+        a.height = std::max(a.height, side - quiet);  // the top quiet zone may reach into header_gap
+        a.content.codes.push_back({{right_ - side + quiet, -quiet, side, side}, std::move(code)});
+        fields_right = right_ - side + quiet - kHeaderGap;
+      }
       const double size = s_.body_size;
-      const double baseline = a.height - kWritingLineGap - kWritingLineDrop;
+      const double baseline = s_.name_row_height - kWritingLineGap - kWritingLineDrop;
       const double line_y = baseline + kWritingLineDrop;
       auto name = plain(doc_.words.name);
       auto number = plain(doc_.words.student_number);
       const double name_w = text_width(name, size);
       const double number_w = text_width(number, size);
-      const double split = left_ + width_ * kNameShare;
+      const double split = left_ + (fields_right - left_) * kNameShare;
       a.content.text(std::move(name), left_, baseline, size);
       a.content.rules.push_back({{left_ + name_w + kWritingLineGap, line_y}, {split - kHeaderGap, line_y}, 0.6, Ink::text});
       a.content.text(std::move(number), split, baseline, size);
-      a.content.rules.push_back({{split + number_w + kWritingLineGap, line_y}, {right_, line_y}, 0.6, Ink::text});
+      a.content.rules.push_back({{split + number_w + kWritingLineGap, line_y}, {fields_right, line_y}, 0.6, Ink::text});
       push(std::move(a));
     }
     if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);

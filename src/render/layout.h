@@ -5,7 +5,7 @@
 // so both draw the same thing.
 //
 // The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
-// with the name and student number fields; a section starts on a fresh page when it would fit
+// with the name and student number fields and the sheet id as a QR code; a section starts on a fresh page when it would fit
 // there whole but not in what is left of the current one (and, for a section longer than a page,
 // when its statement, up to its first figure or field, would not); otherwise it flows, breaking
 // only between lines of text, runs of fields, tables or blocks: never right after a Heading,
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "render/document.h"
+#include "render/qr_code.h"
 #include "render/text.h"
 
 namespace epure::render {
@@ -72,6 +73,13 @@ struct PlacedFigure {
   const Scene* scene = nullptr;
 };
 
+// The sheet id as a QR code, on a student's first page: `rect` holds the modules and their
+// quiet zone, so nothing else may be drawn in it.
+struct PlacedQr {
+  PageRect rect;
+  QrCode code;
+};
+
 // Where a block (or its part on this page) sits; section and block index the Document, -1 for
 // the page furniture (header, name fields, the note under them).
 struct PlacedBlock {
@@ -89,6 +97,7 @@ struct LaidOutPage {
   std::vector<PlacedRule> rules;
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
+  std::vector<PlacedQr> codes;
   std::vector<PlacedBlock> blocks;
 };
 
@@ -102,6 +111,7 @@ struct LayoutStyle {
   double header_gap = 14;           // from that rule to the content
 
   double name_row_height = 26;      // the first page's name and student number fields
+  double qr_module = 1.3;           // side of a QR module: 21 modules + quiet zone ≈ 11 mm
 
   double body_size = 10.5;
   double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript

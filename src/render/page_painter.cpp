@@ -31,6 +31,31 @@ void paint_box(Canvas& canvas, const PlacedBox& box, const PageStyle& style) {
   }
 }
 
+// The dark modules as one path of rectangles, a row's neighbouring modules merged into one, so
+// that a reader sees no seams between modules at any zoom.
+void paint_qr(Canvas& canvas, const PlacedQr& qr, const PageStyle& style) {
+  canvas.path(rectangle(qr.rect), Paint{std::nullopt, style.paper, 1});
+  const QrCode& code = qr.code;
+  const double module = qr.rect.width / (code.size + 2 * kQrQuietZone);
+  const double x0 = qr.rect.x + module * kQrQuietZone, y0 = qr.rect.y + module * kQrQuietZone;
+  Path dark;
+  for (int y = 0; y < code.size; ++y) {
+    for (int x = 0; x < code.size;) {
+      if (!code.dark(x, y)) {
+        ++x;
+        continue;
+      }
+      int end = x;
+      while (end < code.size && code.dark(end, y)) ++end;
+      const PageRect run{x0 + module * x, y0 + module * y, module * (end - x), module};
+      dark.move_to({run.x, run.y}).line_to({run.right(), run.y}).line_to({run.right(), run.bottom()})
+          .line_to({run.x, run.bottom()}).close();
+      x = end;
+    }
+  }
+  canvas.path(dark, Paint{std::nullopt, style.text, 1});
+}
+
 }  // namespace
 
 void paint_text(Canvas& canvas, const PlacedText& t, Colour colour) {
@@ -77,6 +102,11 @@ void paint_page(Canvas& canvas, const LaidOutPage& page, const PageStyle& style)
     if (f.scene == nullptr) continue;
     canvas.begin_group("figure", "figure");
     paint_scene(canvas, *f.scene, f.rect.x, f.rect.y, f.rect.width, style.scene);
+    canvas.end_group();
+  }
+  for (const PlacedQr& q : page.codes) {
+    canvas.begin_group("qr-code");
+    paint_qr(canvas, q, style);
     canvas.end_group();
   }
   if (!page.texts.empty()) {

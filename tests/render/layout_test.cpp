@@ -135,11 +135,28 @@ TEST_CASE("layout: a header on every page, the name fields on the first only") {
   }
   CHECK(page_has_text(pages[0], doc.header_note));
 
+  SUBCASE("the sheet id as a QR code at the end of the name row, clear of its writing lines") {
+    REQUIRE(pages[0].codes.size() == 1);
+    for (std::size_t i = 1; i < pages.size(); ++i) CHECK(pages[i].codes.empty());
+    const PlacedQr& qr = pages[0].codes[0];
+    const LayoutStyle style;
+    CHECK(qr.code.size >= 21);
+    CHECK(qr.rect.width == doctest::Approx(style.qr_module * (qr.code.size + 2 * kQrQuietZone)));
+    // Its modules end on the right margin, its quiet zone stays below the header's rule.
+    CHECK(qr.rect.right() - style.qr_module * kQrQuietZone == doctest::Approx(doc.page.width_pt - style.margin_right));
+    CHECK(qr.rect.y > style.margin_top + style.header_height);
+    for (const PlacedRule& r : pages[0].rules) {
+      if (r.a.y < qr.rect.y || r.a.y > qr.rect.bottom()) continue;  // the header's rule, or lower
+      CHECK(std::max(r.a.x, r.b.x) < qr.rect.x);
+    }
+  }
+
   SUBCASE("a key has no name fields, and its words come from the document") {
     Document key = doc;
     key.student_fields = false;
     key.words.page = "feuille";
     const auto key_pages = layout_document(key);
+    CHECK(key_pages[0].codes.empty());
     CHECK_FALSE(page_has_text(key_pages[0], "Name:"));
     CHECK(page_has_text(key_pages[0], fmt::format("feuille 1/{}", key_pages.size())));
   }
@@ -202,6 +219,8 @@ TEST_CASE("layout: no text overlaps another text, a box or a figure") {
           others.push_back({b.rect.x, b.rect.y, b.rect.right(), b.rect.bottom(), "box " + b.question_id});
       for (const auto& f : page.figures)
         others.push_back({f.rect.x, f.rect.y, f.rect.right(), f.rect.bottom(), "figure"});
+      for (const auto& q : page.codes)
+        others.push_back({q.rect.x, q.rect.y, q.rect.right(), q.rect.bottom(), "QR code"});
       for (std::size_t i = 0; i < texts.size(); ++i) {
         for (std::size_t j = i + 1; j < texts.size(); ++j) {
           CAPTURE(texts[i].what);

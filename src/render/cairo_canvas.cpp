@@ -1,0 +1,157 @@
+#include "render/cairo_canvas.h"
+
+#include <pango/pangocairo.h>
+
+#include <fmt/format.h>
+
+#include "render/font_metrics.h"
+#include "render/svg_scene.h"
+#include "render/text.h"
+
+namespace epure::render {
+namespace {
+
+// Shaped runs kept per canvas; past this many the cache starts again, so memory stays flat
+// however many sheets one canvas draws.
+constexpr std::size_t kMaxShaped = 8192;
+
+void set_colour(cairo_t* cr, Colour c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+
+void trace(cairo_t* cr, const Path& path) {
+  cairo_new_path(cr);
+  for (const Path::Cmd& c : path.cmds()) {
+    switch (c.op) {
+      case Path::Op::move: cairo_move_to(cr, c.p[0].x, c.p[0].y); break;
+      case Path::Op::line: cairo_line_to(cr, c.p[0].x, c.p[0].y); break;
+      case Path::Op::cubic:
+        cairo_curve_to(cr, c.p[0].x, c.p[0].y, c.p[1].x, c.p[1].y, c.p[2].x, c.p[2].y);
+        break;
+      case Path::Op::close: cairo_close_path(cr); break;
+    }
+  }
+}
+
+}  // namespace
+
+CairoCanvas::CairoCanvas(cairo_t* cr, PangoFontMap* fonts)
+    : cr_(cr), context_(fonts != nullptr ? pango_font_map_create_context(fonts) : pango_cairo_create_context(cr)) {
+  if (fonts != nullptr) pango_cairo_update_context(cr_, context_);
+  // Unhinted outlines and advances: text is set at the widths font_metrics.h measured, on every
+  // surface and at every zoom.
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+  pango_cairo_context_set_font_options(context_, options);
+  cairo_font_options_destroy(options);
+  // One user-space unit is a point: a font size in points is a size in user units.
+  pango_cairo_context_set_resolution(context_, 72);
+  // Pango rounds glyph positions to whole units by default, here whole points: letters would
+  // wobble and lines grow by up to a point a glyph.
+  pango_context_set_round_glyph_positions(context_, FALSE);
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_BUTT);  // SVG's defaults, so both backends agree
+  cairo_set_miter_limit(cr_, 4);
+}
+
+CairoCanvas::~CairoCanvas() {
+  for (auto& [key, layout] : shaped_) g_object_unref(layout);
+  g_object_unref(context_);
+}
+
+// Groups are SVG's semantics (classes for a style sheet or a reader); a PDF page has no use for
+// them, and cairo_push_group would rasterise nothing but cost a copy.
+void CairoCanvas::begin_group(std::string_view, std::string_view) {}
+void CairoCanvas::end_group() {}
+
+void CairoCanvas::push_clip(const Box& box) {
+  cairo_save(cr_);
+  cairo_new_path(cr_);
+  cairo_rectangle(cr_, box.x_min, box.y_min, box.width(), box.height());
+  cairo_clip(cr_);
+}
+
+void CairoCanvas::pop_clip() { cairo_restore(cr_); }
+
+void CairoCanvas::fill_and_stroke(const Paint& paint) {
+  if (paint.fill) {
+    const Colour c = *paint.fill;
+    if (paint.fill_opacity < 1)
+      cairo_set_source_rgba(cr_, c.r / 255.0, c.g / 255.0, c.b / 255.0, paint.fill_opacity);
+    else
+      set_colour(cr_, c);
+    if (paint.stroke) cairo_fill_preserve(cr_);
+    else cairo_fill(cr_);
+  }
+  if (paint.stroke) {
+    set_colour(cr_, paint.stroke->colour);
+    cairo_set_line_width(cr_, paint.stroke->width);
+    const auto& dash = paint.stroke->dash;
+    cairo_set_dash(cr_, dash.empty() ? nullptr : dash.data(), static_cast<int>(dash.size()), 0);
+    cairo_stroke(cr_);
+  }
+  cairo_new_path(cr_);
+}
+
+void CairoCanvas::path(const Path& path, const Paint& paint) {
+  if (path.empty()) return;
+  trace(cr_, path);
+  fill_and_stroke(paint);
+}
+
+void CairoCanvas::disc(P2 centre, double radius, const Paint& paint) {
+  cairo_new_path(cr_);
+  cairo_arc(cr_, centre.x, centre.y, radius, 0, 2 * 3.14159265358979323846);
+  cairo_close_path(cr_);
+  fill_and_stroke(paint);
+}
+
+PangoLayout* CairoCanvas::shaped(const TextRun& run, double size) {
+  std::string key = fmt::format("{}|{:.4f}|{}", run.bold ? 'b' : 'r', size, run.text);
+  if (auto it = shaped_.find(key); it != shaped_.end()) return it->second;
+  if (shaped_.size() >= kMaxShaped) {
+    for (auto& [k, layout] : shaped_) g_object_unref(layout);
+    shaped_.clear();
+  }
+  PangoLayout* layout = pango_layout_new(context_);
+  PangoFontDescription* font = pango_font_description_new();
+  pango_font_description_set_family_static(font, "DejaVu Sans");
+  pango_font_description_set_weight(font, run.bold ? PANGO_WEIGHT_BOLD : PANGO_WEIGHT_NORMAL);
+  pango_font_description_set_absolute_size(font, size * PANGO_SCALE);
+  pango_layout_set_font_description(layout, font);
+  pango_font_description_free(font);
+  // No kerning nor ligatures: the widths are font_metrics.h's, glyph by glyph.
+  PangoAttrList* attrs = pango_attr_list_new();
+  pango_attr_list_insert(attrs, pango_attr_font_features_new("kern 0, liga 0, clig 0"));
+  pango_layout_set_attributes(layout, attrs);
+  pango_attr_list_unref(attrs);
+  pango_layout_set_text(layout, run.text.data(), static_cast<int>(run.text.size()));
+  shaped_.emplace(std::move(key), layout);
+  return layout;
+}
+
+double CairoCanvas::set_width(const TextRun& run, double size) {
+  PangoRectangle logical;
+  pango_layout_get_extents(shaped(run, size), nullptr, &logical);
+  return logical.width / static_cast<double>(PANGO_SCALE);
+}
+
+void CairoCanvas::text(const TextLine& line) {
+  const std::vector<RunPlacement> placed = place_runs(line.runs, line.size);
+  double left = line.at.x;
+  if (line.anchor != Anchor::start) {
+    const double width = text_width(line.runs, line.size);
+    left -= line.anchor == Anchor::middle ? width / 2 : width;
+  }
+  set_colour(cr_, line.colour);
+  for (std::size_t i = 0; i < line.runs.size(); ++i) {
+    const TextRun& run = line.runs[i];
+    if (run.text.empty()) continue;
+    const RunPlacement& p = placed[i];
+    PangoLayout* layout = shaped(run, p.size);
+    const double baseline = pango_layout_get_baseline(layout) / static_cast<double>(PANGO_SCALE);
+    cairo_move_to(cr_, left + p.x, line.at.y - p.rise - baseline);
+    pango_cairo_show_layout(cr_, layout);
+  }
+}
+
+}  // namespace epure::render

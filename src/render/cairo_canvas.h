@@ -1,0 +1,55 @@
+#pragma once
+// The cairo backend: the painter's calls (canvas.h) drawn with cairo, text set with pango in
+// DejaVu Sans. It draws on whatever surface the cairo context targets: a PDF page
+// (pdf_document.h) or an image for PNG previews. Like the SVG canvas it decides nothing: every
+// position comes from the painter and every width from font_metrics.h, so both backends draw the
+// same figure.
+#include <cairo.h>
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "render/canvas.h"
+
+typedef struct _PangoContext PangoContext;
+typedef struct _PangoFontMap PangoFontMap;
+typedef struct _PangoLayout PangoLayout;
+
+namespace epure::render {
+
+class CairoCanvas final : public Canvas {
+ public:
+  // Draws through `cr` (not owned; it must outlive the canvas), in its current user space, whose
+  // unit is taken to be the point. Fonts come from `fonts` (not owned) when given, else from
+  // the calling thread's default font map: a canvas used from another thread than the one that
+  // made it needs a font map of its own, since pango's font maps are not thread-safe.
+  explicit CairoCanvas(cairo_t* cr, PangoFontMap* fonts = nullptr);
+  ~CairoCanvas() override;
+  CairoCanvas(const CairoCanvas&) = delete;
+  CairoCanvas& operator=(const CairoCanvas&) = delete;
+
+  void begin_group(std::string_view cls, std::string_view id = {}) override;
+  void end_group() override;
+  void push_clip(const Box& box) override;
+  void pop_clip() override;
+  void path(const Path& path, const Paint& paint) override;
+  void disc(P2 centre, double radius, const Paint& paint) override;
+  void text(const TextLine& line) override;
+
+  // The advance width pango sets `run` at, `size` points: font_metrics.h's widths must be these
+  // (the tests compare them), or the PDF's text would not be where layout measured it.
+  double set_width(const TextRun& run, double size);
+
+ private:
+  void fill_and_stroke(const Paint& paint);
+  PangoLayout* shaped(const TextRun& run, double size);
+
+  cairo_t* cr_;
+  PangoContext* context_ = nullptr;
+  // Runs shaped once and drawn as often as they occur (labels, axis numbers and the templates'
+  // words repeat from sheet to sheet): shaping is most of the cost of text.
+  std::unordered_map<std::string, PangoLayout*> shaped_;
+};
+
+}  // namespace epure::render

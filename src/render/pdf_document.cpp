@@ -1,0 +1,182 @@
+#include "render/pdf_document.h"
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+#include <pango/pangocairo.h>
+
+#include <charconv>
+#include <cstdlib>
+#include <ctime>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "render/cairo_canvas.h"
+#include "render/scene_painter.h"
+
+namespace epure::render {
+namespace {
+
+cairo_status_t write_to_sink(void* closure, const unsigned char* data, unsigned int length) {
+  auto* sink = static_cast<PdfDocument::Sink*>(closure);
+  try {
+    (*sink)(std::string_view(reinterpret_cast<const char*>(data), length));
+  } catch (...) {
+    return CAIRO_STATUS_WRITE_ERROR;  // cairo reports it; finish() turns it into an exception
+  }
+  return CAIRO_STATUS_SUCCESS;
+}
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+// ISO 8601 in UTC, the form cairo's metadata takes.
+std::string iso_date(std::int64_t seconds) {
+  const std::time_t t = static_cast<std::time_t>(seconds);
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}Z", utc.tm_year + 1900, utc.tm_mon + 1, utc.tm_mday,
+                     utc.tm_hour, utc.tm_min, utc.tm_sec);
+}
+
+void check(cairo_status_t status, const char* what) {
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(status)));
+}
+
+}  // namespace
+
+std::optional<std::int64_t> source_date_epoch() {
+  const char* value = std::getenv("SOURCE_DATE_EPOCH");
+  if (value == nullptr || *value == '\0') return std::nullopt;
+  std::int64_t seconds = 0;
+  const char* end = value + std::char_traits<char>::length(value);
+  const auto [ptr, ec] = std::from_chars(value, end, seconds);
+  if (ec != std::errc() || ptr != end || seconds < 0)
+    throw std::runtime_error(
+        fmt::format("SOURCE_DATE_EPOCH='{}' is not a number of seconds since 1970-01-01", value));
+  return seconds;
+}
+
+PdfDocument::PdfDocument(Sink sink, const PdfMetadata& metadata, PageSize first_page) : sink_(std::move(sink)) {
+  surface_ = cairo_pdf_surface_create_for_stream(write_to_sink, &sink_, first_page.width_pt, first_page.height_pt);
+  check(cairo_surface_status(surface_), "cannot start a PDF");
+  cairo_pdf_surface_restrict_to_version(surface_, CAIRO_PDF_VERSION_1_5);
+  const auto set = [&](cairo_pdf_metadata_t key, const std::string& value) {
+    if (!value.empty()) cairo_pdf_surface_set_metadata(surface_, key, value.c_str());
+  };
+  set(CAIRO_PDF_METADATA_TITLE, metadata.title);
+  set(CAIRO_PDF_METADATA_AUTHOR, metadata.author);
+  set(CAIRO_PDF_METADATA_SUBJECT, metadata.subject);
+  set(CAIRO_PDF_METADATA_KEYWORDS, metadata.keywords);
+  set(CAIRO_PDF_METADATA_CREATOR, metadata.creator);
+  if (metadata.date) {
+    const std::string date = iso_date(*metadata.date);
+    set(CAIRO_PDF_METADATA_CREATE_DATE, date);
+    set(CAIRO_PDF_METADATA_MOD_DATE, date);
+  }
+  cr_ = cairo_create(surface_);
+  fonts_ = pango_cairo_font_map_new();
+  canvas_ = new CairoCanvas(cr_, fonts_);
+}
+
+PdfDocument::~PdfDocument() {
+  delete canvas_;
+  if (fonts_ != nullptr) g_object_unref(fonts_);
+  if (cr_ != nullptr) cairo_destroy(cr_);
+  if (surface_ != nullptr) {
+    // Not finished: whatever cairo still writes goes nowhere.
+    if (!finished_) sink_ = [](std::string_view) {};
+    cairo_surface_destroy(surface_);
+  }
+}
+
+void PdfDocument::begin_page(PageSize size, std::string_view label) {
+  cairo_pdf_surface_set_size(surface_, size.width_pt, size.height_pt);
+  if (!label.empty()) cairo_pdf_surface_set_page_label(surface_, std::string(label).c_str());
+  ++pages_;
+}
+
+void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
+                      const PageStyle& style) {
+  if (outline && !label.empty()) {
+    const std::string link = fmt::format("page={}", pages_ + 1);
+    cairo_pdf_surface_add_outline(surface_, CAIRO_PDF_OUTLINE_ROOT, std::string(label).c_str(), link.c_str(),
+                                  static_cast<cairo_pdf_outline_flags_t>(0));
+  }
+  for (const LaidOutPage& page : pages) {
+    begin_page(page.size, label.empty() ? std::string() : fmt::format("{} {}/{}", label, page.number, page.count));
+    paint_page(*canvas_, page, style);
+    cairo_show_page(cr_);
+  }
+  check(cairo_status(cr_), "cannot draw a PDF page");
+}
+
+void PdfDocument::add_blank(PageSize size, std::string_view label) {
+  begin_page(size, label);
+  cairo_show_page(cr_);
+}
+
+void PdfDocument::finish() {
+  delete canvas_;
+  canvas_ = nullptr;
+  cairo_destroy(cr_);
+  cr_ = nullptr;
+  cairo_surface_finish(surface_);
+  finished_ = true;
+  check(cairo_surface_status(surface_), "cannot write the PDF");
+}
+
+std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
+                         const PdfMetadata& metadata, const PageStyle& style) {
+  std::string bytes;
+  PdfDocument pdf([&](std::string_view b) { bytes.append(b); }, metadata,
+                  pages.empty() ? PageSize::a4() : pages.front().size);
+  pdf.add(pages, label, false, style);
+  pdf.finish();
+  return bytes;
+}
+
+namespace {
+
+std::string to_png(double width_pt, double height_pt, double dpi, const std::function<void(Canvas&)>& draw) {
+  const double scale = dpi / 72.0;
+  cairo_surface_t* surface = cairo_image_surface_create(
+      CAIRO_FORMAT_RGB24, static_cast<int>(width_pt * scale + 0.5), static_cast<int>(height_pt * scale + 0.5));
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_scale(cr, scale, scale);
+  {
+    CairoCanvas canvas(cr);  // after the scale: pango takes its font options from it
+    draw(canvas);
+  }
+  const cairo_status_t drawn = cairo_status(cr);
+  cairo_destroy(cr);
+  std::string bytes;
+  const cairo_status_t written =
+      drawn == CAIRO_STATUS_SUCCESS ? cairo_surface_write_to_png_stream(surface, append_to_string, &bytes) : drawn;
+  cairo_surface_destroy(surface);
+  check(written, "cannot draw the PNG");
+  return bytes;
+}
+
+}  // namespace
+
+std::string page_to_png(const LaidOutPage& page, double dpi, const PageStyle& style) {
+  return to_png(page.size.width_pt, page.size.height_pt, dpi, [&](Canvas& c) { paint_page(c, page, style); });
+}
+
+std::string scene_to_png(const Scene& scene, double width_pt, double dpi, const Style& style) {
+  const double height = scene_height(scene, width_pt, style);
+  return to_png(width_pt, height, dpi, [&](Canvas& c) {
+    Path background;
+    background.move_to({0, 0}).line_to({width_pt, 0}).line_to({width_pt, height}).line_to({0, height}).close();
+    c.path(background, Paint{std::nullopt, style.background, 1});
+    paint_scene(c, scene, 0, 0, width_pt, style);
+  });
+}
+
+}  // namespace epure::render

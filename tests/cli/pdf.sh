@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# `epure generate --format pdf` end to end: the class-set PDFs pass qpdf --check; their page
+# counts are the layout's (the SVG pages), with blank pages under --duplex so that every sheet
+# starts on an odd page; pdftotext finds every sheet's id and statements, French accents
+# included; pdffonts lists embedded fonts only; the metadata comes from the spec and
+# SOURCE_DATE_EPOCH; the same spec and seed give byte-identical PDFs across runs and job counts;
+# the first page's QR code reads back as the sheet id; a PDF page and the SVG page of the same
+# sheet agree pixel-wise (and two different sheets do not); --split, --paper letter and
+# `epure preview` write what they say.
+set -u
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+for tool in qpdf pdfinfo pdftotext pdffonts pdftoppm rsvg-convert zbarimg python3; do
+  command -v $tool >/dev/null || fail "$tool missing (see .ci/bootstrap)"
+done
+compare=$EPURE_SOURCE_DIR/tests/tools/png_compare.py
+export SOURCE_DATE_EPOCH=1700000000  # 2023-11-14 22:13:20 UTC
+
+gen() { "$EPURE" generate --quiet "$@" || fail "generate $*"; }
+gen --format svg,pdf --sheets 6 --seed 11 --out "$tmp/a" --jobs 1
+gen --format pdf --sheets 6 --seed 11 --out "$tmp/b" --jobs 2
+gen --format pdf --sheets 6 --seed 11 --out "$tmp/d" --jobs 2 --duplex
+for f in sheets keys; do
+  cmp -s "$tmp/a/$f.pdf" "$tmp/b/$f.pdf" || fail "$f.pdf differs between --jobs 1 and --jobs 2 (or two runs)"
+  qpdf --check "$tmp/a/$f.pdf" >/dev/null || fail "qpdf --check $f.pdf"
+  qpdf --check "$tmp/d/$f.pdf" >/dev/null || fail "qpdf --check $f.pdf (duplex)"
+done
+ls "$tmp/a" | grep -q '\.tmp$' && fail "a temporary file was left behind"
+[ -e "$tmp/b/sheets" ] && fail "--format pdf wrote SVG directories"
+
+pages() { pdfinfo "$1" | awk '/^Pages:/ {print $2}'; }
+ids=$(python3 -c 'import json,sys; print(" ".join(s["id"] for s in json.load(open(sys.argv[1]))["sheets"]))' "$tmp/a/key.json")
+[ "$(echo $ids | wc -w)" -eq 6 ] || fail "key.json should list 6 sheets"
+
+# Page counts: the SVG's pages, sheet by sheet in id order; with --duplex each sheet padded to
+# an even count, so that the next one starts on an odd page.
+for f in sheets keys; do
+  total=0; padded=0
+  for id in $ids; do
+    n=$(grep -c 'class="page"' "$tmp/a/$f/$id.svg")
+    [ "$n" -ge 1 ] || fail "$f/$id.svg has no page"
+    total=$((total + n)); padded=$((padded + n + n % 2))
+  done
+  [ "$(pages "$tmp/a/$f.pdf")" -eq "$total" ] || fail "$f.pdf has $(pages "$tmp/a/$f.pdf") pages, the layout $total"
+  [ "$(pages "$tmp/d/$f.pdf")" -eq "$padded" ] || fail "$f.pdf --duplex has $(pages "$tmp/d/$f.pdf") pages, not $padded"
+done
+# With --duplex, every sheet's first page ("page 1/n") is an odd page of the file.
+first=1
+for id in $ids; do
+  n=$(grep -c 'class="page"' "$tmp/a/sheets/$id.svg")
+  pdftotext -f $first -l $first "$tmp/d/sheets.pdf" - | grep -q "$id" || fail "duplex: page $first is not $id's first page"
+  [ $((first % 2)) -eq 1 ] || fail "duplex: $id starts on an even page ($first)"
+  first=$((first + n + n % 2))
+done
+
+# Text: every id, every page's "page i/n", the statements readable.
+pdftotext "$tmp/a/sheets.pdf" "$tmp/sheets.txt" || fail "pdftotext sheets.pdf"
+pdftotext "$tmp/a/keys.pdf" "$tmp/keys.txt" || fail "pdftotext keys.pdf"
+for id in $ids; do
+  grep -q "$id" "$tmp/sheets.txt" || fail "sheets.pdf lacks $id"
+  grep -q "$id" "$tmp/keys.txt" || fail "keys.pdf lacks $id"
+done
+[ "$(grep -c '^page [0-9]*/[0-9]*$' "$tmp/sheets.txt")" -eq "$(pages "$tmp/a/sheets.pdf")" ] ||
+  fail "not every page of sheets.pdf says 'page i/n'"
+for words in "Name:" "Student number:" "Exercise 1" "Using only the dot product" "orthogonal projection" \
+              "Intersection of a ray and a circle" "Give every numerical answer rounded to 2 decimals"; do
+  grep -q "$words" "$tmp/sheets.txt" || fail "sheets.pdf: no '$words' in pdftotext's output"
+done
+grep -q "Worked solution\|answer key" "$tmp/keys.txt" || fail "keys.pdf: no key wording"
+grep -q "√" "$tmp/keys.txt" || fail "keys.pdf: no exact root (√) in the text"
+
+# Fonts: embedded (and subset) only, DejaVu.
+pdffonts "$tmp/a/sheets.pdf" | tail -n +3 > "$tmp/fonts.txt"
+[ -s "$tmp/fonts.txt" ] || fail "pdffonts lists no font"
+awk '$(NF-4) != "yes" {bad=1} END {exit bad}' "$tmp/fonts.txt" || fail "a font is not embedded: $(cat "$tmp/fonts.txt")"
+grep -q DejaVuSans "$tmp/fonts.txt" || fail "not set in DejaVu Sans"
+
+# Metadata.
+info=$(pdfinfo "$tmp/a/sheets.pdf")
+echo "$info" | grep -q '^Title: *Ray tracer 1.0' || fail "title: $info"
+echo "$info" | grep -q '^Subject: *[A-Z]' || fail "no subject: $info"
+echo "$info" | grep -q '^Creator: *epure ' || fail "no creator: $info"
+echo "$info" | grep -q '^CreationDate: .*Nov 14 22:13:20 2023' || fail "creation date is not SOURCE_DATE_EPOCH: $info"
+echo "$info" | grep -q '^Page size: *595.27.* x 841.8.* (A4)' || fail "not A4: $info"
+SOURCE_DATE_EPOCH=yesterday "$EPURE" generate --format pdf --sheets 1 --out "$tmp/bad" -q 2>"$tmp/err" &&
+  fail "a bad SOURCE_DATE_EPOCH was accepted"
+grep -q "SOURCE_DATE_EPOCH" "$tmp/err" || fail "the error does not name SOURCE_DATE_EPOCH: $(cat "$tmp/err")"
+
+# French: accents and the decimal comma survive into the text layer.
+gen --format pdf --sheets 1 --seed 11 --lang fr --out "$tmp/fr"
+pdftotext "$tmp/fr/sheets.pdf" "$tmp/fr.txt"
+grep -q "Numéro d'étudiant\|Numéro d’étudiant" "$tmp/fr.txt" || fail "French: no 'Numéro d'étudiant' in $(head -20 "$tmp/fr.txt")"
+grep -q "é" "$tmp/fr.txt" || fail "French: accents lost"
+
+# The QR code on each first page reads back as the sheet id.
+first=1
+for id in $(echo $ids | cut -d' ' -f1-2); do
+  n=$(grep -c 'class="page"' "$tmp/a/sheets/$id.svg")
+  pdftoppm -r 150 -f $first -l $first -singlefile -png "$tmp/a/sheets.pdf" "$tmp/qr"
+  read_back=$(zbarimg --quiet --raw "$tmp/qr.png" 2>/dev/null)
+  [ "$read_back" = "$id" ] || fail "the QR code on $id's first page reads '$read_back'"
+  first=$((first + n))
+done
+
+# The two backends draw the same page: PDF page 1 against the SVG's first page, for a sheet and
+# a key of two seeds; and the check can fail: another sheet's SVG must not pass.
+set -- $ids
+for f in sheets keys; do
+  pdftoppm -r 36 -f 1 -l 1 -singlefile -png "$tmp/a/$f.pdf" "$tmp/pdf_$f"
+  rsvg-convert -d 36 -p 36 "$tmp/a/$f/$1.svg" -o "$tmp/svg_$f.png" || fail "rsvg-convert $f/$1.svg"
+  python3 "$compare" "$tmp/pdf_$f.png" "$tmp/svg_$f.png" --max-mean 6 --max-bad 0.004 ||
+    fail "$f: the PDF and SVG pages of $1 differ"
+done
+rsvg-convert -d 36 -p 36 "$tmp/a/sheets/$2.svg" -o "$tmp/other.png"
+python3 "$compare" "$tmp/pdf_sheets.png" "$tmp/other.png" --max-mean 6 --max-bad 0.004 >/dev/null &&
+  fail "the pixel comparison cannot tell two different sheets apart"
+gen --format svg,pdf --sheets 1 --seed 3 --difficulty hard --out "$tmp/h"
+hid=$(ls "$tmp/h/sheets" | sed 's/\.svg$//')
+pdftoppm -r 36 -f 1 -l 1 -singlefile -png "$tmp/h/keys.pdf" "$tmp/h_pdf"
+rsvg-convert -d 36 -p 36 "$tmp/h/keys/$hid.svg" -o "$tmp/h_svg.png"
+python3 "$compare" "$tmp/h_pdf.png" "$tmp/h_svg.png" --max-mean 6 --max-bad 0.004 || fail "hard key: PDF and SVG differ"
+
+# --split: one PDF per sheet and per key, each complete.
+gen --format pdf --split --sheets 3 --seed 11 --out "$tmp/s"
+[ "$(ls "$tmp/s/sheets"/*.pdf | wc -l)" -eq 3 ] || fail "--split: expected 3 sheet PDFs"
+[ "$(ls "$tmp/s/keys"/*.pdf | wc -l)" -eq 3 ] || fail "--split: expected 3 key PDFs"
+[ -e "$tmp/s/sheets.pdf" ] && fail "--split also wrote the class set"
+for id in $(echo $ids | cut -d' ' -f1-3); do
+  qpdf --check "$tmp/s/sheets/$id.pdf" >/dev/null || fail "qpdf --check sheets/$id.pdf"
+  [ "$(pages "$tmp/s/sheets/$id.pdf")" -eq "$(grep -c 'class="page"' "$tmp/a/sheets/$id.svg")" ] || fail "sheets/$id.pdf page count"
+done
+
+# --paper letter.
+gen --format pdf --sheets 1 --paper letter --out "$tmp/l"
+pdfinfo "$tmp/l/sheets.pdf" | grep -q '^Page size: *612 x 792' || fail "--paper letter: $(pdfinfo "$tmp/l/sheets.pdf" | grep size)"
+
+# epure preview: the question's and the key's diagrams as PNG.
+"$EPURE" preview ray_circle --branch hit --out "$tmp/p" >/dev/null || fail "preview ray_circle"
+for f in ray_circle-question.png ray_circle-key.png; do
+  [ "$(head -c 8 "$tmp/p/$f" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "preview: $f is not a PNG"
+done
+"$EPURE" preview ray_ellipse --out "$tmp/p" >/dev/null || fail "preview ray_ellipse"
+"$EPURE" preview nonsense --out "$tmp/p" 2>"$tmp/err" && fail "preview accepted an unknown kind"
+grep -q "unknown kind 'nonsense'" "$tmp/err" || fail "preview: $(cat "$tmp/err")"
+"$EPURE" preview ray_circle --branch sideways --out "$tmp/p" 2>"$tmp/err" && fail "preview accepted an unknown branch"
+grep -q "no branch 'sideways'" "$tmp/err" || fail "preview: $(cat "$tmp/err")"
+echo "ok: pdf"
