@@ -24,7 +24,7 @@ struct GenerateCliOptions {
   std::string language;
   std::string difficulty;
   std::string out = "out";
-  std::string format = "svg";
+  std::string format = "svg,pdf";
   std::string paper;
   bool split = false;
   bool duplex = false;

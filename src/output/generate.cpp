@@ -163,7 +163,10 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   key_file.commit();
   if (options.svg)
     write_file_atomically(options.out / "index.html",
-                          index_html(set.spec().title, set.spec().course, set.language(), index));
+                          index_html(set.spec().title, set.spec().course, set.language(), index,
+                                     !options.pdf    ? PdfLinks::none
+                                     : options.split ? PdfLinks::per_sheet
+                                                     : PdfLinks::class_set));
   return report;
 }
 

@@ -18,7 +18,7 @@ struct GenerateOptions {
   int sheets = 30;
   std::filesystem::path out = "out";
   bool svg = true;
-  bool pdf = false;
+  bool pdf = false;  // the CLI's default is both; the library's, SVG alone
   bool split = false;   // PDF: one file per sheet and per key instead of the class-set files
   bool duplex = false;  // PDF class sets: every sheet starts on an odd page (blank pages added)
   std::optional<std::int64_t> pdf_date;  // the PDFs' creation date (SOURCE_DATE_EPOCH)

@@ -23,7 +23,7 @@ std::string escape(const std::string& s) {
 }  // namespace
 
 std::string index_html(const std::string& title, const std::string& course,
-                       const std::string& language, const std::vector<IndexEntry>& entries) {
+                       const std::string& language, const std::vector<IndexEntry>& entries, PdfLinks pdfs) {
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>{}</title>\n<style>\n"
@@ -35,18 +35,22 @@ std::string index_html(const std::string& title, const std::string& course,
       ".pair img{{width:100%;border:1px solid #ccc;background:#fff}}\n"
       "nav a{{margin-right:.6em;font-family:monospace}}\n"
       "</style>\n</head>\n<body>\n<h1>{}</h1>\n<p class=\"course\">{}</p>\n"
-      "<p>{} sheets. <a href=\"key.json\">key.json</a></p>\n<nav>\n",
-      escape(language), escape(title), escape(title), escape(course), entries.size());
+      "<p>{} sheets. <a href=\"key.json\">key.json</a>{}</p>\n<nav>\n",
+      escape(language), escape(title), escape(title), escape(course), entries.size(),
+      pdfs == PdfLinks::class_set ? " · <a href=\"sheets.pdf\">sheets.pdf</a> · <a href=\"keys.pdf\">keys.pdf</a>" : "");
   for (const auto& e : entries) html += fmt::format("<a href=\"#s-{0}\">{0}</a>\n", escape(e.id));
   html += "</nav>\n";
   for (const auto& e : entries) {
     const std::string id = escape(e.id);
     html += fmt::format(
-        "<section id=\"s-{0}\">\n<h2>{0}</h2>\n<div class=\"pair\">\n"
+        "<section id=\"s-{0}\">\n<h2>{0}{1}</h2>\n<div class=\"pair\">\n"
         "<a href=\"sheets/{0}.svg\"><img src=\"sheets/{0}.svg\" alt=\"sheet {0}\" loading=\"lazy\"></a>\n"
         "<a href=\"keys/{0}.svg\"><img src=\"keys/{0}.svg\" alt=\"key {0}\" loading=\"lazy\"></a>\n"
         "</div>\n</section>\n",
-        id);
+        id,
+        pdfs == PdfLinks::per_sheet
+            ? fmt::format(" <a href=\"sheets/{0}.pdf\">sheet PDF</a> <a href=\"keys/{0}.pdf\">key PDF</a>", id)
+            : std::string());
   }
   html += "</body>\n</html>\n";
   return html;

@@ -9,8 +9,12 @@ struct IndexEntry {
   std::string id;
 };
 
+// Which PDFs were written beside the SVGs, to link them.
+enum class PdfLinks { none, class_set, per_sheet };
+
 // `title` and `course` are escaped; images load lazily so that 3,000 sheets stay light.
 std::string index_html(const std::string& title, const std::string& course,
-                       const std::string& language, const std::vector<IndexEntry>& entries);
+                       const std::string& language, const std::vector<IndexEntry>& entries,
+                       PdfLinks pdfs = PdfLinks::none);
 
 }  // namespace epure::output

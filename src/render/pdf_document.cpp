@@ -72,11 +72,12 @@ PdfDocument::PdfDocument(Sink sink, const PdfMetadata& metadata, PageSize first_
   set(CAIRO_PDF_METADATA_SUBJECT, metadata.subject);
   set(CAIRO_PDF_METADATA_KEYWORDS, metadata.keywords);
   set(CAIRO_PDF_METADATA_CREATOR, metadata.creator);
-  if (metadata.date) {
-    const std::string date = iso_date(*metadata.date);
-    set(CAIRO_PDF_METADATA_CREATE_DATE, date);
-    set(CAIRO_PDF_METADATA_MOD_DATE, date);
-  }
+  // Without a date to write, none at all: cairo would stamp the current time, and the same
+  // spec and seed must give the same bytes. (cairo 1.16 drops a date it cannot parse; "none"
+  // is such a value, and the only way to unset its default.)
+  const std::string date = metadata.date ? iso_date(*metadata.date) : std::string("none");
+  cairo_pdf_surface_set_metadata(surface_, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
+  cairo_pdf_surface_set_metadata(surface_, CAIRO_PDF_METADATA_MOD_DATE, date.c_str());
   cr_ = cairo_create(surface_);
   fonts_ = pango_cairo_font_map_new();
   canvas_ = new CairoCanvas(cr_, fonts_);

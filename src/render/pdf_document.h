@@ -22,7 +22,8 @@ namespace epure::render {
 struct PdfMetadata {
   std::string title, author, subject, keywords;
   std::string creator;  // the program: "epure 0.4.0"
-  // Creation and modification date, seconds since 1970 UTC; unset: cairo's clock.
+  // Creation and modification date, seconds since 1970 UTC; unset: no date, so that the bytes
+  // depend on nothing but the pages.
   std::optional<std::int64_t> date;
 };
 

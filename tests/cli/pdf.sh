@@ -82,6 +82,14 @@ echo "$info" | grep -q '^Subject: *[A-Z]' || fail "no subject: $info"
 echo "$info" | grep -q '^Creator: *epure ' || fail "no creator: $info"
 echo "$info" | grep -q '^CreationDate: .*Nov 14 22:13:20 2023' || fail "creation date is not SOURCE_DATE_EPOCH: $info"
 echo "$info" | grep -q '^Page size: *595.27.* x 841.8.* (A4)' || fail "not A4: $info"
+# Without SOURCE_DATE_EPOCH: no date at all, and still the same bytes run after run.
+(unset SOURCE_DATE_EPOCH
+ gen --format pdf --sheets 2 --seed 11 --out "$tmp/n1"
+ sleep 1
+ gen --format pdf --sheets 2 --seed 11 --out "$tmp/n2"
+ cmp -s "$tmp/n1/sheets.pdf" "$tmp/n2/sheets.pdf" || fail "without SOURCE_DATE_EPOCH, two runs differ"
+ pdfinfo "$tmp/n1/sheets.pdf" | grep -q CreationDate && fail "a date was written without SOURCE_DATE_EPOCH"
+ exit 0) || exit 1
 SOURCE_DATE_EPOCH=yesterday "$EPURE" generate --format pdf --sheets 1 --out "$tmp/bad" -q 2>"$tmp/err" &&
   fail "a bad SOURCE_DATE_EPOCH was accepted"
 grep -q "SOURCE_DATE_EPOCH" "$tmp/err" || fail "the error does not name SOURCE_DATE_EPOCH: $(cat "$tmp/err")"
