@@ -19,7 +19,7 @@ epure=${EPURE:-$build/epure}
 work=${BENCH_DIR:-$(mktemp -d)}
 trap '[ -z "${BENCH_DIR:-}" ] && rm -rf "$work"' EXIT
 
-"$epure" generate --sheets "$sheets" --seed 11 --out "$work/set" --quiet --jobs 2
+"$epure" generate --format svg --sheets "$sheets" --seed 11 --out "$work/set" --quiet --jobs 2
 python3 - "$work/set/key.json" "$work/answers.csv" "$rows" <<'PY'
 import csv, json, random, sys
 key = json.load(open(sys.argv[1]))

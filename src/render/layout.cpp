@@ -29,6 +29,8 @@ constexpr double kBoxGap = 3;       // between a box and the "(", ";" around it
 constexpr double kTickGap = 4;      // between a tick box and its option
 constexpr double kOptionGap = 16;   // between two options
 constexpr double kHeaderGap = 12;   // between the header's left and right columns
+constexpr double kSideGap = 18;     // between a figure and the fields or answers beside it
+constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fields' prompts
 // The name fields: the name gets the larger share of the line (names are longer than student
 // numbers); a writing line starts a little after its label and runs just under the baseline,
 // below the descenders (0.24 em).
@@ -58,6 +60,27 @@ struct Fragment {
   void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
     const double width = text_width(runs, size);
     texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
+  }
+
+  // Appends `other`'s content, moved down by dy.
+  void append(Fragment&& other, double dy) {
+    for (auto& b : other.boxes) {
+      b.rect.y += dy;
+      boxes.push_back(std::move(b));
+    }
+    for (auto& r : other.rules) {
+      r.a.y += dy;
+      r.b.y += dy;
+      rules.push_back(r);
+    }
+    for (auto& f : other.figures) {
+      f.rect.y += dy;
+      figures.push_back(f);
+    }
+    for (auto& t : other.texts) {
+      t.baseline.y += dy;
+      texts.push_back(std::move(t));
+    }
   }
 
   void move_into(LaidOutPage& page, double dy) {
@@ -93,6 +116,8 @@ struct Atom {
   bool section_start = false;
   std::size_t head_atoms = 0;  // on a section's first atom: how many atoms its statement takes
   int section = -1, block = -1;
+  // The blocks set beside a figure in this atom, with rectangles from the atom's top.
+  std::vector<PlacedBlock> side_blocks;
   Fragment content;
 };
 
@@ -175,7 +200,14 @@ class Builder {
       } else if (const auto* p = std::get_if<Paragraph>(&block)) {
         paragraph(si, b, p->text, p->emphasis);
       } else if (const auto* f = std::get_if<Figure>(&block)) {
-        figure(si, b, *f, before && std::holds_alternative<Paragraph>(*before));
+        const bool follows = before && std::holds_alternative<Paragraph>(*before);
+        const std::size_t run_end = answers_run_end(blocks, bi + 1);
+        if (run_end > bi + 1 && beside(si, b, *f, follows, blocks, bi + 1, run_end)) {
+          if (head_end == 0) head_end = atoms_.size();
+          bi = run_end - 1;  // the fields or answers are placed
+          continue;
+        }
+        figure(si, b, *f, follows);
         if (head_end == 0) head_end = atoms_.size();
       } else if (const auto* field = std::get_if<AnswerField>(&block)) {
         const bool follows = before && std::holds_alternative<AnswerField>(*before);
@@ -250,8 +282,8 @@ class Builder {
     }
   }
 
-  void figure(int si, int bi, const Figure& f, bool follows_paragraph) {
-    double w = width_ * std::clamp(f.width_fraction, 0.05, 1.0);
+  // A figure's size at most `w` wide and figure_max_height of the page high.
+  std::pair<double, double> figure_size(const Figure& f, double w) const {
     double h = scene_height(f.scene, w);
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
     // The panels' height is proportional to the width, the captions' is not: a few narrowings
@@ -260,6 +292,102 @@ class Builder {
       w *= max_h / h;
       h = scene_height(f.scene, w);
     }
+    return {w, h};
+  }
+
+  // Where the run of answer fields, or of a key's answer lines, that starts at `from` ends
+  // (`from` itself when there is none).
+  static std::size_t answers_run_end(const std::vector<Block>& blocks, std::size_t from) {
+    if (from >= blocks.size()) return from;
+    const bool fields = std::holds_alternative<AnswerField>(blocks[from]);
+    if (!fields && !std::holds_alternative<AnswerLine>(blocks[from])) return from;
+    std::size_t end = from;
+    while (end < blocks.size() && (fields ? std::holds_alternative<AnswerField>(blocks[end])
+                                          : std::holds_alternative<AnswerLine>(blocks[end])))
+      ++end;
+    return end;
+  }
+
+  // The figure on the left and the fields (or the key's answers) that follow it in a column on
+  // its right, as one atom: half the paper of a figure above its fields, and the student writes
+  // beside what they read. Tried with the column at its natural width, then wider (the figure
+  // narrower, never below figure_min_share of the text width); false, with nothing pushed, when
+  // the fields do not fit the column or would make the pair taller than a figure may be.
+  bool beside(int si, int bi, const Figure& f, bool follows_paragraph, const std::vector<Block>& blocks,
+              std::size_t from, std::size_t to) {
+    const double full_left = left_, full_right = right_, full_width = width_;
+    const double natural = figure_size(f, full_width * std::clamp(f.width_fraction, 0.05, 1.0)).first;
+    const double max_h = (bottom_ - top_) * s_.figure_max_height;
+    for (double column : {full_width - kSideGap - natural, full_width * 0.45, full_width * 0.5}) {
+      const double figure_w = std::min(natural, full_width - kSideGap - column);
+      if (figure_w < full_width * s_.figure_min_share) break;
+      // The column's atoms, made by the usual code with the geometry narrowed to the column.
+      const std::size_t mark = atoms_.size();
+      const bool heading_flag = after_heading_, figure_flag = after_figure_;
+      left_ = full_left + figure_w + kSideGap;
+      width_ = full_right - left_;
+      // A narrow column keeps its boxes whole and wraps its long prompts instead.
+      prompt_share_ = kSidePromptShare;
+      for (std::size_t i = from; i < to; ++i) {
+        const int b = static_cast<int>(i);
+        if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
+          if (i == from) field_column_ = field_prompt_column(blocks, i);
+          answer_field(si, b, *field, i > from);
+        } else {
+          if (i == from) key_column_ = key_prompt_column(blocks, i);
+          answer_line(si, b, std::get<AnswerLine>(blocks[i]), i > from);
+        }
+      }
+      const double column_left = left_;
+      left_ = full_left;
+      width_ = full_width;
+      prompt_share_ = s_.prompt_column_max;
+      std::vector<Atom> side(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(mark)),
+                             std::make_move_iterator(atoms_.end()));
+      atoms_.resize(mark);
+      after_heading_ = heading_flag;
+      after_figure_ = figure_flag;
+
+      double height = 0;
+      bool fits = true;
+      for (std::size_t k = 0; k < side.size(); ++k) {
+        height += (k > 0 ? side[k].space_before : 0) + side[k].height;
+        // Everything left of the question id (the one muted text of a row), set flush right.
+        double room = right_;
+        for (const PlacedText& t : side[k].content.texts)
+          if (t.ink == Ink::muted) room = std::min(room, t.baseline.x - kIdGap / 2);
+        for (const PlacedBox& box : side[k].content.boxes) fits = fits && box.rect.right() <= room + kFitSlack;
+        for (const PlacedText& t : side[k].content.texts)
+          if (!(t.ink == Ink::muted))
+            fits = fits && t.baseline.x + text_width(t.runs, t.size) <= room + kFitSlack;
+      }
+      if (!fits) continue;
+      const auto [w, h] = figure_size(f, figure_w);
+      if (height > std::max(h, max_h)) return false;  // a wider column would not be shorter by much
+
+      Atom a;
+      a.section = si;
+      a.block = bi;
+      a.space_before = s_.figure_space;
+      a.break_before = !follows_paragraph;
+      a.height = std::max(h, height);
+      a.content.figures.push_back({{full_left, 0, w, h}, &f.scene});
+      double y = 0;
+      for (std::size_t k = 0; k < side.size(); ++k) {
+        if (k > 0) y += side[k].space_before;
+        a.side_blocks.push_back({{column_left, y, right_ - column_left, side[k].height}, si, side[k].block});
+        a.content.append(std::move(side[k].content), y);
+        y += side[k].height;
+      }
+      push(std::move(a));
+      after_figure_ = true;
+      return true;
+    }
+    return false;
+  }
+
+  void figure(int si, int bi, const Figure& f, bool follows_paragraph) {
+    const auto [w, h] = figure_size(f, width_ * std::clamp(f.width_fraction, 0.05, 1.0));
     Atom a;
     a.section = si;
     a.block = bi;
@@ -279,7 +407,7 @@ class Builder {
       if (!f) break;
       widest = std::max(widest, text_width(f->prompt, s_.body_size));
     }
-    return std::min(widest + kPromptGap, width_ * s_.prompt_column_max);
+    return std::min(widest + kPromptGap, width_ * prompt_share_);
   }
 
   double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
@@ -484,6 +612,15 @@ class Builder {
     } else {
       blocks.push_back({rect, atom.section, atom.block});
     }
+    for (PlacedBlock b : atom.side_blocks) {
+      b.rect.y += y;
+      blocks.push_back(b);
+    }
+    if (!atom.side_blocks.empty()) {
+      // The figure's own block: its width, not the whole line's.
+      PlacedBlock& own = blocks[blocks.size() - atom.side_blocks.size() - 1];
+      own.rect.width = atom.side_blocks.front().rect.x - kSideGap - own.rect.x;
+    }
     y_ = y + atom.height;
     empty_ = false;
   }
@@ -526,7 +663,12 @@ class Builder {
 
   const Document& doc_;
   const LayoutStyle& s_;
-  const double left_, right_, width_, top_, bottom_, body_line_;
+  // The text column; `beside` narrows left_ and width_ for the fields set beside a figure.
+  double left_;
+  const double right_;
+  double width_;
+  const double top_, bottom_, body_line_;
+  double prompt_share_ = s_.prompt_column_max;  // of width_, at most, for the fields' prompts
 
   std::vector<Atom> atoms_;
   bool after_heading_ = false;

@@ -5,12 +5,14 @@
 // so both draw the same thing.
 //
 // The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
-// with the name and student number fields and the sheet id as a QR code; a section starts on a fresh page when it would fit
-// there whole but not in what is left of the current one (and, for a section longer than a page,
+// with the name and student number fields and the sheet id as a QR code; a section starts on a
+// fresh page when it would fit there whole but not in what is left of the current one (and, for a section longer than a page,
 // when its statement, up to its first figure or field, would not); otherwise it flows, breaking
 // only between lines of text, runs of fields, tables or blocks: never right after a Heading,
 // never between a Figure and the Paragraph just before it, never leaving one line of a
 // paragraph alone, never inside a run of fields or a key's table that a page could hold.
+// A figure followed by fields or a key's answers has them beside it, in a column on its right,
+// when they fit there (half the paper of one above the other).
 #include <string>
 #include <vector>
 
@@ -138,6 +140,9 @@ struct LayoutStyle {
   // it belongs to still fits above it.
   double figure_max_height = 0.55;
   double figure_space = 10;         // above and below a figure (a frame needs more air than text)
+  // A figure followed by answer fields (or a key's answers) gets them in a column on its right
+  // when they fit there; the figure is then narrowed, but never below this share of the text width.
+  double figure_min_share = 0.42;
 };
 
 // Lays out the whole document. Deterministic: the same Document and style give the same pages.

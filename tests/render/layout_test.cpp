@@ -173,9 +173,16 @@ TEST_CASE("layout: everything lies inside the margins, blocks never overlap") {
       for (const auto& page : layout_document(doc, style)) {
         CAPTURE(page.number);
         check_inside(page, style);
-        for (std::size_t i = 1; i < page.blocks.size(); ++i) {
-          // Placed top to bottom: each block starts below the end of the one before.
-          CHECK(page.blocks[i].rect.y >= page.blocks[i - 1].rect.bottom() - kPt);
+        for (std::size_t i = 0; i < page.blocks.size(); ++i) {
+          for (std::size_t j = i + 1; j < page.blocks.size(); ++j) {
+            // Side by side (a figure and the fields beside it) or one below the other.
+            const PageRect& a = page.blocks[i].rect;
+            const PageRect& b = page.blocks[j].rect;
+            CAPTURE(i);
+            CAPTURE(j);
+            CHECK((a.right() <= b.x + kPt || b.right() <= a.x + kPt || a.bottom() <= b.y + kPt ||
+                   b.bottom() <= a.y + kPt));
+          }
         }
       }
     }
@@ -465,4 +472,82 @@ TEST_CASE("layout: deterministic") {
   const auto b = dump(layout_document(doc));
   CHECK(a == b);
   CHECK(a.size() > 1000);
+}
+
+TEST_CASE("layout: a figure's fields and a key's answers beside it, when they fit") {
+  const LayoutStyle style;
+  const double left = style.margin_left, right = PageSize::a4().width_pt - style.margin_right;
+  const double width = right - left;
+
+  SUBCASE("a sheet's fields: in a column right of the figure, top-aligned with it, no overlap") {
+    const Document doc = sample(1);
+    const auto pages = layout_document(doc);
+    const LaidOutPage& page = pages[0];
+    REQUIRE(page.figures.size() == 1);
+    const PageRect fig = page.figures[0].rect;
+    CHECK(fig.x == doctest::Approx(left));                      // on the left, not centred
+    CHECK(fig.width >= style.figure_min_share * width - kPt);   // never narrower than that
+    int boxes = 0;
+    for (const PlacedBox& b : page.boxes) {
+      if (b.kind == BoxKind::shade) continue;
+      ++boxes;
+      CAPTURE(b.question_id);
+      CHECK(b.rect.x >= fig.right() + kPt);                     // right of the figure
+      CHECK(b.rect.y >= fig.y - kPt);                           // from its top down
+      CHECK(b.rect.right() <= right + kPt);
+    }
+    CHECK(boxes == 1 + 2 + 3);  // t, P's two coordinates, the three positions
+    // Each field is still a block of its own, beside the figure's.
+    int field_blocks = 0;
+    for (const PlacedBlock& b : page.blocks)
+      if (b.section == 0 && std::holds_alternative<AnswerField>(block_of(doc, b))) {
+        ++field_blocks;
+        CHECK(b.rect.x >= fig.right() - kPt);
+      }
+    CHECK(field_blocks == 3);
+  }
+
+  SUBCASE("a key's answers: the table beside the figure") {
+    Document key = sample(1);
+    key.student_fields = false;
+    auto& blocks = key.sections[0].blocks;
+    blocks.erase(blocks.begin() + 3, blocks.end());  // heading, paragraph, figure
+    blocks.emplace_back(AnswerLine{"1.t", "t =", "2/5 = 0.4"});
+    blocks.emplace_back(AnswerLine{"1.P", "P =", "(4, 4)"});
+    const auto pages = layout_document(key);
+    REQUIRE(pages[0].figures.size() == 1);
+    const PageRect fig = pages[0].figures[0].rect;
+    bool answer_seen = false;
+    for (const PlacedText& t : pages[0].texts) {
+      if (t.ink != Ink::answer) continue;
+      answer_seen = true;
+      CHECK(t.baseline.x > fig.right());
+      CHECK(t.baseline.y < fig.bottom());
+    }
+    CHECK(answer_seen);
+  }
+
+  SUBCASE("fields too many for the figure's height go below it, centred as before") {
+    Document doc = sample(1);
+    for (int k = 0; k < 30; ++k)
+      doc.sections[0].add(AnswerField{fmt::format("1.x{}", k), "x =", AnswerField::Kind::number, {}});
+    const auto pages = layout_document(doc);
+    const PageRect fig = pages[0].figures[0].rect;
+    CHECK(fig.x + fig.width / 2 == doctest::Approx(left + width / 2));
+    for (const auto& page : pages)
+      for (const PlacedBox& b : page.boxes)
+        if (b.kind == BoxKind::answer && page.number == 1) CHECK(b.rect.y >= fig.bottom() - kPt);
+  }
+
+  SUBCASE("a field too wide for any column (a 3D point with a long prompt in a narrow page) goes below") {
+    Document doc = sample(1);
+    doc.page = {300, 841.89};
+    auto& blocks = doc.sections[0].blocks;
+    blocks.erase(blocks.begin() + 3, blocks.end());
+    blocks.emplace_back(AnswerField{"1.Q", "Q =", AnswerField::Kind::point3, {}});
+    const auto pages = layout_document(doc);
+    const PageRect fig = pages[0].figures[0].rect;
+    for (const PlacedBox& b : pages[0].boxes)
+      if (b.kind == BoxKind::answer) CHECK(b.rect.y >= fig.bottom() - kPt);
+  }
 }
