@@ -186,7 +186,7 @@ void add_grade_command(CLI::App& app, int& status) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--report,-r", o->report, "Write one CSV row per submission: sheet, student, score, max, points per question");
   cmd->add_option("--json", o->json, "Write every mark as JSON: expected, given, verdict, points, feedback, mistake code");
-  cmd->add_option("--feedback", o->feedback, "Write a feedback sheet per student (SVG) and class.svg into this directory");
+  cmd->add_option("--feedback", o->feedback, "Write a feedback sheet per student (<id>.svg and <id>.pdf) and class.svg into this directory");
   cmd->add_option("--histogram", o->histogram, "Write the class's score histogram (SVG)");
   auto* ft = cmd->add_flag("--follow-through", o->follow_through, "Credit answers right from a wrong earlier answer (overrides the spec)");
   auto* nft = cmd->add_flag("--no-follow-through", o->no_follow_through, "Do not credit follow-through (overrides the spec)");

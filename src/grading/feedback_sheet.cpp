@@ -7,6 +7,8 @@
 #include "grading/histogram.h"
 #include "grading/kind_grader.h"
 #include "output/atomic_file.h"
+#include "render/layout.h"
+#include "render/pdf_document.h"
 #include "render/svg_page.h"
 
 namespace epure::grading {
@@ -150,17 +152,26 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
 }
 
 FeedbackSheets::FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text)
-    : dir_(std::move(dir)), key_(key), text_(text), diagrams_(key, text.texts().language()) {
+    : dir_(std::move(dir)), key_(key), text_(text), diagrams_(key, text.texts().language()),
+      pdf_date_(render::source_date_epoch()) {
   std::filesystem::create_directories(dir_);
 }
 
 void FeedbackSheets::submission(const Submission& s) {
   std::string name;
-  if (!s.marked()) name = fmt::format("line{}.svg", s.line);
-  else if (s.flagged("duplicate")) name = fmt::format("{}-line{}.svg", s.sheet->id, s.line);
-  else name = s.sheet->id + ".svg";
+  if (!s.marked()) name = fmt::format("line{}", s.line);
+  else if (s.flagged("duplicate")) name = fmt::format("{}-line{}", s.sheet->id, s.line);
+  else name = s.sheet->id;
   const render::Document doc = feedback_document(s, key_, text_, &diagrams_);
-  output::write_file_atomically(dir_ / name, render::document_to_svg(doc));
+  // Laid out once, drawn twice: the SVG for a screen, the PDF to print or hand back.
+  const std::vector<render::LaidOutPage> pages = render::layout_document(doc);
+  output::write_file_atomically(dir_ / (name + ".svg"), render::pages_to_svg(pages, doc));
+  render::PdfMetadata metadata;
+  metadata.title = doc.title;
+  metadata.subject = doc.course;
+  metadata.creator = "epure";
+  metadata.date = pdf_date_;
+  output::write_file_atomically(dir_ / (name + ".pdf"), render::pages_to_pdf(pages, doc.sheet_id, metadata));
   ++written_;
 }
 

@@ -1,13 +1,14 @@
 #pragma once
-// --feedback DIR: a marked sheet for each student, as SVG pages (PDF once that backend
-// exists): per exercise the key's construction diagram with the student's wrong points and
+// --feedback DIR: a marked sheet for each student, as SVG pages and as a PDF: per exercise the key's construction diagram with the student's wrong points and
 // vectors drawn beside the right ones, then every question with their answer, the expected
 // one, the points, and why (the named mistake, the follow-through it earned). A row that
 // could not be marked still gets a page saying why. Also class.svg, the score histogram.
 // Files are named by sheet id (a sheet submitted twice: "-line<N>" after the id), written
 // atomically.
+#include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "grading/feedback_text.h"
 #include "grading/key_diagrams.h"
@@ -36,6 +37,7 @@ class FeedbackSheets final : public SubmissionSink {
   const AnswerKey& key_;
   const FeedbackText& text_;
   KeyDiagrams diagrams_;
+  std::optional<std::int64_t> pdf_date_;  // SOURCE_DATE_EPOCH, read once
   int written_ = 0;
 };
 

@@ -153,8 +153,15 @@ a, b = (json.load(open(p)) for p in sys.argv[1:])
 assert [s["score"] for s in a["submissions"]] == [s["score"] for s in b["submissions"]]
 PY
 
-# feedback sheets: one per student and the class histogram, well-formed and renderable
-[ "$(ls "$tmp/fb" | wc -l)" -eq 5 ] || fail "expected 4 feedback sheets and class.svg, got: $(ls "$tmp/fb")"
+# feedback sheets: one per student (SVG and PDF) and the class histogram, well-formed and renderable
+[ "$(ls "$tmp/fb" | wc -l)" -eq 9 ] || fail "expected 4 feedback sheets as SVG and PDF and class.svg, got: $(ls "$tmp/fb")"
+for f in "$tmp"/fb/*.pdf; do
+  qpdf --check "$f" >/dev/null || fail "$(basename "$f") fails qpdf --check"
+  id=$(basename "$f" .pdf)
+  [ "$(pdfinfo "$f" | awk '/^Pages:/ {print $2}')" -eq "$(grep -c 'class="page"' "$tmp/fb/$id.svg")" ] ||
+    fail "$id.pdf and $id.svg have different page counts"
+done
+pdftotext "$tmp/fb/1000-0005-0089.pdf" - | grep -q "lointaine J" || fail "the PDF feedback lacks the explanation"
 for f in "$tmp"/fb/*.svg "$tmp/hist.svg"; do
   xmllint --noout "$f" 2>/dev/null || fail "$(basename "$f") is not well-formed"
   rsvg-convert -o "$tmp/render.png" "$f" 2>/dev/null || fail "$(basename "$f") does not render"
