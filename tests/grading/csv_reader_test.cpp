@@ -2,6 +2,7 @@
 // line numbers across quoted line breaks, the lenient cases; and a round trip of random cells
 // over many seeds.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cstdio>
@@ -110,7 +111,7 @@ TEST_CASE("round trip: random cells written as RFC 4180, read back, over many se
     Rows rows;
     // a header that detects as the delimiter
     std::vector<std::string> header;
-    for (int c = 0; c < columns; ++c) header.push_back("h" + std::to_string(c));
+    for (int c = 0; c < columns; ++c) header.push_back(fmt::format("h{}", c));
     rows.push_back(header);
     const int count = static_cast<int>(rng.integer(1, 30));
     for (int i = 0; i < count; ++i) {
@@ -122,7 +123,7 @@ TEST_CASE("round trip: random cells written as RFC 4180, read back, over many se
         row.push_back(cell);
       }
       // a row of only empty cells with one column would be a blank line: not a record
-      if (columns == 1 && row[0].empty()) row[0] = "x";
+      if (columns == 1 && row[0].empty()) row[0].push_back('x');
       rows.push_back(row);
     }
     std::string text;

@@ -132,7 +132,8 @@ TEST_CASE("wrap_rich_text: greedy, at spaces, never inside a group") {
           // Only a single word may overflow.
           CHECK(joined(l).find(' ') == std::string::npos);
         }
-        back += (back.empty() ? "" : " ") + joined(l);
+        if (!back.empty()) back += ' ';
+        back += joined(l);
       }
       CHECK(back == joined(parse_rich_text(text)));
     }
