@@ -13,7 +13,7 @@ namespace {
 
 // Shaped runs kept per canvas; past this many the cache starts again, so memory stays flat
 // however many sheets one canvas draws.
-constexpr std::size_t kMaxShaped = 8192;
+constexpr std::size_t kMaxShaped = 1024;
 
 void set_colour(cairo_t* cr, Colour c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
 
