@@ -3,6 +3,7 @@
 #include <exception>
 #include <memory>
 #include <thread>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -56,6 +57,70 @@ struct ClassSetPdf {
   }
 };
 
+struct Batch {
+  std::vector<std::string> ids;
+  std::vector<Printed> printed;
+};
+
+// sheets.pdf and keys.pdf. A cairo surface is drawn by one thread, in page order, so with two
+// jobs or more each file gets a thread of its own (each document has its own pango font map),
+// and a batch is drawn while the next one is generated and laid out. With one job, in line.
+// Either way the pages go in id order: the bytes do not depend on the number of jobs.
+class ClassSetWriter {
+ public:
+  ClassSetWriter(const GenerateOptions& o, const WorksheetSpec& spec, const Printed& first)
+      : duplex_(o.duplex),
+        threaded_(o.jobs > 1),
+        sheets_(o.out / "sheets.pdf", pdf_metadata(spec, first.sheet.title, o), first.sheet.page),
+        keys_(o.out / "keys.pdf", pdf_metadata(spec, first.key.title, o), first.key.page) {}
+
+  // Waits for the batch before (and rethrows its error), then draws this one.
+  void add(std::unique_ptr<Batch> batch) {
+    wait();
+    batch_ = std::move(batch);
+    if (!threaded_) {
+      draw(sheets_, &Printed::sheet_pages);
+      draw(keys_, &Printed::key_pages);
+      return;
+    }
+    sheets_thread_ = std::jthread([this] { guarded(sheets_error_, [this] { draw(sheets_, &Printed::sheet_pages); }); });
+    keys_thread_ = std::jthread([this] { guarded(keys_error_, [this] { draw(keys_, &Printed::key_pages); }); });
+  }
+
+  void commit() {
+    wait();
+    sheets_.commit();
+    keys_.commit();
+  }
+
+ private:
+  using Pages = std::vector<render::LaidOutPage> Printed::*;
+  void draw(ClassSetPdf& pdf, Pages pages) {
+    for (std::size_t i = 0; i < batch_->ids.size(); ++i) pdf.add(batch_->printed[i].*pages, batch_->ids[i], duplex_);
+  }
+  template <class Fn>
+  static void guarded(std::exception_ptr& error, Fn&& fn) {
+    try {
+      fn();
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  void wait() {
+    if (sheets_thread_.joinable()) sheets_thread_.join();
+    if (keys_thread_.joinable()) keys_thread_.join();
+    for (std::exception_ptr* e : {&sheets_error_, &keys_error_})
+      if (*e) std::rethrow_exception(std::exchange(*e, nullptr));
+  }
+
+  const bool duplex_, threaded_;
+  ClassSetPdf sheets_, keys_;
+  std::unique_ptr<Batch> batch_;
+  std::exception_ptr sheets_error_, keys_error_;
+  // Declared last, so joined first when an error unwinds: nothing they use is gone before them.
+  std::jthread sheets_thread_, keys_thread_;
+};
+
 }  // namespace
 
 GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
@@ -76,7 +141,7 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   std::vector<IndexEntry> index;
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;
-  std::unique_ptr<ClassSetPdf> sheets_pdf, keys_pdf;
+  std::unique_ptr<ClassSetWriter> class_set;
 
   for (int start = 0; start < options.sheets; start += kBatch) {
     const int count = std::min(kBatch, options.sheets - start);
@@ -115,33 +180,13 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
         }
       });
     }
-    // 4. the class-set PDFs: one cairo surface each, so drawn in id order
+    // 4. the class-set PDFs, in id order (behind the next batch, with two jobs or more)
     if (options.pdf && !options.split) {
-      if (!sheets_pdf) {
-        sheets_pdf = std::make_unique<ClassSetPdf>(options.out / "sheets.pdf",
-                                                   pdf_metadata(set.spec(), printed[0].sheet.title, options),
-                                                   printed[0].sheet.page);
-        keys_pdf = std::make_unique<ClassSetPdf>(options.out / "keys.pdf",
-                                                 pdf_metadata(set.spec(), printed[0].key.title, options),
-                                                 printed[0].key.page);
-      }
-      // The two files are independent: with two jobs or more, the keys are drawn on a second
-      // thread (each document has its own font map; each is drawn in id order all the same).
-      std::exception_ptr keys_error;
-      const auto draw_keys = [&] {
-        try {
-          for (int i = 0; i < count; ++i) keys_pdf->add(printed[i].key_pages, sheets[i].id.str(), options.duplex);
-        } catch (...) {
-          keys_error = std::current_exception();
-        }
-      };
-      {
-        std::jthread keys_thread;
-        if (options.jobs > 1) keys_thread = std::jthread(draw_keys);
-        for (int i = 0; i < count; ++i) sheets_pdf->add(printed[i].sheet_pages, sheets[i].id.str(), options.duplex);
-        if (options.jobs <= 1) draw_keys();
-      }
-      if (keys_error) std::rethrow_exception(keys_error);
+      if (!class_set) class_set = std::make_unique<ClassSetWriter>(options, set.spec(), printed[0]);
+      auto batch = std::make_unique<Batch>();
+      for (const Sheet& s : sheets) batch->ids.push_back(s.id.str());
+      batch->printed = std::move(printed);  // the buffer moves, so the pages' scene pointers hold
+      class_set->add(std::move(batch));
     }
     for (int i = 0; i < count; ++i) {
       KeyJson::sheet(key, sheets[i], start + i == 0);
@@ -156,10 +201,7 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   }
   KeyJson::end(key);
   key_file.write(std::string_view(key.data(), key.size()));
-  if (sheets_pdf) {
-    sheets_pdf->commit();
-    keys_pdf->commit();
-  }
+  if (class_set) class_set->commit();
   key_file.commit();
   if (options.svg)
     write_file_atomically(options.out / "index.html",
