@@ -119,9 +119,35 @@ int ExerciseKey::find(std::string_view field) const {
   return -1;
 }
 
+namespace {
+
+// The slot to start probing at: FNV-1a spread by a Fibonacci multiply (ids differ in a few
+// trailing characters, which FNV-1a alone leaves in its low bits).
+std::size_t first_slot(std::string_view id, std::size_t mask) {
+  return static_cast<std::size_t>(field_hash(id) * 2654435769u) & mask;
+}
+
+}  // namespace
+
 const SheetKey* AnswerKey::find(std::string_view canonical_id) const {
-  auto it = by_id_.find(canonical_id);
-  return it == by_id_.end() ? nullptr : &sheets_[it->second];
+  if (slots_.empty()) return nullptr;
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = first_slot(canonical_id, mask);; i = (i + 1) & mask) {
+    const std::uint32_t slot = slots_[i];
+    if (slot == 0) return nullptr;
+    const SheetKey& s = sheets_[slot - 1];
+    if (s.id == canonical_id) return &s;
+  }
+}
+
+void AnswerKey::rehash(std::size_t slots) {
+  slots_.assign(slots, 0);
+  const std::size_t mask = slots - 1;
+  for (std::size_t k = 0; k < sheets_.size(); ++k) {
+    std::size_t i = first_slot(sheets_[k].id, mask);
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = static_cast<std::uint32_t>(k + 1);
+  }
 }
 
 void AnswerKey::add(SheetKey sheet) {
@@ -147,9 +173,17 @@ void AnswerKey::add(SheetKey sheet) {
       previous = q.id;
     }
   }
-  const bool fresh = by_id_.emplace(sheet.id, sheets_.size()).second;
-  if (!fresh) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
+  if (find(sheet.id)) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
   sheets_.push_back(std::move(sheet));
+  // at most half full, so that a probe for an id not in the key ends soon
+  if (sheets_.size() * 2 > slots_.size()) {
+    rehash(std::max<std::size_t>(16, slots_.size() * 2));
+  } else {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = first_slot(sheets_.back().id, mask);
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = static_cast<std::uint32_t>(sheets_.size());
+  }
 }
 
 SheetKey read_sheet_json(const json& s, std::string_view source) {
