@@ -177,8 +177,7 @@ void GradingSession::flag(Submission& s, std::string_view code, std::string mess
 void GradingSession::row(const AnswerRow& in) {
   // Windows-1252 text (Excel's plain "CSV"): every cell that is not UTF-8 is read as such
   AnswerRow r = in;
-  bool foreign = false;
-  for (auto c : in.cells) foreign = foreign || !valid_utf8(c);
+  const bool foreign = !all_valid_utf8(in.cells);
   if (foreign) {
     transcoded_.clear();
     for (auto c : in.cells) transcoded_.push_back(valid_utf8(c) ? std::string(c) : cp1252_to_utf8(c));
