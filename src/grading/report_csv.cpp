@@ -30,7 +30,8 @@ struct CsvReport::Impl {
   }
   void cell(std::string_view s, bool first = false) {
     if (!first) buf.push_back(dialect.delimiter);
-    const bool quote = s.find_first_of(std::string{dialect.delimiter, '"', '\n', '\r'}) != std::string_view::npos;
+    const char special[] = {dialect.delimiter, '"', '\n', '\r'};  // no string built per cell
+    const bool quote = s.find_first_of(std::string_view(special, sizeof special)) != std::string_view::npos;
     if (!quote) {
       buf.append(s);
       return;
@@ -42,13 +43,20 @@ struct CsvReport::Impl {
     }
     buf.push_back('"');
   }
+  // A cell of points, delimiter first. Most are 0 or 1, exactly as the key gives them (this
+  // compares the key's own values, not computed ones): written as one digit, inline, without
+  // the general path below (a row has dozens of them).
   void number(double x) {
-    buf.push_back(dialect.delimiter);
-    // thousandths are enough for points, written without trailing zeros; most are 0 or 1
-    if (x == 0 || x == 1) {  // exact: the points as the key gives them
+    if (x == 0 || x == 1) {
+      buf.push_back(dialect.delimiter);
       buf.push_back(x == 0 ? '0' : '1');
       return;
     }
+    number_general(x);
+  }
+  // thousandths are enough for points, written without trailing zeros
+  void number_general(double x) {
+    buf.push_back(dialect.delimiter);
     long long m = static_cast<long long>(std::abs(x) * 1000 + 0.5);
     if (x < 0) buf.push_back('-');
     char digits[24];
