@@ -43,7 +43,7 @@ Given unreadable(std::string_view raw, std::string_view why) {
 
 }  // namespace
 
-std::string_view trim_cell(std::string_view s) {
+std::string_view trim_cell_spaces(std::string_view s) {
   std::size_t w = 0;
   while (!s.empty() && is_space_at(s, 0, w)) s.remove_prefix(w);
   // from the end: the last byte of a no-break space is 0xA0 / 0xAF / 0x89

@@ -10,7 +10,14 @@
 namespace epure::grading {
 
 // Surrounding spaces (ASCII and no-break) removed.
-std::string_view trim_cell(std::string_view cell);
+std::string_view trim_cell_spaces(std::string_view cell);
+inline std::string_view trim_cell(std::string_view cell) {
+  // most cells begin and end with a printable ASCII byte, which no space (nor any byte of a
+  // no-break space) is: nothing to trim, decided inline
+  const auto plain = [](char c) { return static_cast<unsigned char>(c) > ' ' && static_cast<unsigned char>(c) < 0x80; };
+  if (cell.empty() || (plain(cell.front()) && plain(cell.back()))) return cell;
+  return trim_cell_spaces(cell);
+}
 
 // Faces as students list them: "+x -y", "-y;+x", "+x,+y", "x=1 y=-1", "none" / "aucune" / "∅".
 // Every face needs its sign. Returns false for anything else.
