@@ -43,34 +43,42 @@ struct CsvReport::Impl {
     }
     buf.push_back('"');
   }
-  // A cell of points, delimiter first. Most are 0 or 1, exactly as the key gives them (this
-  // compares the key's own values, not computed ones): written as one digit, inline, without
-  // the general path below (a row has dozens of them).
-  void number(double x) {
+  // Room a cell of points takes at most: delimiter, sign, 19 digits, separator, 3 decimals.
+  static constexpr std::size_t kPointsRoom = 32;
+
+  // A cell of points, delimiter first, written at p (kPointsRoom bytes free); returns its end.
+  // Most are 0 or 1, exactly as the key gives them (this compares the key's own values, not
+  // computed ones): one digit. Thousandths are enough for the rest, without trailing zeros.
+  char* put_number(char* p, double x) const {
+    *p++ = dialect.delimiter;
     if (x == 0 || x == 1) {
-      buf.push_back(dialect.delimiter);
-      buf.push_back(x == 0 ? '0' : '1');
-      return;
+      *p++ = x == 0 ? '0' : '1';
+      return p;
     }
-    number_general(x);
-  }
-  // thousandths are enough for points, written without trailing zeros
-  void number_general(double x) {
-    buf.push_back(dialect.delimiter);
     long long m = static_cast<long long>(std::abs(x) * 1000 + 0.5);
-    if (x < 0) buf.push_back('-');
+    if (x < 0) *p++ = '-';
     char digits[24];
     int n = 0;
     for (long long whole = m / 1000; n == 0 || whole > 0; whole /= 10) digits[n++] = static_cast<char>('0' + whole % 10);
-    while (n > 0) buf.push_back(digits[--n]);
+    while (n > 0) *p++ = digits[--n];
     long long frac = m % 1000;
-    if (frac == 0) return;
-    buf.push_back(dialect.decimal_comma ? ',' : '.');
+    if (frac == 0) return p;
+    *p++ = dialect.decimal_comma ? ',' : '.';
     for (long long d = 100; frac > 0; d /= 10) {
-      buf.push_back(static_cast<char>('0' + frac / d));
+      *p++ = static_cast<char>('0' + frac / d);
       frac %= d;
     }
+    return p;
   }
+  // Room for `cells` cells at the end of the buffer, written through a pointer rather than a
+  // push_back (and its capacity test) per character: a row has dozens of them.
+  char* open_room(std::size_t cells) {
+    const std::size_t at = buf.size();
+    buf.resize(at + cells * kPointsRoom);
+    return buf.data() + at;
+  }
+  void close_room(const char* end) { buf.resize(static_cast<std::size_t>(end - buf.data())); }
+  void number(double x) { close_room(put_number(open_room(1), x)); }
 };
 
 CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, CsvDialect dialect)
@@ -105,10 +113,12 @@ void CsvReport::submission(const Submission& s) {
         m.points[i] = s.marks[e][q].points;
         m.asked[i] = 1;
       }
+    char* p = m.open_room(m.points.size());
     for (std::size_t i = 0; i < m.points.size(); ++i) {
-      if (m.asked[i]) m.number(m.points[i]);
-      else m.buf.push_back(m.dialect.delimiter);
+      if (m.asked[i]) p = m.put_number(p, m.points[i]);
+      else *p++ = m.dialect.delimiter;
     }
+    m.close_room(p);
   } else {
     m.buf.push_back(m.dialect.delimiter);
     m.buf.push_back(m.dialect.delimiter);
