@@ -109,9 +109,9 @@ int ExerciseKey::find(std::string_view field) const {
   // kinds' graders ask by name many times per exercise: by hash alone once packed (every
   // field name the kinds use hashes apart, tests/grading/answer_key_test.cpp checks it)
   const std::uint32_t h = field_hash(field);
-  if (hot.size() == questions.size()) {
-    for (std::size_t i = 0; i < hot.size(); ++i)
-      if (hot[i].field_hash == h) return static_cast<int>(i);
+  if (field_hashes.size() == questions.size()) {
+    for (std::size_t i = 0; i < field_hashes.size(); ++i)
+      if (field_hashes[i] == h) return static_cast<int>(i);
     return -1;
   }
   for (std::size_t i = 0; i < questions.size(); ++i)
@@ -230,6 +230,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
   // packed last, one exercise after the other, so that they sit together in memory
   for (auto& ex : sheet.exercises) {
     ex.hot.reserve(ex.questions.size());
+    ex.field_hashes.reserve(ex.questions.size());
     for (const auto& q : ex.questions) {
       HotQuestion h;
       h.number = q.number;
@@ -247,6 +248,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
       h.boolean = q.boolean;
       h.faces = q.faces;
       ex.hot.push_back(h);
+      ex.field_hashes.push_back(q.field_hash);
     }
   }
   return sheet;

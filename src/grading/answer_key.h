@@ -76,6 +76,7 @@ struct ExerciseKey {
   nlohmann::json solution;  // exactly the solve output for it
   std::vector<QuestionKey> questions;
   std::vector<HotQuestion> hot;  // questions[i] packed, made by read_sheet_json
+  std::vector<std::uint32_t> field_hashes;  // hot[i].field_hash side by side: find() scans one cache line
   const KindGrader* grader = nullptr;  // null for a kind grading has no knowledge of
   std::any prepared;                   // the grader's reading of the instance, made once
 
