@@ -107,12 +107,20 @@ void CsvReport::submission(const Submission& s) {
     m.number(s.score);
     m.number(s.max);
     std::fill(m.asked.begin(), m.asked.end(), 0);
-    for (std::size_t e = 0; e < s.marks.size(); ++e)
-      for (std::size_t q = 0; q < s.marks[e].size(); ++q) {
-        const auto i = static_cast<std::size_t>(s.report_index[e][q]);
-        m.points[i] = s.marks[e][q].points;
-        m.asked[i] = 1;
+    // through local pointers: a store to asked (char) may alias anything, and would make the
+    // compiler reload every vector's bounds at each question
+    double* const points = m.points.data();
+    char* const asked = m.asked.data();
+    for (std::size_t e = 0; e < s.marks.size(); ++e) {
+      const QuestionMark* const marks = s.marks[e].data();
+      const int* const index = s.report_index[e].data();
+      const std::size_t n = s.marks[e].size();
+      for (std::size_t q = 0; q < n; ++q) {
+        const auto i = static_cast<std::size_t>(index[q]);
+        points[i] = marks[q].points;
+        asked[i] = 1;
       }
+    }
     char* p = m.open_room(m.points.size());
     for (std::size_t i = 0; i < m.points.size(); ++i) {
       if (m.asked[i]) p = m.put_number(p, m.points[i]);
