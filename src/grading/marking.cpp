@@ -52,7 +52,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
   for (std::size_t i = 0; i < n; ++i) {
     const HotQuestion& q = key.hot[i];
     QuestionMark& m = out[i];
-    m.given = read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type);
+    read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type, m.given);
     m.points = 0;
     m.mistake = {};
     m.from = {};
