@@ -75,23 +75,35 @@ class SheetCounter final : public RowHandler {
     if (column_ < 0 || static_cast<std::size_t>(column_) >= r.cells.size()) return;
     const std::string_view typed = trim_cell(r.cells[static_cast<std::size_t>(column_)]);
     if (typed.empty()) return;
-    if (key_ && key_->find(typed)) {
-      ++counts[std::string(typed)];
-      return;
+    // a key's own id (nearly every row): counted by its place in the key, no string made
+    if (key_) {
+      if (const SheetKey* s = key_->find(typed)) {
+        ++by_index_[key_->index_of(*s)];
+        return;
+      }
     }
     const auto parsed = parse_sheet_id(typed);
     if (!parsed.id) return;
-    auto [it, fresh] = counts.emplace(parsed.id->str(), 0);
+    auto [it, fresh] = counts_.emplace(parsed.id->str(), 0);
     ++it->second;
     if (fresh) ids.push_back(*parsed.id);
   }
 
-  std::unordered_map<std::string, int> counts;
+  // How many rows carry each sheet, by canonical id.
+  std::unordered_map<std::string, int> take_counts() {
+    if (key_)
+      for (std::size_t i = 0; i < by_index_.size(); ++i)
+        if (by_index_[i] > 0) counts_[key_->sheets()[i].id] += by_index_[i];
+    return std::move(counts_);
+  }
+
   std::vector<SheetId> ids;
 
  private:
   const AnswerKey* key_;
   int column_ = -1;
+  std::vector<int> by_index_ = std::vector<int>(key_ ? key_->sheets().size() : 0, 0);
+  std::unordered_map<std::string, int> counts_;
 };
 
 std::optional<char> delimiter_of(const std::string& name) {
@@ -123,7 +135,7 @@ int run_grade(const GradeCliOptions& o) {
   if (o.follow_through) options.follow_through = true;
   if (o.no_follow_through) options.follow_through = false;
   options.language = o.language;
-  options.sheet_counts = std::move(counter.counts);
+  options.sheet_counts = counter.take_counts();
   GradingSession session(*key, std::move(options));
   if (key->info.draw_version != kDrawVersion)
     session.problem(0, fmt::format("{} was written by epure {} (draw version {}); this is epure {} (draw version {}): "

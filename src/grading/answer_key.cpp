@@ -109,9 +109,9 @@ int ExerciseKey::find(std::string_view field) const {
   // kinds' graders ask by name many times per exercise: by hash alone once packed (every
   // field name the kinds use hashes apart, tests/grading/answer_key_test.cpp checks it)
   const std::uint32_t h = field_hash(field);
-  if (hot.size() == questions.size()) {
-    for (std::size_t i = 0; i < hot.size(); ++i)
-      if (hot[i].field_hash == h) return static_cast<int>(i);
+  if (field_hashes.size() == questions.size()) {
+    for (std::size_t i = 0; i < field_hashes.size(); ++i)
+      if (field_hashes[i] == h) return static_cast<int>(i);
     return -1;
   }
   for (std::size_t i = 0; i < questions.size(); ++i)
@@ -119,9 +119,35 @@ int ExerciseKey::find(std::string_view field) const {
   return -1;
 }
 
+namespace {
+
+// The slot to start probing at: FNV-1a spread by a Fibonacci multiply (ids differ in a few
+// trailing characters, which FNV-1a alone leaves in its low bits).
+std::size_t first_slot(std::string_view id, std::size_t mask) {
+  return static_cast<std::size_t>(field_hash(id) * 2654435769u) & mask;
+}
+
+}  // namespace
+
 const SheetKey* AnswerKey::find(std::string_view canonical_id) const {
-  auto it = by_id_.find(canonical_id);
-  return it == by_id_.end() ? nullptr : &sheets_[it->second];
+  if (slots_.empty()) return nullptr;
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = first_slot(canonical_id, mask);; i = (i + 1) & mask) {
+    const std::uint32_t slot = slots_[i];
+    if (slot == 0) return nullptr;
+    const SheetKey& s = sheets_[slot - 1];
+    if (s.id == canonical_id) return &s;
+  }
+}
+
+void AnswerKey::rehash(std::size_t slots) {
+  slots_.assign(slots, 0);
+  const std::size_t mask = slots - 1;
+  for (std::size_t k = 0; k < sheets_.size(); ++k) {
+    std::size_t i = first_slot(sheets_[k].id, mask);
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = static_cast<std::uint32_t>(k + 1);
+  }
 }
 
 void AnswerKey::add(SheetKey sheet) {
@@ -147,9 +173,17 @@ void AnswerKey::add(SheetKey sheet) {
       previous = q.id;
     }
   }
-  const bool fresh = by_id_.emplace(sheet.id, sheets_.size()).second;
-  if (!fresh) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
+  if (find(sheet.id)) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
   sheets_.push_back(std::move(sheet));
+  // at most half full, so that a probe for an id not in the key ends soon
+  if (sheets_.size() * 2 > slots_.size()) {
+    rehash(std::max<std::size_t>(16, slots_.size() * 2));
+  } else {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = first_slot(sheets_.back().id, mask);
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = static_cast<std::uint32_t>(sheets_.size());
+  }
 }
 
 SheetKey read_sheet_json(const json& s, std::string_view source) {
@@ -196,6 +230,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
   // packed last, one exercise after the other, so that they sit together in memory
   for (auto& ex : sheet.exercises) {
     ex.hot.reserve(ex.questions.size());
+    ex.field_hashes.reserve(ex.questions.size());
     for (const auto& q : ex.questions) {
       HotQuestion h;
       h.number = q.number;
@@ -213,6 +248,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
       h.boolean = q.boolean;
       h.faces = q.faces;
       ex.hot.push_back(h);
+      ex.field_hashes.push_back(q.field_hash);
     }
   }
   return sheet;

@@ -33,17 +33,9 @@ int fast_boolean(std::string_view s) {
   return -1;
 }
 
-Given unreadable(std::string_view raw, std::string_view why) {
-  Given g;
-  g.state = Given::State::unreadable;
-  g.raw = raw;
-  g.why = why;
-  return g;
-}
-
 }  // namespace
 
-std::string_view trim_cell(std::string_view s) {
+std::string_view trim_cell_spaces(std::string_view s) {
   std::size_t w = 0;
   while (!s.empty() && is_space_at(s, 0, w)) s.remove_prefix(w);
   // from the end: the last byte of a no-break space is 0xA0 / 0xAF / 0x89
@@ -108,15 +100,21 @@ bool read_faces(std::string_view text, FaceBits& out) {
   return any;
 }
 
-Given read_answer(std::string_view cell, AnswerType type) {
+void read_answer(std::string_view cell, AnswerType type, Given& g) {
   const std::string_view s = trim_cell(cell);
-  Given g;
+  g = Given{};
   g.raw = s;
-  if (s.empty()) return g;  // not answered
+  if (s.empty()) return;  // not answered
+  const auto unreadable = [&](std::string_view why) {
+    g = Given{};
+    g.state = Given::State::unreadable;
+    g.raw = s;
+    g.why = why;
+  };
   switch (type) {
     case AnswerType::number: {
       const ParsedNumber p = parse_number(s);
-      if (!p.ok) return unreadable(s, p.why);
+      if (!p.ok) return unreadable(p.why);
       g.number = p.value;
       break;
     }
@@ -126,7 +124,7 @@ Given read_answer(std::string_view cell, AnswerType type) {
         const auto w = read_word(s);
         if (w && *w == "true") b = 1;
         else if (w && *w == "false") b = 0;
-        else return unreadable(s, "boolean");
+        else return unreadable("boolean");
       }
       g.boolean = b == 1;
       break;
@@ -136,16 +134,21 @@ Given read_answer(std::string_view cell, AnswerType type) {
       static constexpr std::string_view kChoices[] = {"before",  "between",  "after",     "intersects", "outside",
                                                       "parallel", "collinear", "behind", "miss"};
       if (!w || std::find(std::begin(kChoices), std::end(kChoices), *w) == std::end(kChoices))
-        return unreadable(s, "word");
+        return unreadable("word");
       g.word = *w;
       break;
     }
     case AnswerType::faces: {
-      if (!read_faces(s, g.faces)) return unreadable(s, "faces");
+      if (!read_faces(s, g.faces)) return unreadable("faces");
       break;
     }
   }
   g.state = Given::State::value;
+}
+
+Given read_answer(std::string_view cell, AnswerType type) {
+  Given g;
+  read_answer(cell, type, g);
   return g;
 }
 

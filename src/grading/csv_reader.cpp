@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -188,10 +190,30 @@ void CsvReader::split(std::size_t b, std::size_t e, bool quoted, CsvRecord& r) {
   char* buf = buf_.data();
   r.cells.clear();
   if (!quoted) {
-    // cells are a few bytes long: a plain scan beats a call to memchr for each
+    // Cells are a few bytes long: a call to memchr for each costs more than it saves. Eight
+    // bytes at a time instead: a mask of the delimiters among them (exact, no false positive:
+    // each byte's test is kept apart from its neighbours'), then one cell per set bit.
+    static_assert(std::endian::native == std::endian::little, "the delimiter mask reads bytes in memory order");
     const char d = delimiter_;
+    constexpr std::uint64_t kLow7 = 0x7f7f7f7f7f7f7f7full;
+    const std::uint64_t pattern = 0x0101010101010101ull * static_cast<unsigned char>(d);
     std::size_t p = b;
-    for (std::size_t i = b; i < e; ++i) {
+    std::size_t i = b;
+    for (; i + 8 <= e; i += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, buf + i, 8);
+      const std::uint64_t x = word ^ pattern;  // a zero byte where the delimiter is
+      std::uint64_t zeros = ~(((x & kLow7) + kLow7) | x | kLow7);
+      while (zeros) {
+        // little-endian (asserted above): the lowest set bit is the first byte in the text
+        const std::size_t at = i + static_cast<std::size_t>(std::countr_zero(zeros)) / 8;
+        r.cells.emplace_back(buf + p, at - p);
+        p = at + 1;
+        if (r.cells.size() >= limit_) return;
+        zeros &= zeros - 1;
+      }
+    }
+    for (; i < e; ++i) {
       if (buf[i] != d) continue;
       r.cells.emplace_back(buf + p, i - p);
       p = i + 1;

@@ -15,16 +15,6 @@ namespace epure::grading {
 
 namespace {
 
-// A student's text inside RichText: braces and backslashes escaped, so "x_{1}" stays as typed.
-std::string rich_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '{' || c == '}' || c == '\\') out.push_back('\\');
-    out.push_back(c);
-  }
-  return out;
-}
-
 std::optional<double> given_number(const ExerciseKey& ex, const ExerciseMarks& marks, const std::string& field) {
   const int i = ex.find(field);
   if (i < 0 || !marks[static_cast<std::size_t>(i)].given.readable()) return std::nullopt;

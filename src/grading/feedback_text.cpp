@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace epure::grading {
 
@@ -30,6 +32,126 @@ std::string pretty_exact(std::string_view s) {
     } else {
       out += s[i];
     }
+  }
+  return out;
+}
+
+namespace {
+
+constexpr std::size_t npos = std::string_view::npos;
+
+bool escapable(char c) { return c == '{' || c == '}' || c == '\\'; }
+
+// The '}' closing the '{' at s[open], skipping escapes and nested groups, as render/text.cpp
+// finds it; npos when the group is never closed (its markup is then kept as written).
+std::size_t closing_brace(std::string_view s, std::size_t open) {
+  int depth = 0;
+  for (std::size_t j = open; j < s.size(); ++j) {
+    if (s[j] == '\\' && j + 1 < s.size() && escapable(s[j + 1])) ++j;
+    else if (s[j] == '{') ++depth;
+    else if (s[j] == '}' && --depth == 0) return j;
+  }
+  return npos;
+}
+
+// The Unicode superscript of one character of a group, or empty when it has none.
+std::string_view superscript(std::string_view c) {
+  static constexpr std::pair<std::string_view, std::string_view> kSuper[] = {
+      {"0", "\u2070"}, {"1", "\u00b9"}, {"2", "\u00b2"}, {"3", "\u00b3"}, {"4", "\u2074"},
+      {"5", "\u2075"}, {"6", "\u2076"}, {"7", "\u2077"}, {"8", "\u2078"}, {"9", "\u2079"},
+      {"+", "\u207a"}, {"-", "\u207b"}, {"\u2212", "\u207b"}, {"=", "\u207c"}, {"(", "\u207d"},
+      {")", "\u207e"}, {"n", "\u207f"}, {"i", "\u2071"}, {"T", "\u1d40"}};
+  for (const auto& [plain, super] : kSuper)
+    if (c == plain) return super;
+  return {};
+}
+
+// Length of the UTF-8 character starting with byte c.
+std::size_t char_length(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return u < 0xc0 ? 1 : u < 0xe0 ? 2 : u < 0xf0 ? 3 : 4;
+}
+
+void append_plain(std::string_view s, std::string& out);
+
+// A group's text made plain (its own markup included), and how many characters it has.
+std::string plain_group(std::string_view inner, std::size_t& characters) {
+  std::string text;
+  append_plain(inner, text);
+  characters = 0;
+  for (std::size_t i = 0; i < text.size(); i += char_length(text[i])) ++characters;
+  return text;
+}
+
+void append_plain(std::string_view s, std::string& out) {
+  constexpr std::string_view kVec = "\\vec{";
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const char c = s[i];
+    if (c == '\\' && i + 1 < s.size() && escapable(s[i + 1])) {
+      out += s[i + 1];
+      i += 2;
+      continue;
+    }
+    if (c == '\\' && s.substr(i, kVec.size()) == kVec) {
+      const std::size_t close = closing_brace(s, i + kVec.size() - 1);
+      if (close != npos) {
+        out += "vec(";
+        append_plain(s.substr(i + kVec.size(), close - (i + kVec.size())), out);
+        out += ')';
+        i = close + 1;
+        continue;
+      }
+    }
+    if ((c == '_' || c == '^') && i + 1 < s.size() && s[i + 1] == '{') {
+      const std::size_t close = closing_brace(s, i + 1);
+      if (close != npos) {
+        std::size_t characters = 0;
+        const std::string inner = plain_group(s.substr(i + 2, close - (i + 2)), characters);
+        i = close + 1;
+        if (c == '^') {
+          std::string raised;
+          bool all = !inner.empty();
+          for (std::size_t k = 0; all && k < inner.size(); k += char_length(inner[k])) {
+            const std::string_view super = superscript(std::string_view(inner).substr(k, char_length(inner[k])));
+            all = !super.empty();
+            raised += super;
+          }
+          if (all) {
+            out += raised;
+            continue;
+          }
+        }
+        const bool word = std::all_of(inner.begin(), inner.end(), [](char ch) {
+          return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+        });
+        out += c;
+        // a subscript that is a name reads as the ids spell it (t_proj); a longer superscript
+        // without a Unicode form needs its parentheses (r^(ab) is not r^a·b)
+        if (characters == 1 || (c == '_' && word && !inner.empty())) out += inner;
+        else out += "(" + inner + ")";
+        continue;
+      }
+    }
+    out += c;
+    ++i;
+  }
+}
+
+}  // namespace
+
+std::string plain_text(std::string_view rich) {
+  std::string out;
+  out.reserve(rich.size());
+  append_plain(rich, out);
+  return out;
+}
+
+std::string rich_escape(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '{' || c == '}' || c == '\\') out.push_back('\\');
+    out.push_back(c);
   }
   return out;
 }
@@ -68,18 +190,26 @@ const std::string& FeedbackText::verdict(Verdict v) const {
   return texts_.get(fmt::format("grading.verdict.{}", to_string(v)));
 }
 
-std::string FeedbackText::sentence(const QuestionKey& q, const QuestionMark& m) const { return compose(q, m, true); }
+std::string FeedbackText::sentence(const QuestionKey& q, const QuestionMark& m) const { return compose(q, m, true, true); }
 
-std::string FeedbackText::explanation(const QuestionKey& q, const QuestionMark& m) const { return compose(q, m, false); }
+std::string FeedbackText::explanation(const QuestionKey& q, const QuestionMark& m) const {
+  return compose(q, m, false, false);
+}
 
-std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, bool whole) const {
+std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, bool whole, bool plain) const {
+  // plain: the student's own text is escaped before it goes into the template, so that making
+  // the template plain turns its markup into text and leaves what they typed as they typed it
+  const auto theirs = [&](std::string_view text) { return plain ? rich_escape(text) : std::string(text); };
   const TextVars vars = {{"expected", expected(q)},
-                         {"given", std::string(m.given.raw)},
+                         {"given", theirs(m.given.raw)},
                          {"value", std::isfinite(m.value) ? number(m.value) : std::string()},
-                         {"detail", m.detail},
+                         {"detail", theirs(m.detail)},
                          {"why", m.given.why.empty() ? std::string()
                                                      : texts_.get(fmt::format("grading.why.{}", m.given.why))}};
-  auto say = [&](std::string_view key) { return texts_.format(key, vars); };
+  auto say = [&](std::string_view key) {
+    std::string text = texts_.format(key, vars);
+    return plain ? plain_text(text) : text;
+  };
   const std::string mistake = m.mistake.empty() ? std::string() : say(fmt::format("grading.mistake.{}", m.mistake));
   auto join = [](std::string a, const std::string& b) {
     if (a.empty()) return b;

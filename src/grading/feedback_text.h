@@ -27,10 +27,11 @@ class FeedbackText {
   // The verdict's word in the language ("right", "juste", …).
   const std::string& verdict(Verdict v) const;
   // Why, as a sentence that stands alone (expected and given included): empty for a right
-  // answer.
+  // answer. Plain text (plain_text below), for JSON and terminals: no label markup.
   std::string sentence(const QuestionKey& q, const QuestionMark& m) const;
   // Why, for a page that already shows the answer and the expected one beside it: the named
   // mistake, the follow-through, why a cell was unreadable; empty when there is nothing more.
+  // RichText, with the templates' label markup, for the SVG feedback sheets.
   std::string explanation(const QuestionKey& q, const QuestionMark& m) const;
   // A number as the language writes it, to the key's decimals ("2,17").
   std::string number(double x) const { return numbers_.rounded(x, decimals_); }
@@ -38,7 +39,7 @@ class FeedbackText {
   std::string points(double x) const;
 
  private:
-  std::string compose(const QuestionKey& q, const QuestionMark& m, bool whole) const;
+  std::string compose(const QuestionKey& q, const QuestionMark& m, bool whole, bool plain) const;
 
   const Texts& texts_;
   NumberStyle numbers_;
@@ -47,5 +48,20 @@ class FeedbackText {
 
 // A machine exact form for people: "(5-2*sqrt(2))/3" → "(5 − 2√2)/3".
 std::string pretty_exact(std::string_view machine);
+
+// The label markup of the templates (render/scene.h: t_{ab}, r^{2}, \vec{AB}, and the escapes
+// \{ \} \\) as plain text, for readers that do not draw it (JSON, CSV, a terminal):
+//   a subscript     x_{u} → x_u,  t_{proj} → t_proj (letters and digits, as the question ids
+//                   spell them: 2.t_proj), A_{1 2} → A_(1 2) (anything else, in parentheses);
+//   a superscript   r^{2} → r², S^{−1} → S⁻¹, (M^{−1})^{T} → (M⁻¹)ᵀ when every character has a
+//                   Unicode superscript (digits, + − = ( ) n i T), else r^{ab} → r^(ab);
+//   a vector        \vec{AB} → vec(AB) (an arrow over letters has no plain form that every
+//                   font and terminal shows);
+//   an escape       \{ → {.
+// Unbalanced markup is kept as written, as the renderer draws it.
+std::string plain_text(std::string_view rich);
+
+// Text put into RichText as itself (a student's answer): { } and \ escaped.
+std::string rich_escape(std::string_view text);
 
 }  // namespace epure::grading

@@ -52,7 +52,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
   for (std::size_t i = 0; i < n; ++i) {
     const HotQuestion& q = key.hot[i];
     QuestionMark& m = out[i];
-    m.given = read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type);
+    read_answer(i < cells.size() ? cells[i] : std::string_view{}, q.type, m.given);
     m.points = 0;
     m.mistake = {};
     m.from = {};
@@ -80,10 +80,10 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
     if (j < 0 || static_cast<std::size_t>(j) < i) continue;
     QuestionMark &a = out[i], &b = out[static_cast<std::size_t>(j)];
     if (a.verdict != Verdict::wrong && b.verdict != Verdict::wrong) continue;  // neither readable
-    const auto& qa = key.questions[i];
-    const auto& qb = key.questions[static_cast<std::size_t>(j)];
+    const HotQuestion& qa = key.hot[i];
+    const HotQuestion& qb = key.hot[static_cast<std::size_t>(j)];
     const bool both = a.given.readable() && b.given.readable();
-    const double abs = std::max(qa.rule.abs, qb.rule.abs);
+    const double abs = std::max(qa.abs, qb.abs);
     if (both && std::hypot(a.given.number - qa.number, b.given.number - qb.number) <= abs) {
       a.verdict = b.verdict = Verdict::right;
       a.points = qa.points;

@@ -30,7 +30,8 @@ struct CsvReport::Impl {
   }
   void cell(std::string_view s, bool first = false) {
     if (!first) buf.push_back(dialect.delimiter);
-    const bool quote = s.find_first_of(std::string{dialect.delimiter, '"', '\n', '\r'}) != std::string_view::npos;
+    const char special[] = {dialect.delimiter, '"', '\n', '\r'};  // no string built per cell
+    const bool quote = s.find_first_of(std::string_view(special, sizeof special)) != std::string_view::npos;
     if (!quote) {
       buf.append(s);
       return;
@@ -42,27 +43,42 @@ struct CsvReport::Impl {
     }
     buf.push_back('"');
   }
-  void number(double x) {
-    buf.push_back(dialect.delimiter);
-    // thousandths are enough for points, written without trailing zeros; most are 0 or 1
-    if (x == 0 || x == 1) {  // exact: the points as the key gives them
-      buf.push_back(x == 0 ? '0' : '1');
-      return;
+  // Room a cell of points takes at most: delimiter, sign, 19 digits, separator, 3 decimals.
+  static constexpr std::size_t kPointsRoom = 32;
+
+  // A cell of points, delimiter first, written at p (kPointsRoom bytes free); returns its end.
+  // Most are 0 or 1, exactly as the key gives them (this compares the key's own values, not
+  // computed ones): one digit. Thousandths are enough for the rest, without trailing zeros.
+  char* put_number(char* p, double x) const {
+    *p++ = dialect.delimiter;
+    if (x == 0 || x == 1) {
+      *p++ = x == 0 ? '0' : '1';
+      return p;
     }
     long long m = static_cast<long long>(std::abs(x) * 1000 + 0.5);
-    if (x < 0) buf.push_back('-');
+    if (x < 0) *p++ = '-';
     char digits[24];
     int n = 0;
     for (long long whole = m / 1000; n == 0 || whole > 0; whole /= 10) digits[n++] = static_cast<char>('0' + whole % 10);
-    while (n > 0) buf.push_back(digits[--n]);
+    while (n > 0) *p++ = digits[--n];
     long long frac = m % 1000;
-    if (frac == 0) return;
-    buf.push_back(dialect.decimal_comma ? ',' : '.');
+    if (frac == 0) return p;
+    *p++ = dialect.decimal_comma ? ',' : '.';
     for (long long d = 100; frac > 0; d /= 10) {
-      buf.push_back(static_cast<char>('0' + frac / d));
+      *p++ = static_cast<char>('0' + frac / d);
       frac %= d;
     }
+    return p;
   }
+  // Room for `cells` cells at the end of the buffer, written through a pointer rather than a
+  // push_back (and its capacity test) per character: a row has dozens of them.
+  char* open_room(std::size_t cells) {
+    const std::size_t at = buf.size();
+    buf.resize(at + cells * kPointsRoom);
+    return buf.data() + at;
+  }
+  void close_room(const char* end) { buf.resize(static_cast<std::size_t>(end - buf.data())); }
+  void number(double x) { close_room(put_number(open_room(1), x)); }
 };
 
 CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, CsvDialect dialect)
@@ -91,16 +107,26 @@ void CsvReport::submission(const Submission& s) {
     m.number(s.score);
     m.number(s.max);
     std::fill(m.asked.begin(), m.asked.end(), 0);
-    for (std::size_t e = 0; e < s.marks.size(); ++e)
-      for (std::size_t q = 0; q < s.marks[e].size(); ++q) {
-        const auto i = static_cast<std::size_t>(s.report_index[e][q]);
-        m.points[i] = s.marks[e][q].points;
-        m.asked[i] = 1;
+    // through local pointers: a store to asked (char) may alias anything, and would make the
+    // compiler reload every vector's bounds at each question
+    double* const points = m.points.data();
+    char* const asked = m.asked.data();
+    for (std::size_t e = 0; e < s.marks.size(); ++e) {
+      const QuestionMark* const marks = s.marks[e].data();
+      const int* const index = s.report_index[e].data();
+      const std::size_t n = s.marks[e].size();
+      for (std::size_t q = 0; q < n; ++q) {
+        const auto i = static_cast<std::size_t>(index[q]);
+        points[i] = marks[q].points;
+        asked[i] = 1;
       }
-    for (std::size_t i = 0; i < m.points.size(); ++i) {
-      if (m.asked[i]) m.number(m.points[i]);
-      else m.buf.push_back(m.dialect.delimiter);
     }
+    char* p = m.open_room(m.points.size());
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+      if (m.asked[i]) p = m.put_number(p, m.points[i]);
+      else *p++ = m.dialect.delimiter;
+    }
+    m.close_room(p);
   } else {
     m.buf.push_back(m.dialect.delimiter);
     m.buf.push_back(m.dialect.delimiter);

@@ -38,16 +38,31 @@ Coordinate coordinate(std::string_view group, char axis) {
 
 }  // namespace
 
-bool within(const QuestionKey& q, double given, double target, double factor) {
+namespace {
+
+bool within_rule(ToleranceRule::Kind kind, double rel, double abs, double given, double target, double factor) {
   if (!std::isfinite(given) || !std::isfinite(target)) return false;
   const double d = std::abs(given - target);
-  switch (q.rule.kind) {
-    case ToleranceRule::Kind::isclose: return d <= factor * std::max(q.rule.rel * std::abs(target), q.rule.abs);
-    case ToleranceRule::Kind::distance: return d <= factor * q.rule.abs;
+  switch (kind) {
+    case ToleranceRule::Kind::isclose: return d <= factor * std::max(rel * std::abs(target), abs);
+    case ToleranceRule::Kind::distance: return d <= factor * abs;
     case ToleranceRule::Kind::exact: break;
   }
   // an exact rule on a number: equal up to the last digits of a double
   return d <= 1e-9 * std::max(1.0, std::abs(target));
+}
+
+// The same from the packed copy of the question (answer_key.h: HotQuestion), which marking has
+// just read: the full QuestionKey is another cache line per question, and with a large key
+// each row of answers is another sheet's, so that line is a miss.
+bool within(const HotQuestion& q, double given, double target, double factor) {
+  return within_rule(q.rule, q.rel, q.abs, given, target, factor);
+}
+
+}  // namespace
+
+bool within(const QuestionKey& q, double given, double target, double factor) {
+  return within_rule(q.rule.kind, q.rule.rel, q.rule.abs, given, target, factor);
 }
 
 ExerciseReview::ExerciseReview(const ExerciseKey& key, std::span<QuestionMark> marks, bool follow_through,
@@ -74,7 +89,7 @@ bool ExerciseReview::open_at(int i) const {
 const QuestionMark* ExerciseReview::readable_at(int i, AnswerType type) const {
   if (i < 0) return nullptr;
   const QuestionMark& m = marks_[static_cast<std::size_t>(i)];
-  if (!m.given.readable() || key_.questions[static_cast<std::size_t>(i)].type != type) return nullptr;
+  if (!m.given.readable() || key_.hot[static_cast<std::size_t>(i)].type != type) return nullptr;
   return &m;
 }
 
@@ -169,7 +184,7 @@ void ExerciseReview::credit(int index, std::string_view from, std::string_view m
   m.value = value;
   if (follow_through_) {
     m.verdict = Verdict::follow_through;
-    m.points = key_.questions[static_cast<std::size_t>(index)].points;
+    m.points = key_.hot[static_cast<std::size_t>(index)].points;
   }
 }
 
@@ -177,7 +192,7 @@ bool ExerciseReview::follow(std::string_view field, double value, std::string_vi
   const int i = key_.find(field);
   if (!open_at(i)) return false;
   const auto* m = readable_at(i, AnswerType::number);
-  if (!m || !within(key_.questions[i], m->given.number, value, kMatchFactor) || !some_wrong(from)) return false;
+  if (!m || !within(key_.hot[i], m->given.number, value, kMatchFactor) || !some_wrong(from)) return false;
   credit(i, from, code, value);
   return true;
 }
@@ -187,13 +202,13 @@ bool ExerciseReview::follow_point(std::string_view group, geo::Point2 value, std
   const int ix = key_.find(coordinate(group, 'x')), iy = key_.find(coordinate(group, 'y'));
   const bool ox = open_at(ix), oy = open_at(iy);
   if (!(ox || oy) || ix < 0 || iy < 0) return false;
-  const auto& qx = key_.questions[ix];
-  const auto& qy = key_.questions[iy];
+  const auto& qx = key_.hot[ix];
+  const auto& qy = key_.hot[iy];
   const QuestionMark &mx = marks_[ix], &my = marks_[iy];
-  if (qx.rule.kind == ToleranceRule::Kind::distance) {
+  if (qx.rule == ToleranceRule::Kind::distance) {
     // the point as a whole
     if (!mx.given.readable() || !my.given.readable()) return false;
-    const double abs = std::max(qx.rule.abs, qy.rule.abs);
+    const double abs = std::max(qx.abs, qy.abs);
     if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
     if (!some_wrong(from)) return false;
     if (ox) credit(ix, from, code, value.x);
@@ -231,7 +246,7 @@ bool ExerciseReview::mistake(std::string_view field, double value, std::string_v
   const int i = key_.find(field);
   if (!open_at(i)) return false;
   const auto* m = readable_at(i, AnswerType::number);
-  if (!m || !within(key_.questions[i], m->given.number, value, kMatchFactor)) return false;
+  if (!m || !within(key_.hot[i], m->given.number, value, kMatchFactor)) return false;
   marks_[i].mistake = code;
   marks_[i].value = value;
   return true;
@@ -242,13 +257,12 @@ bool ExerciseReview::mistake_point(std::string_view group, geo::Point2 value, st
   const bool ox = open_at(ix), oy = open_at(iy);
   if (!(ox || oy) || ix < 0 || iy < 0) return false;
   const QuestionMark &mx = marks_[ix], &my = marks_[iy];
-  if (!mx.given.readable() || !my.given.readable() || key_.questions[ix].type != AnswerType::number ||
-      key_.questions[iy].type != AnswerType::number)
+  const auto& qx = key_.hot[ix];
+  const auto& qy = key_.hot[iy];
+  if (!mx.given.readable() || !my.given.readable() || qx.type != AnswerType::number || qy.type != AnswerType::number)
     return false;
-  const auto& qx = key_.questions[ix];
-  const auto& qy = key_.questions[iy];
-  if (qx.rule.kind == ToleranceRule::Kind::distance) {
-    const double abs = std::max(qx.rule.abs, qy.rule.abs);
+  if (qx.rule == ToleranceRule::Kind::distance) {
+    const double abs = std::max(qx.abs, qy.abs);
     if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
   } else if (!within(qx, mx.given.number, value.x, kMatchFactor) || !within(qy, my.given.number, value.y, kMatchFactor)) {
     // both coordinates must fit the mistake, right ones included: one coordinate alone

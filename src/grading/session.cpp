@@ -92,8 +92,8 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
   for (auto& n : names_)
     if (!valid_utf8(n)) n = cp1252_to_utf8(n);
   if (line > 0) header_line_ = line;
-  columns_.clear();
-  columns_.resize(key_.sheets().size());
+  columns_.assign(key_.sheets().size(), nullptr);
+  layouts_.clear();
   sheet_column_ = student_column_ = -1;
   const auto& ids = key_.question_ids();
   question_column_.assign(ids.size(), -1);
@@ -151,21 +151,30 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
 const GradingSession::SheetColumns& GradingSession::columns_for(const SheetKey& sheet) {
   auto& slot = columns_[key_.index_of(sheet)];
   if (slot) return *slot;
-  SheetColumns c;
-  c.asked.assign(names_.size(), 0);
   const auto& ids = key_.question_ids();
+  std::vector<std::vector<int>> layout;
   for (const auto& e : sheet.exercises) {
-    auto& col = c.column.emplace_back();
-    auto& rep = c.report_index.emplace_back();
-    for (const auto& q : e.questions) {
-      const auto q_index = static_cast<int>(std::find(ids.begin(), ids.end(), q.id) - ids.begin());
-      rep.push_back(q_index);
-      const int column = question_column_[static_cast<std::size_t>(q_index)];
-      col.push_back(column);
-      if (column >= 0) c.asked[static_cast<std::size_t>(column)] = 1;
-    }
+    auto& rep = layout.emplace_back();
+    for (const auto& q : e.questions)
+      rep.push_back(static_cast<int>(std::find(ids.begin(), ids.end(), q.id) - ids.begin()));
   }
-  slot = std::make_unique<SheetColumns>(std::move(c));
+  auto& shared = layouts_[layout];
+  if (!shared) {
+    // the columns and the questions asked follow from the layout and the header alone
+    SheetColumns c;
+    c.asked.assign(names_.size(), 0);
+    for (const auto& rep : layout) {
+      auto& col = c.column.emplace_back();
+      for (const int q_index : rep) {
+        const int column = question_column_[static_cast<std::size_t>(q_index)];
+        col.push_back(column);
+        if (column >= 0) c.asked[static_cast<std::size_t>(column)] = 1;
+      }
+    }
+    c.report_index = std::move(layout);
+    shared = std::make_unique<SheetColumns>(std::move(c));
+  }
+  slot = shared.get();
   return *slot;
 }
 
@@ -177,8 +186,7 @@ void GradingSession::flag(Submission& s, std::string_view code, std::string mess
 void GradingSession::row(const AnswerRow& in) {
   // Windows-1252 text (Excel's plain "CSV"): every cell that is not UTF-8 is read as such
   AnswerRow r = in;
-  bool foreign = false;
-  for (auto c : in.cells) foreign = foreign || !valid_utf8(c);
+  const bool foreign = !all_valid_utf8(in.cells);
   if (foreign) {
     transcoded_.clear();
     for (auto c : in.cells) transcoded_.push_back(valid_utf8(c) ? std::string(c) : cp1252_to_utf8(c));
@@ -252,6 +260,14 @@ void GradingSession::row(const AnswerRow& in) {
 
   if (s.sheet) {
     const SheetKey& sheet = *s.sheet;
+    // With a large key every row is another sheet's, whose questions are not in cache: ask for
+    // all of them at once, so that their misses overlap instead of coming one by one as marking
+    // walks the exercises (a hint only: nothing depends on it but the time).
+    for (const ExerciseKey& ex : sheet.exercises) {
+      const auto* p = reinterpret_cast<const char*>(ex.hot.data());
+      const auto* end = reinterpret_cast<const char*>(ex.hot.data() + ex.hot.size());
+      for (; p < end; p += 64) __builtin_prefetch(p);
+    }
     const SheetColumns& cols = columns_for(sheet);
     // two submissions of one sheet: both marked, both flagged
     const std::size_t index = key_.index_of(sheet);

@@ -105,7 +105,10 @@ class GradingSession final : public RowHandler {
   std::vector<int> question_column_;  // by question id index → answers column or −1
   std::vector<int> column_question_;  // by answers column → question id index or −1
   std::map<std::string, bool, std::less<>> warned_columns_;
-  std::vector<std::unique_ptr<SheetColumns>> columns_;  // by sheet index, made on first use
+  std::vector<const SheetColumns*> columns_;  // by sheet index, found on first use
+  // One SheetColumns per layout of questions (sheets of one branch ask the same ids), shared by
+  // every sheet of that layout: a few of them stay in cache while rows visit a thousand sheets.
+  std::map<std::vector<std::vector<int>>, std::unique_ptr<SheetColumns>> layouts_;
 
   // per row, reused
   Submission current_;

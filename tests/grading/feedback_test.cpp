@@ -45,6 +45,42 @@ TEST_CASE("sentences: named mistake, follow-through, unanswered, unreadable") {
   CHECK(en.sentence(key.questions[0], u["t"]).find("unreadable: “n/a” is not a number") == 0);
 }
 
+TEST_CASE("the templates' label markup as plain text") {
+  CHECK(plain_text("x_{u}") == "x_u");                  // one character: no parentheses
+  CHECK(plain_text("t_{proj} and t_{ab}") == "t_proj and t_ab");  // a name, as the ids spell it
+  CHECK(plain_text("A_{1 2}") == "A_(1 2)");            // anything else: in parentheses
+  CHECK(plain_text("r^{2} \u2212 d^{2}") == "r\u00b2 \u2212 d\u00b2");
+  CHECK(plain_text("S^{\u22121}, (M^{\u22121})^{T}, T^{-1}") == "S\u207b\u00b9, (M\u207b\u00b9)\u1d40, T\u207b\u00b9");
+  CHECK(plain_text("r^{ab}, r^{x}") == "r^(ab), r^x");  // no superscript letter for every character
+  CHECK(plain_text("\\vec{AB}, \\vec{u}_{c}") == "vec(AB), vec(u)_c");
+  CHECK(plain_text("\\{x\\} a\\\\b") == "{x} a\\b");      // escapes
+  CHECK(plain_text("x_{1, a_b, r^2, \\vec AB") == "x_{1, a_b, r^2, \\vec AB");  // not markup: as written
+  CHECK(plain_text("") == "");
+}
+
+TEST_CASE("feedback sentences (JSON) are plain text, explanations (SVG sheets) keep the markup") {
+  QuestionKey q;
+  q.id = "4.t";
+  q.field = "t";
+  q.number = 2.5;
+  QuestionMark m;
+  m.given.state = Given::State::value;
+  m.given.raw = "x_{1}";  // the student's own text is kept as typed, markup or not
+  m.given.number = 2.9;
+  m.verdict = Verdict::wrong;
+  m.mistake = "far_intersection";
+  const FeedbackText en("en", 2), fr("fr", 2);
+  CHECK(en.sentence(q, m) ==
+        "Expected 2.50, you gave x_{1}. That is the far intersection J, at t_proj + \u221a(r\u00b2 \u2212 d\u00b2): "
+        "the ray meets I first, at t_proj \u2212 \u221a(r\u00b2 \u2212 d\u00b2).");
+  CHECK(en.explanation(q, m).find("t_{proj} + \u221a(r^{2} \u2212 d^{2})") != std::string::npos);
+  m.mistake = "translation_forgotten";
+  CHECK(fr.sentence(q, m).find("A_c = S\u207b\u00b9\u00b7R(\u2212\u03b8)\u00b7(A \u2212 C)") != std::string::npos);
+  m.mistake = "normal_wrong_transform";
+  CHECK(en.sentence(q, m).find("(M\u207b\u00b9)\u1d40") != std::string::npos);
+  CHECK(en.explanation(q, m).find("(M^{\u22121})^{T}") != std::string::npos);
+}
+
 TEST_CASE("exact forms for people") {
   CHECK(pretty_exact("(5-2*sqrt(2))/3") == "(5 \u2212 2\u221a2)/3");
   CHECK(pretty_exact("-sqrt(3)/2") == "\u2212\u221a3/2");

@@ -27,9 +27,10 @@ struct Case {
 };
 
 // The template's text up to its first placeholder: what every rendering of it starts with.
+// The template's text before its first placeholder, plain as a sentence (JSON) writes it.
 std::string fixed_part(const std::string& language, const std::string& code) {
   const auto& text = epure::Texts::builtin(language).get("grading.mistake." + code);
-  return text.substr(0, text.find("${"));
+  return epure::grading::plain_text(text.substr(0, text.find("${")));
 }
 
 std::vector<Case> cases() {
