@@ -1,6 +1,7 @@
 #include "render/font_metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 
 namespace epure::render {
@@ -25,12 +26,40 @@ const GlyphAdvance* find(char32_t cp) {
   return it != std::end(kAdvances) && it->cp == cp ? it : nullptr;
 }
 
-}  // namespace
-
-double advance_em(char32_t cp, Face face) {
+double advance_from_table(char32_t cp, Face face) {
   const GlyphAdvance* g = find(cp);
   if (g == nullptr) return kFallbackAdvanceEm;
   return (face == Face::bold ? g->bold : g->regular) / double(kUnitsPerEm);
+}
+
+// Measuring calls advance_em once per glyph, and nearly every glyph is Latin or Greek: a flat
+// array indexed by code point, filled from the very same expression as the binary search, gives
+// the same doubles without the search. Rarer code points (arrows, symbols) still search.
+constexpr char32_t kFlatEnd = 0x400;
+
+struct FlatAdvances {
+  std::array<double, kFlatEnd> regular, bold;
+  FlatAdvances() {
+    for (char32_t cp = 0; cp < kFlatEnd; ++cp) {
+      regular[cp] = advance_from_table(cp, Face::regular);
+      bold[cp] = advance_from_table(cp, Face::bold);
+    }
+  }
+};
+
+const FlatAdvances& flat_advances() {
+  static const FlatAdvances flat;  // built once, thread-safe (magic static)
+  return flat;
+}
+
+}  // namespace
+
+double advance_em(char32_t cp, Face face) {
+  if (cp < kFlatEnd) {
+    const FlatAdvances& f = flat_advances();
+    return face == Face::bold ? f.bold[cp] : f.regular[cp];
+  }
+  return advance_from_table(cp, face);
 }
 
 bool has_glyph(char32_t cp) { return find(cp) != nullptr; }

@@ -118,6 +118,16 @@ std::vector<std::string_view> words(std::string_view rich) {
   return out;
 }
 
+// text_width of one word of rich text. Most words carry no markup: they are one unshifted run,
+// so their width is measured straight from the bytes (the same sum, in the same order, as
+// text_width gives) instead of parsing them into runs first.
+double word_width(std::string_view word, double font_size, Face face) {
+  if (word.find_first_of("\\_^{}") != npos) {
+    return text_width(word, font_size, face == Face::bold ? Weight::bold : Weight::regular);
+  }
+  return advance_sum(word, face) * font_size;
+}
+
 // Letters of DejaVu Sans that reach no higher than the x-height, and glyphs that go below the
 // baseline: a label "u" or "A" gets a box that fits it, not a generic one.
 constexpr std::string_view kShortLetters = "acemnorsuvwxz";
@@ -201,8 +211,8 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
                                                  double max_width, Weight weight) {
   std::vector<std::vector<TextRun>> lines;
   if (rich.empty()) return lines;
-  const double space =
-      advance_em(U' ', weight == Weight::bold ? Face::bold : Face::regular) * font_size;
+  const Face face = weight == Weight::bold ? Face::bold : Face::regular;
+  const double space = advance_em(U' ', face) * font_size;
   const auto finish = [&](const std::string& line) {
     lines.push_back(parse_rich_text(line, weight));
   };
@@ -216,7 +226,7 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
     double line_width = 0;
     bool any = false;
     for (std::string_view w : words(piece)) {
-      const double ww = text_width(w, font_size, weight);
+      const double ww = word_width(w, font_size, face);
       if (any && line_width + space + ww > max_width) {
         finish(line);
         line.clear();
