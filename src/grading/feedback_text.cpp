@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
+
+#include "render/text.h"
 
 namespace epure::grading {
 
@@ -38,23 +41,7 @@ std::string pretty_exact(std::string_view s) {
 
 namespace {
 
-constexpr std::size_t npos = std::string_view::npos;
-
-bool escapable(char c) { return c == '{' || c == '}' || c == '\\'; }
-
-// The '}' closing the '{' at s[open], skipping escapes and nested groups, as render/text.cpp
-// finds it; npos when the group is never closed (its markup is then kept as written).
-std::size_t closing_brace(std::string_view s, std::size_t open) {
-  int depth = 0;
-  for (std::size_t j = open; j < s.size(); ++j) {
-    if (s[j] == '\\' && j + 1 < s.size() && escapable(s[j + 1])) ++j;
-    else if (s[j] == '{') ++depth;
-    else if (s[j] == '}' && --depth == 0) return j;
-  }
-  return npos;
-}
-
-// The Unicode superscript of one character of a group, or empty when it has none.
+// The Unicode superscript of one character, or empty when it has none.
 std::string_view superscript(std::string_view c) {
   static constexpr std::pair<std::string_view, std::string_view> kSuper[] = {
       {"0", "\u2070"}, {"1", "\u00b9"}, {"2", "\u00b2"}, {"3", "\u00b3"}, {"4", "\u2074"},
@@ -72,78 +59,52 @@ std::size_t char_length(char c) {
   return u < 0xc0 ? 1 : u < 0xe0 ? 2 : u < 0xf0 ? 3 : 4;
 }
 
-void append_plain(std::string_view s, std::string& out);
-
-// A group's text made plain (its own markup included), and how many characters it has.
-std::string plain_group(std::string_view inner, std::size_t& characters) {
-  std::string text;
-  append_plain(inner, text);
-  characters = 0;
-  for (std::size_t i = 0; i < text.size(); i += char_length(text[i])) ++characters;
-  return text;
-}
-
-void append_plain(std::string_view s, std::string& out) {
-  constexpr std::string_view kVec = "\\vec{";
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const char c = s[i];
-    if (c == '\\' && i + 1 < s.size() && escapable(s[i + 1])) {
-      out += s[i + 1];
-      i += 2;
-      continue;
-    }
-    if (c == '\\' && s.substr(i, kVec.size()) == kVec) {
-      const std::size_t close = closing_brace(s, i + kVec.size() - 1);
-      if (close != npos) {
-        out += "vec(";
-        append_plain(s.substr(i + kVec.size(), close - (i + kVec.size())), out);
-        out += ')';
-        i = close + 1;
-        continue;
-      }
-    }
-    if ((c == '_' || c == '^') && i + 1 < s.size() && s[i + 1] == '{') {
-      const std::size_t close = closing_brace(s, i + 1);
-      if (close != npos) {
-        std::size_t characters = 0;
-        const std::string inner = plain_group(s.substr(i + 2, close - (i + 2)), characters);
-        i = close + 1;
-        if (c == '^') {
-          std::string raised;
-          bool all = !inner.empty();
-          for (std::size_t k = 0; all && k < inner.size(); k += char_length(inner[k])) {
-            const std::string_view super = superscript(std::string_view(inner).substr(k, char_length(inner[k])));
-            all = !super.empty();
-            raised += super;
-          }
-          if (all) {
-            out += raised;
-            continue;
-          }
-        }
-        const bool word = std::all_of(inner.begin(), inner.end(), [](char ch) {
-          return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
-        });
-        out += c;
-        // a subscript that is a name reads as the ids spell it (t_proj); a longer superscript
-        // without a Unicode form needs its parentheses (r^(ab) is not r^a·b)
-        if (characters == 1 || (c == '_' && word && !inner.empty())) out += inner;
-        else out += "(" + inner + ")";
-        continue;
-      }
-    }
-    out += c;
-    ++i;
+// One run of parsed label markup, as plain text.
+void append_run(const render::TextRun& run, std::string& out) {
+  const std::string& text = run.text;
+  if (run.shift == render::Shift::none) {
+    out += text;
+    return;
   }
+  if (run.shift == render::Shift::super) {
+    std::string raised;
+    bool all = !text.empty();
+    for (std::size_t k = 0; all && k < text.size(); k += char_length(text[k])) {
+      const std::string_view super = superscript(std::string_view(text).substr(k, char_length(text[k])));
+      all = !super.empty();
+      raised += super;
+    }
+    if (all) {
+      out += raised;
+      return;
+    }
+  }
+  std::size_t characters = 0;
+  for (std::size_t k = 0; k < text.size(); k += char_length(text[k])) ++characters;
+  const bool word = !text.empty() && std::all_of(text.begin(), text.end(), [](char ch) {
+    return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+  });
+  out += run.shift == render::Shift::sub ? '_' : '^';
+  // a subscript that is a name reads as the ids spell it (t_proj); a longer superscript
+  // without a Unicode form needs its parentheses (r^(ab) is not r^a·b)
+  if (characters == 1 || (run.shift == render::Shift::sub && word)) out += text;
+  else out += "(" + text + ")";
 }
 
 }  // namespace
 
+// The markup is parsed by the renderer's own parser (render/text.h), so that the plain text reads
+// exactly the groups, escapes and unbalanced braces the drawn text shows.
 std::string plain_text(std::string_view rich) {
+  const std::vector<render::TextRun> runs = render::parse_rich_text(rich);
   std::string out;
   out.reserve(rich.size());
-  append_plain(rich, out);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const bool arrow = runs[i].arrow;
+    if (arrow && (i == 0 || !runs[i - 1].arrow)) out += "vec(";
+    append_run(runs[i], out);
+    if (arrow && (i + 1 == runs.size() || !runs[i + 1].arrow)) out += ')';
+  }
   return out;
 }
 

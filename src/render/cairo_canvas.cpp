@@ -4,8 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "render/font_metrics.h"
-#include "render/svg_scene.h"
 #include "render/text.h"
 
 namespace epure::render {

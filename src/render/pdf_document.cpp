@@ -80,11 +80,11 @@ PdfDocument::PdfDocument(Sink sink, const PdfMetadata& metadata, PageSize first_
   cairo_pdf_surface_set_metadata(surface_, CAIRO_PDF_METADATA_MOD_DATE, date.c_str());
   cr_ = cairo_create(surface_);
   fonts_ = pango_cairo_font_map_new();
-  canvas_ = new CairoCanvas(cr_, fonts_);
+  canvas_ = std::make_unique<CairoCanvas>(cr_, fonts_);
 }
 
 PdfDocument::~PdfDocument() {
-  delete canvas_;
+  canvas_.reset();
   if (fonts_ != nullptr) g_object_unref(fonts_);
   if (cr_ != nullptr) cairo_destroy(cr_);
   if (surface_ != nullptr) {
@@ -121,8 +121,7 @@ void PdfDocument::add_blank(PageSize size, std::string_view label) {
 }
 
 void PdfDocument::finish() {
-  delete canvas_;
-  canvas_ = nullptr;
+  canvas_.reset();
   cairo_destroy(cr_);
   cr_ = nullptr;
   cairo_surface_finish(surface_);

@@ -5,6 +5,7 @@
 // with the creation date fixed (SOURCE_DATE_EPOCH), the same pages give the same bytes.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -59,7 +60,7 @@ class PdfDocument {
   cairo_surface_t* surface_ = nullptr;
   cairo_t* cr_ = nullptr;
   PangoFontMap* fonts_ = nullptr;
-  class CairoCanvas* canvas_ = nullptr;
+  std::unique_ptr<class CairoCanvas> canvas_;
   int pages_ = 0;
   bool finished_ = false;
 };
