@@ -6,11 +6,16 @@
 # cores. Prints the median of RUNS runs: wall and user CPU (GNU time), per sheet and per page,
 # and the ratios the targets are stated in.
 #
-#   bench/pdf_bench.sh [BUILD_DIR] [SHEETS] [RUNS]        e.g. bench/pdf_bench.sh build 500 3
+#   bench/pdf_bench.sh [BUILD_DIR] [SHEETS] [RUNS] [SPEC]  e.g. bench/pdf_bench.sh build 500 3
+# SPEC defaults to the built-in course worksheet; bench/floor_like.toml holds the floor's four
+# exercises (projection, segments, ray/circle, ray/square) for a like-for-like comparison.
 set -eu
 build=${1:-build}
 sheets=${2:-500}
 runs=${3:-3}
+spec=${4:-}
+spec_args=()
+[ -n "$spec" ] && spec_args=(--spec "$spec")
 epure=${EPURE:-$build/epure}
 shared=${EPURE_SHARED_DIR:-$(dirname "$0")/../../shared}
 work=${BENCH_DIR:-$(mktemp -d)}
@@ -32,8 +37,8 @@ measure() {  # measure LABEL COMMAND...
 }
 
 measure floor taskset -c 0 "$work/floor" pango "$sheets" "$work/floor.pdf"
-measure one taskset -c 0 "$epure" generate --format pdf --sheets "$sheets" --jobs 1 --quiet --out "$work/one"
-measure two "$epure" generate --format pdf --sheets "$sheets" --jobs 2 --quiet --out "$work/two"
+measure one taskset -c 0 "$epure" generate "${spec_args[@]}" --format pdf --sheets "$sheets" --jobs 1 --quiet --out "$work/one"
+measure two "$epure" generate "${spec_args[@]}" --format pdf --sheets "$sheets" --jobs 2 --quiet --out "$work/two"
 cmp -s "$work/one/sheets.pdf" "$work/two/sheets.pdf" && cmp -s "$work/one/keys.pdf" "$work/two/keys.pdf" ||
   { echo "FAIL: --jobs 1 and --jobs 2 PDFs differ"; exit 1; }
 
@@ -42,11 +47,11 @@ pages=$(( $(pdfinfo "$work/one/sheets.pdf" | awk '/^Pages:/ {print $2}') + $(pdf
 read -r fw fu < "$work/floor.median"
 read -r ow ou < "$work/one.median"
 read -r tw tu < "$work/two.median"
-python3 - "$sheets" "$floor_pages" "$pages" "$fw" "$fu" "$ow" "$ou" "$tw" "$tu" <<'PY'
+python3 - "$sheets" "$floor_pages" "$pages" "$fw" "$fu" "$ow" "$ou" "$tw" "$tu" "${spec:-built-in course}" <<'PY'
 import sys
 n, fp, ep = map(int, sys.argv[1:4])
-fw, fu, ow, ou, tw, tu = map(float, sys.argv[4:])
-print(f"{n} sheets; floor: {fp} pages, epure: {ep} pages ({ep / n:.1f} a sheet)")
+fw, fu, ow, ou, tw, tu = map(float, sys.argv[4:10])
+print(f"{n} sheets, spec: {sys.argv[10]}; floor: {fp} pages, epure: {ep} pages ({ep / n:.1f} a sheet)")
 print(f"| program | wall | user CPU | per sheet (wall) | per page (wall) |")
 print(f"|---|---|---|---|---|")
 for name, w, u, p in (("floor `pango`, one core", fw, fu, fp), ("epure --jobs 1, one core", ow, ou, ep),

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -67,6 +68,9 @@ struct ExerciseContext {
   NumberStyle numbers;
   int decimals;                // students round answers to this many decimals
   std::string branch;          // the branch to draw (chosen by the sheet schedule)
+  // Fingerprints of the instances earlier sheets of the set hold, or nullptr: a drawn instance
+  // found here comes back unbuilt (see already_taken), since the set will draw again anyway.
+  const std::unordered_set<std::uint64_t>* taken = nullptr;
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet

@@ -43,6 +43,17 @@ std::string solve_instance(std::string_view instance) {
   return std::string(out.data(), out.size());
 }
 
+std::optional<ExerciseInstance> already_taken(const ExerciseContext& ctx, std::string instance) {
+  const std::uint64_t f = fingerprint(instance);
+  if (!ctx.taken || !ctx.taken->contains(f)) return std::nullopt;
+  ExerciseInstance inst;
+  inst.n = ctx.n;
+  inst.branch = ctx.branch;
+  inst.instance = std::move(instance);
+  inst.fingerprint = f;
+  return inst;
+}
+
 std::uint64_t fingerprint(std::string_view text) {
   std::uint64_t h = 1469598103934665603ULL;
   for (unsigned char c : text) {

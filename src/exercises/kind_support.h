@@ -38,6 +38,12 @@ std::string solve_instance(std::string_view instance);
 // 64-bit FNV-1a of the instance text: equal data, equal fingerprint.
 std::uint64_t fingerprint(std::string_view text);
 
+// The set's collision check, made before the costly part of an instance (solution, exact forms,
+// texts, scenes): when an earlier sheet already holds this instance (ctx.taken), only its
+// identity (instance text and fingerprint) comes back, and the set draws again. Nothing else
+// changes: the random draws are the same, so are the sheets.
+std::optional<ExerciseInstance> already_taken(const ExerciseContext& ctx, std::string instance);
+
 // Collects the questions of one instance together with the sheet's answer fields and the key's
 // answer lines, in the order they are asked.
 class Questions {

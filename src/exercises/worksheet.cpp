@@ -36,10 +36,12 @@ ExerciseContext WorksheetSet::context(int slot, int n, const std::string& branch
                          spec_.decimals, branch};
 }
 
-ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch) const {
+ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch,
+                                    const std::unordered_set<std::uint64_t>* taken) const {
   const std::uint64_t sheet_seed = mix64(mix64(seed_) + static_cast<std::uint64_t>(index));
   Rng rng(sheet_seed, (static_cast<std::uint64_t>(slot) << 16) | static_cast<std::uint64_t>(attempt));
-  const ExerciseContext ctx = context(slot, slot + 1, branch);
+  ExerciseContext ctx = context(slot, slot + 1, branch);
+  ctx.taken = taken;
   return find_kind(spec_.exercises[slot].kind)->make(rng, ctx);
 }
 
@@ -64,7 +66,8 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
     int attempt = first_attempts ? 1 : 0;
     for (std::size_t b = 0; !chosen && b < branches.size(); ++b) {
       for (int tries = 0; tries < kAttemptsPerBranch && !chosen; ++tries, ++attempt) {
-        ExerciseInstance inst = draw(index, s, attempt, branches[b]);
+        // Only a new instance is built: with a large set, most draws of a small branch collide.
+        ExerciseInstance inst = draw(index, s, attempt, branches[b], &used_[slot]);
         if (!used_[slot].count(inst.fingerprint)) chosen = std::move(inst);
       }
     }

@@ -46,7 +46,9 @@ class WorksheetSet {
   // increasing indices).
   std::string branch(int index, int slot) { return schedules_[slot].at(index); }
   // One exercise of one sheet at one attempt: a pure function of its arguments (thread-safe).
-  ExerciseInstance draw(int index, int slot, int attempt, const std::string& branch) const;
+  // An instance whose fingerprint is in `taken` comes back unbuilt (identity only).
+  ExerciseInstance draw(int index, int slot, int attempt, const std::string& branch,
+                        const std::unordered_set<std::uint64_t>* taken = nullptr) const;
 
   // The next sheet of the set, in index order, with collisions settled. `first_attempts`, when
   // given, holds attempt 0 of each slot already drawn (in parallel) for this index.

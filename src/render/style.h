@@ -34,6 +34,7 @@ struct Colour {
             kDigits[b >> 4],
             kDigits[b & 15]};
   }
+  bool operator==(const Colour&) const = default;
 };
 
 struct RoleStyle {

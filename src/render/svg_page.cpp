@@ -23,6 +23,7 @@ void open_svg(SvgWriter& w, const Document& doc, double width, double height) {
                                     {"viewBox", "0 0 " + wn + " " + hn}};
   if (!doc.language.empty()) root.emplace_back("xml:lang", doc.language);
   root.emplace_back("font-family", kFontFamily);
+  root.emplace_back("xml:space", "preserve");  // inherited by every text (see SvgCanvas::text)
   w.start("svg", root);
   w.element("title", {}, doc.title);
   // What a screen reader needs to tell one sheet from another.

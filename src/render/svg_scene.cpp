@@ -110,9 +110,11 @@ void SvgCanvas::text(const TextLine& line) {
   w_.attribute("x", line.at.x);
   w_.attribute("y", line.at.y);
   w_.attribute("font-size", line.size);
-  w_.attribute("fill", line.colour.hex());
-  w_.attribute("text-anchor", anchor_name(line.anchor));
-  w_.attribute("xml:space", "preserve");
+  // Text is most of a sheet's elements: SVG's initial values (black, anchored at the start) go
+  // unwritten, and xml:space="preserve" is set once on the root, whose every text inherits it.
+  // No group of ours sets fill or text-anchor, so nothing else can be inherited.
+  if (line.colour != Colour{}) w_.attribute("fill", line.colour.hex());
+  if (line.anchor != Anchor::start) w_.attribute("text-anchor", anchor_name(line.anchor));
   w_.close_start_inline();
   // Scripts are tspans shifted with dy; the next run shifts back, so every run's baseline is
   // the one text.h's place_runs gives.
@@ -158,7 +160,8 @@ std::string scene_to_svg(const Scene& scene, double width_pt, SceneReport& repor
                   {"width", format_number(width_pt) + "pt"},
                   {"height", format_number(height) + "pt"},
                   {"viewBox", "0 0 " + format_number(width_pt) + " " + format_number(height)},
-                  {"font-family", kFontFamily}});
+                  {"font-family", kFontFamily},
+                  {"xml:space", "preserve"}});
   w.element("title", {}, scene.title);
   w.element("desc", {}, scene.description);
   w.element("rect", {{"width", width_pt}, {"height", height}, {"fill", style.background.hex()}});

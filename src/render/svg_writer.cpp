@@ -1,5 +1,6 @@
 #include "render/svg_writer.h"
 
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -68,14 +69,24 @@ std::string format_number(double v, int decimals) {
   return s;
 }
 
+namespace {
+
+// The bytes that go out as they are: printable ASCII but for the four XML specials.
+constexpr std::array<bool, 256> kPlainByte = [] {
+  std::array<bool, 256> plain{};
+  for (int c = 0x20; c < 0x7F; ++c) plain[static_cast<std::size_t>(c)] = true;
+  for (char c : {'&', '<', '>', '"'}) plain[static_cast<unsigned char>(c)] = false;
+  return plain;
+}();
+
+}  // namespace
+
 void append_escaped(std::string& out, std::string_view s, bool attribute) {
   // Runs of characters that need nothing (all of a number or a path) are copied at once.
-  const auto plain = [](unsigned char c) {
-    return c >= 0x20 && c < 0x7F && c != '&' && c != '<' && c != '>' && c != '"';
-  };
+  const auto plain = [](char c) { return kPlainByte[static_cast<unsigned char>(c)]; };
   for (std::size_t i = 0; i < s.size();) {
     std::size_t j = i;
-    while (j < s.size() && plain(static_cast<unsigned char>(s[j]))) ++j;
+    while (j < s.size() && plain(s[j])) ++j;
     if (j > i) {
       out.append(s.substr(i, j - i));
       i = j;

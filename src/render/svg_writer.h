@@ -41,6 +41,9 @@ class SvgWriter {
   };
   using Attrs = std::initializer_list<Attr>;
 
+  // A page of a sheet is tens of kilobytes: start with room for one, not from empty.
+  SvgWriter() { out_.reserve(64 * 1024); }
+
   // <?xml version="1.0" encoding="UTF-8"?>; only as the very first output.
   void declaration();
 

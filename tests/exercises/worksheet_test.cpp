@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <set>
+#include <unordered_set>
 
 #include "exercises/worksheet.h"
 
@@ -75,4 +76,55 @@ TEST_CASE("parallel first attempts give the same sheets as sequential drawing") 
 
 TEST_CASE("a seed beyond what an id can hold is refused") {
   CHECK_THROWS_AS(epure::WorksheetSet(two_projections(), epure::kMaxSeed + 1), epure::SpecError);
+}
+
+TEST_CASE("a draw already taken comes back unbuilt, with the same identity, for every kind") {
+  const auto spec = epure::parse_spec(R"(
+title = "Test"
+[[exercise]]
+kind = "vectors"
+[[exercise]]
+kind = "projection"
+[[exercise]]
+kind = "segments"
+[[exercise]]
+kind = "ray_circle"
+[[exercise]]
+kind = "ray_square"
+[[exercise]]
+kind = "ray_ellipse"
+[[exercise]]
+kind = "ray_rectangle"
+)", "test.toml");
+  epure::WorksheetSet set(spec, 21);
+  for (int slot = 0; slot < 7; ++slot) {
+    CAPTURE(slot);
+    const std::string branch = set.branch(0, slot);
+    const epure::ExerciseInstance built = set.draw(0, slot, 3, branch);
+    REQUIRE_FALSE(built.questions.empty());
+    const std::unordered_set<std::uint64_t> taken{built.fingerprint};
+    const epure::ExerciseInstance again = set.draw(0, slot, 3, branch, &taken);
+    CHECK(again.fingerprint == built.fingerprint);
+    CHECK(again.instance == built.instance);
+    CHECK(again.questions.empty());  // not built: no solution, questions, texts or scenes
+    CHECK(again.solution.empty());
+    // A fingerprint of something else changes nothing: the instance is built as before.
+    const std::unordered_set<std::uint64_t> other{built.fingerprint + 1};
+    const epure::ExerciseInstance same = set.draw(0, slot, 3, branch, &other);
+    CHECK(same.solution == built.solution);
+    CHECK(same.questions.size() == built.questions.size());
+  }
+}
+
+TEST_CASE("a set larger than a branch's instances still has no repeated instance") {
+  // ray_square at easy: a handful of integer rays from inside; the sheets must still differ.
+  const auto spec = epure::parse_spec(R"(
+title = "Test"
+[[exercise]]
+kind = "ray_square"
+difficulty = "easy"
+)", "test.toml");
+  epure::WorksheetSet set(spec, 4);
+  std::set<std::string> seen;
+  for (int i = 0; i < 400; ++i) CHECK(seen.insert(set.next().exercises[0].instance).second);
 }

@@ -145,7 +145,7 @@ TEST_CASE("text: scripts as tspans that return to the baseline, \\vec as a drawn
   s.panels.push_back(p);
   const std::string svg = scene_to_svg(s, 200);
   CHECK(contains(svg,
-                 "xml:space=\"preserve\">t<tspan dy=\"2.5\" font-size=\"7\">ab</tspan><tspan "
+                 "\">t<tspan dy=\"2.5\" font-size=\"7\">ab</tspan><tspan "
                  "dy=\"-2.5\">·</tspan>AB</text>"));
   // In the labels group: the label's background, then the arrow's shaft and head.
   const std::size_t at = svg.find("<g class=\"labels\">");
@@ -156,4 +156,37 @@ TEST_CASE("text: scripts as tspans that return to the baseline, \\vec as a drawn
        k = labels.find("<path", k + 1))
     ++paths;
   CHECK(paths == 3);
+}
+
+TEST_CASE("text: SVG's initial values are not written; the root preserves spaces for all") {
+  SvgWriter w;
+  w.start("svg", {{"xml:space", "preserve"}});
+  SvgCanvas canvas(w);
+  TextLine plain;
+  plain.at = {1, 2};
+  plain.runs = {TextRun{"a  b"}};
+  canvas.text(plain);
+  TextLine grey = plain;
+  grey.colour = {0x70, 0x70, 0x70};
+  grey.anchor = Anchor::middle;
+  canvas.text(grey);
+  TextLine end = plain;
+  end.anchor = Anchor::end;
+  canvas.text(end);
+  w.end("svg");
+  const std::string svg = w.finish();
+  CHECK(contains(svg, "<text x=\"1\" y=\"2\" font-size=\"10\">a  b</text>"));
+  CHECK(contains(svg, "<text x=\"1\" y=\"2\" font-size=\"10\" fill=\"#707070\" text-anchor=\"middle\">a  b</text>"));
+  CHECK(contains(svg, "<text x=\"1\" y=\"2\" font-size=\"10\" text-anchor=\"end\">a  b</text>"));
+
+  // Whole documents carry xml:space on their root, so the double space above is kept.
+  Scene s;
+  Panel p;
+  p.view = {0, 0, 4, 4};
+  p.add(Label{"A", {2, 2}, Side::right});
+  s.panels.push_back(p);
+  const std::string doc = scene_to_svg(s, 200);
+  const std::string root = doc.substr(doc.find("<svg"), doc.find('>', doc.find("<svg")) - doc.find("<svg"));
+  CHECK(contains(root, "xml:space=\"preserve\""));
+  CHECK_FALSE(contains(doc.substr(doc.find('>', doc.find("<svg"))), "xml:space"));
 }

@@ -71,10 +71,15 @@ class Projection final : public ExerciseKind {
       if (p.P.x < -1 || p.P.x > 11 || p.P.y < -1 || p.P.y > 9) return std::nullopt;
       return x;
     });
+    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
+  static std::string instance_text(const Data& d) {
+    return InstanceWriter("projection").point("A", d.A).point("B", d.B).point("C", d.C).finish();
+  }
+
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
@@ -84,7 +89,7 @@ class Projection final : public ExerciseKind {
     inst.n = ctx.n;
     inst.kind = std::string(name());
     inst.branch = ctx.branch;
-    inst.instance = InstanceWriter("projection").point("A", d.A).point("B", d.B).point("C", d.C).finish();
+    inst.instance = instance_text(d);
     inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
 

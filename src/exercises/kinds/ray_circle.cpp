@@ -266,10 +266,15 @@ class RayCircleKind final : public ExerciseKind {
       if (!accept(x) || !pythagorean(x)) return std::nullopt;
       return x;
     });
+    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
+  static std::string instance_text(const Data& d) {
+    return InstanceWriter("ray_circle").point("A", d.A).vec("u", d.u).point("C", d.C).number("r", d.r).finish();
+  }
+
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
@@ -280,7 +285,7 @@ class RayCircleKind final : public ExerciseKind {
     inst.n = ctx.n;
     inst.kind = std::string(name());
     inst.branch = ctx.branch;
-    inst.instance = InstanceWriter("ray_circle").point("A", d.A).vec("u", d.u).point("C", d.C).number("r", d.r).finish();
+    inst.instance = instance_text(d);
     inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
 

@@ -117,6 +117,7 @@ class RayEllipseKind final : public ExerciseKind {
       if (!well_conditioned(tolerances(*d, r, ctx.decimals), lim)) return std::nullopt;
       return d;
     });
+    if (auto taken = already_taken(ctx, instance_text(d, Shape::ellipse))) return *std::move(taken);
     return build(d, ctx);
   }
 

@@ -131,6 +131,7 @@ class RayRectangleKind final : public ExerciseKind {
       if (!well_conditioned(tolerances(*d, r, ctx.decimals), lim)) return std::nullopt;
       return d;
     });
+    if (auto taken = already_taken(ctx, instance_text(d, Shape::rectangle))) return *std::move(taken);
     return build(d, ctx);
   }
 

@@ -269,10 +269,15 @@ class RaySquareKind final : public ExerciseKind {
       if (!accept(x)) return std::nullopt;
       return x;
     });
+    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
+  static std::string instance_text(const Data& d) {
+    return InstanceWriter("ray_square").point("A", d.A).vec("u", d.u).finish();
+  }
+
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
@@ -284,7 +289,7 @@ class RaySquareKind final : public ExerciseKind {
     inst.n = ctx.n;
     inst.kind = std::string(name());
     inst.branch = ctx.branch;
-    inst.instance = InstanceWriter("ray_square").point("A", d.A).vec("u", d.u).finish();
+    inst.instance = instance_text(d);
     inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
 

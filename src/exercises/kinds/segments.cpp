@@ -237,10 +237,15 @@ class Segments final : public ExerciseKind {
     };
     const Data d = draw_until(20000, fmt::format("segments, branch {} (parameters, angle, lengths, gap, separation)", ctx.branch),
                               draw);
+    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
+  static std::string instance_text(const Data& d) {
+    return InstanceWriter("segments").point("A", d.A).point("B", d.B).point("C", d.C).point("D", d.D).finish();
+  }
+
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
@@ -251,8 +256,7 @@ class Segments final : public ExerciseKind {
     inst.n = ctx.n;
     inst.kind = std::string(name());
     inst.branch = ctx.branch;
-    inst.instance =
-        InstanceWriter("segments").point("A", d.A).point("B", d.B).point("C", d.C).point("D", d.D).finish();
+    inst.instance = instance_text(d);
     inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
 

@@ -193,10 +193,15 @@ class Vectors final : public ExerciseKind {
       if (!ok) return std::nullopt;
       return x;
     });
+    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
+  static std::string instance_text(const Data& d) {
+    return InstanceWriter("vectors").vec("u", d.u).vec("v", d.v).finish();
+  }
+
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
@@ -206,7 +211,7 @@ class Vectors final : public ExerciseKind {
     inst.n = ctx.n;
     inst.kind = std::string(name());
     inst.branch = ctx.branch;
-    inst.instance = InstanceWriter("vectors").vec("u", d.u).vec("v", d.v).finish();
+    inst.instance = instance_text(d);
     inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
 
