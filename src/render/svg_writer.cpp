@@ -1,5 +1,6 @@
 #include "render/svg_writer.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iterator>
@@ -35,27 +36,33 @@ void append_trimmed(std::string& out, std::string_view s) {
 void append_number(std::string& out, double v, int decimals) {
   if (!std::isfinite(v)) throw std::domain_error("SVG number is not finite");
   if (decimals >= 0 && decimals < static_cast<int>(std::size(kPow10)) && std::abs(v) < kFastLimit) {
-    // Numbers are most of an SVG's bytes: round to an integer count of the last decimal
-    // (half away from zero) and print that, instead of a general float conversion.
-    const long long scale = kPow10[decimals];
-    const long long n = std::llround(v * static_cast<double>(scale));
+    // Numbers are most of an SVG's bytes: round to an integer count of the last decimal (half
+    // away from zero, as llround: x − trunc(x) is exact) and write its digits backwards into a
+    // buffer, instead of a general float conversion.
+    const double x = v * static_cast<double>(kPow10[decimals]);
+    long long n = static_cast<long long>(x);
+    const double rest = x - static_cast<double>(n);
+    if (rest >= 0.5) ++n;
+    if (rest <= -0.5) --n;
     if (n == 0) {
       out += '0';
       return;
     }
-    const unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
-    if (n < 0) out += '-';
-    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"),
-                   m / static_cast<unsigned long long>(scale));
-    unsigned long long frac = m % static_cast<unsigned long long>(scale);
-    if (frac == 0) return;
-    char digits[8];
-    int len = decimals;
-    for (int i = decimals - 1; i >= 0; --i, frac /= 10)
-      digits[i] = static_cast<char>('0' + frac % 10);
-    while (digits[len - 1] == '0') --len;
-    out += '.';
-    out.append(digits, static_cast<std::size_t>(len));
+    unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
+    char buf[32];
+    char* p = std::end(buf);
+    int d = 0;
+    for (; d < decimals && m % 10 == 0; ++d) m /= 10;  // trailing zeros of the decimals: none
+    if (d < decimals) {
+      for (; d < decimals; ++d, m /= 10) *--p = static_cast<char>('0' + m % 10);
+      *--p = '.';
+    }
+    do {
+      *--p = static_cast<char>('0' + m % 10);
+      m /= 10;
+    } while (m != 0);
+    if (n < 0) *--p = '-';
+    out.append(p, static_cast<std::size_t>(std::end(buf) - p));
     return;
   }
   char buf[400];
@@ -123,6 +130,17 @@ void SvgWriter::declaration() {
   out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>";
 }
 
+void SvgWriter::new_line() {
+  // A line break and the indent of the depth (a copy of spaces: cheaper than a fill, per tag)
+  constexpr std::string_view kSpaces = "                                ";
+  out_ += '\n';
+  for (std::size_t depth = stack_.size(); depth > 0;) {
+    const std::size_t n = std::min(depth, kSpaces.size());
+    out_.append(kSpaces.data(), n);
+    depth -= n;
+  }
+}
+
 void SvgWriter::before_child() {
   if (!opening_.empty())
     throw std::logic_error(fmt::format("SVG writer: <{}> is not closed", opening_));
@@ -132,8 +150,7 @@ void SvgWriter::before_child() {
   }
   stack_.back().has_children = true;
   if (in_inline()) return;
-  out_ += '\n';
-  out_.append(stack_.size(), ' ');
+  new_line();
 }
 
 void SvgWriter::open_tag(std::string_view tag, const Attr* begin, const Attr* end,
@@ -179,8 +196,7 @@ void SvgWriter::end(std::string_view tag) {
   const Open open = std::move(stack_.back());
   stack_.pop_back();
   if (open.has_children && !open.inline_content) {
-    out_ += '\n';
-    out_.append(stack_.size(), ' ');
+    new_line();
   }
   out_ += "</";
   out_ += tag;

@@ -88,6 +88,7 @@ class SvgWriter {
   };
   void open_tag(std::string_view tag, const Attr* begin, const Attr* end, bool self_close);
   void before_child();
+  void new_line();
   bool in_inline() const { return !stack_.empty() && stack_.back().inline_content; }
 
   std::string out_;

@@ -1,6 +1,7 @@
 #include "render/text.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -75,8 +76,11 @@ class Parser {
           continue;
         }
       }
-      emit(s_.substr(i, 1), shift, arrow);
-      ++i;
+      // Up to the next character that may start markup, the text goes out as one piece.
+      std::size_t j = i + 1;
+      while (j < end && s_[j] != '\\' && s_[j] != '_' && s_[j] != '^') ++j;
+      emit(s_.substr(i, j - i), shift, arrow);
+      i = j;
     }
   }
 
@@ -137,19 +141,27 @@ struct Ink {
   double top, bottom;  // em above and below the baseline
 };
 
+// The two sets above as flags per byte; any byte of a multi-byte character (≥ 0x80) is neither
+// short nor known not to descend.
+constexpr unsigned char kShort = 1, kMayDescend = 2;
+constexpr std::array<unsigned char, 256> kInkClass = [] {
+  std::array<unsigned char, 256> c{};
+  for (char ch : kShortLetters) c[static_cast<unsigned char>(ch)] |= kShort;
+  for (char ch : kDescending) c[static_cast<unsigned char>(ch)] |= kMayDescend;
+  for (std::size_t b = 0x80; b < 256; ++b) c[b] = kMayDescend;  // ç, Greek, arrows, √
+  return c;
+}();
+
 Ink run_ink(std::string_view text) {
   const VerticalMetrics v = vertical_metrics();
   // Ascenders and digits of DejaVu Sans reach 0.76 em, capitals 0.73 em.
   constexpr double kAscenderTop = 0.76;
   bool all_short = !text.empty();
   bool descends = false;
-  for (std::size_t i = 0; i < text.size();) {
-    const utf8::Decoded d = utf8::decode(text, i);
-    const bool ascii = d.cp < 0x80;
-    if (!(ascii && kShortLetters.find(char(d.cp)) != npos)) all_short = false;
-    // Outside ASCII (ç, Greek, arrows, √) assume the glyph may descend.
-    if (!ascii || kDescending.find(char(d.cp)) != npos) descends = true;
-    i += d.length;
+  for (const char ch : text) {
+    const unsigned char c = kInkClass[static_cast<unsigned char>(ch)];
+    all_short = all_short && (c & kShort);
+    descends = descends || (c & kMayDescend);
   }
   return {all_short ? v.x_height : kAscenderTop, descends ? v.descent : 0.02};
 }

@@ -3,9 +3,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include <fmt/format.h>
+
+#include "exercises/rng.h"
 
 using epure::render::append_escaped;
 using epure::render::format_number;
@@ -165,5 +170,37 @@ TEST_CASE("SvgWriter: the streamed form writes what the list form writes") {
     w.open("svg");
     CHECK_THROWS_AS(w.open("g"), std::logic_error);  // the previous tag is still open
     CHECK_THROWS_AS(w.finish(), std::logic_error);
+  }
+}
+
+TEST_CASE("format_number: rounds half away from zero, as llround of the scaled value, over random values") {
+  // The reference: the plain way (llround of v·10^d, then the integer and its decimals), which
+  // the writer's digit loop must match byte for byte, halves and near-halves included.
+  const auto reference = [](double v, int d) {
+    long long scale = 1;
+    for (int k = 0; k < d; ++k) scale *= 10;
+    const long long n = std::llround(v * static_cast<double>(scale));
+    if (n == 0) return std::string("0");
+    const unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
+    std::string s = fmt::format("{}{}", n < 0 ? "-" : "", m / static_cast<unsigned long long>(scale));
+    std::string frac = fmt::format("{:0{}}", m % static_cast<unsigned long long>(scale), d);
+    while (!frac.empty() && frac.back() == '0') frac.pop_back();
+    if (d > 0 && !frac.empty()) s += "." + frac;
+    return s;
+  };
+  epure::Rng rng(99, 1);
+  for (int i = 0; i < 200000; ++i) {
+    const int d = static_cast<int>(rng.integer(0, 6));
+    double v = 0;
+    switch (i % 4) {
+      case 0: v = static_cast<double>(rng.integer(-8000000, 8000000)) / 8.0; break;  // exact halves
+      case 1: v = (static_cast<double>(rng.integer(-1000000, 1000000)) + 0.5) / std::pow(10.0, d); break;
+      case 2: v = std::nextafter((static_cast<double>(rng.integer(-100000, 100000)) + 0.5) / std::pow(10.0, d),
+                                 rng.chance(0.5) ? 1e9 : -1e9); break;
+      default: v = (rng.uniform() - 0.5) * std::pow(10.0, static_cast<double>(rng.integer(0, 11)));
+    }
+    CAPTURE(v);
+    CAPTURE(d);
+    REQUIRE(epure::render::format_number(v, d) == reference(v, d));
   }
 }
