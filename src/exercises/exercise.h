@@ -71,6 +71,11 @@ struct ExerciseContext {
   // Fingerprints of the instances earlier sheets of the set hold, or nullptr: a drawn instance
   // found here comes back unbuilt (see already_taken), since the set will draw again anyway.
   const std::unordered_set<std::uint64_t>* taken = nullptr;
+  // 0 for the usual ranges of data. When a large set has used up every instance a kind's usual
+  // ranges hold (ray/square with integer data: about 4,000), the set asks again with 1, 2, …:
+  // a kind with a small pool then draws from wider ranges. Sheets drawn before that point are
+  // the same as without it.
+  int widening = 0;
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet

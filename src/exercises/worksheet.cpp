@@ -37,11 +37,12 @@ ExerciseContext WorksheetSet::context(int slot, int n, const std::string& branch
 }
 
 ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch,
-                                    const std::unordered_set<std::uint64_t>* taken) const {
+                                    const std::unordered_set<std::uint64_t>* taken, int widening) const {
   const std::uint64_t sheet_seed = mix64(mix64(seed_) + static_cast<std::uint64_t>(index));
   Rng rng(sheet_seed, (static_cast<std::uint64_t>(slot) << 16) | static_cast<std::uint64_t>(attempt));
   ExerciseContext ctx = context(slot, slot + 1, branch);
   ctx.taken = taken;
+  ctx.widening = widening;
   return find_kind(spec_.exercises[slot].kind)->make(rng, ctx);
 }
 
@@ -63,17 +64,21 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
     auto weights = spec_.exercises[slot].branches.empty() ? kind.default_branches() : spec_.exercises[slot].branches;
     for (const auto& [name, weight] : weights)
       if (weight > 0 && name != scheduled) branches.push_back(name);
+    // When every branch has run out, the kind's data ranges widen (ExerciseContext::widening).
     int attempt = first_attempts ? 1 : 0;
-    for (std::size_t b = 0; !chosen && b < branches.size(); ++b) {
-      for (int tries = 0; tries < kAttemptsPerBranch && !chosen; ++tries, ++attempt) {
-        // Only a new instance is built: with a large set, most draws of a small branch collide.
-        ExerciseInstance inst = draw(index, s, attempt, branches[b], &used_[slot]);
-        if (!used_[slot].count(inst.fingerprint)) chosen = std::move(inst);
+    for (int widening = 0; !chosen && widening <= kMaxWidening; ++widening) {
+      for (std::size_t b = 0; !chosen && b < branches.size(); ++b) {
+        for (int tries = 0; tries < kAttemptsPerBranch && !chosen; ++tries, ++attempt) {
+          // Only a new instance is built: with a large set, most draws of a small branch collide.
+          ExerciseInstance inst = draw(index, s, attempt, branches[b], &used_[slot], widening);
+          if (!used_[slot].count(inst.fingerprint)) chosen = std::move(inst);
+        }
       }
     }
     if (!chosen)
       throw SpecError(fmt::format(
-          "exercise {} ({}): every branch has run out of new instances after {} sheets; the set "
+          "exercise {} ({}): every branch has run out of new instances after {} sheets, even with "
+          "wider data ranges; the set "
           "cannot hold more distinct sheets at this difficulty (try fewer sheets or another difficulty)",
           slot + 1, spec_.exercises[slot].kind, index));
     used_[slot].insert(chosen->fingerprint);

@@ -34,6 +34,7 @@ class WorksheetSet {
  public:
   // Draws tried for a branch before a collision-bound sheet turns to the kind's next branch.
   static constexpr int kAttemptsPerBranch = 64;
+  static constexpr int kMaxWidening = 3;  // see ExerciseContext::widening
 
   // Throws SpecError for a seed out of range or an unknown language.
   WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOptions& options = {});
@@ -48,7 +49,7 @@ class WorksheetSet {
   // One exercise of one sheet at one attempt: a pure function of its arguments (thread-safe).
   // An instance whose fingerprint is in `taken` comes back unbuilt (identity only).
   ExerciseInstance draw(int index, int slot, int attempt, const std::string& branch,
-                        const std::unordered_set<std::uint64_t>* taken = nullptr) const;
+                        const std::unordered_set<std::uint64_t>* taken = nullptr, int widening = 0) const;
 
   // The next sheet of the set, in index order, with collisions settled. `first_attempts`, when
   // given, holds attempt 0 of each slot already drawn (in parallel) for this index.

@@ -116,8 +116,9 @@ kind = "ray_rectangle"
   }
 }
 
-TEST_CASE("a set larger than a branch's instances still has no repeated instance") {
-  // ray_square at easy: a handful of integer rays from inside; the sheets must still differ.
+TEST_CASE("a set larger than a kind's usual ranges widens them instead of failing") {
+  // ray_square at easy: Pythagorean directions and integer origins hold about 1,660 instances;
+  // beyond that the data ranges widen (ExerciseContext::widening), and no instance repeats.
   const auto spec = epure::parse_spec(R"(
 title = "Test"
 [[exercise]]
@@ -126,5 +127,15 @@ difficulty = "easy"
 )", "test.toml");
   epure::WorksheetSet set(spec, 4);
   std::set<std::string> seen;
-  for (int i = 0; i < 400; ++i) CHECK(seen.insert(set.next().exercises[0].instance).second);
+  bool widened = false;
+  for (int i = 0; i < 2000; ++i) {
+    const auto sheet = set.next();
+    const std::string& instance = sheet.exercises[0].instance;
+    CHECK(seen.insert(instance).second);
+    // Widened: an origin beyond ±4 or off the half grid, or a direction longer than the easy ones.
+    widened = widened || instance.find("\"A\":[5") != std::string::npos ||
+              instance.find("\"A\":[-5") != std::string::npos || instance.find(".25") != std::string::npos ||
+              instance.find(".75") != std::string::npos || instance.find("\"A\":[6") != std::string::npos;
+  }
+  CHECK(widened);
 }

@@ -249,20 +249,27 @@ class RaySquareKind final : public ExerciseKind {
     const Data d = draw_until(200000, "ray_square (branch, corner and side margins, t range)",
                               [&]() -> std::optional<Data> {
       Data x;
-      if (inside && !hard) {
+      // Widened (a large set has used up the usual ranges): A further out, finer steps inside,
+      // longer directions.
+      const int w = ctx.widening;
+      if (inside && !hard && w == 0) {
         // half a grid step: the only integer point strictly inside is the centre
         x.A = {0.5 * double(rng.integer(-1, 1)), 0.5 * double(rng.integer(-1, 1))};
+      } else if (inside && !hard) {
+        const std::int64_t k = 2 * w + 1;  // A on a grid of 1/(2w + 2), strictly inside
+        x.A = {double(rng.integer(-k, k)) / double(k + 1), double(rng.integer(-k, k)) / double(k + 1)};
       } else if (inside) {
         x.A = {grid_value(rng, -0.9, 0.9, level), grid_value(rng, -0.9, 0.9, level)};
       } else {
-        x.A = {grid_value(rng, -4, 4, level), grid_value(rng, -4, 4, level)};
+        const double reach = 4 + 2 * w;
+        x.A = {grid_value(rng, -reach, reach, level), grid_value(rng, -reach, reach, level)};
       }
       if (level == Difficulty::easy) {
         x.u = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
         if (rng.chance(0.5)) x.u.x = -x.u.x;
         if (rng.chance(0.5)) x.u.y = -x.u.y;
       } else {
-        const double m = hard ? 3 : 4;
+        const double m = (hard ? 3 : 4) + 2 * w;
         x.u = {grid_value(rng, -m, m, level), grid_value(rng, -m, m, level)};
         if (geo::norm(x.u) < 1) return std::nullopt;
       }
