@@ -4,6 +4,7 @@
 // The painter (scene_painter.h) decides every position, size and style once; the SVG canvas and
 // the cairo canvas only turn these calls into their own format, so both draw the same figure.
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -63,11 +64,13 @@ enum class Anchor { start, middle, end };
 // One line of text: runs set one after the other from the baseline point, scripts scaled by
 // kScriptScale and shifted by kSubShift / kSuperShift (text.h). The arrows of \vec runs are not
 // drawn by the canvas: the painter draws them as paths, from the runs' measured widths.
+// The runs are viewed, not owned: a line lives for one call to Canvas::text, and a page's texts
+// are most of its elements (a copy of each line's runs was 4 % of writing a sheet).
 struct TextLine {
   P2 at;  // on the baseline; left end, middle or right end by `anchor`
   Anchor anchor = Anchor::start;
   double size = 10;
-  std::vector<TextRun> runs;
+  std::span<const TextRun> runs;
   Colour colour;
 };
 

@@ -156,7 +156,10 @@ struct PendingLabel {
 };
 
 struct Number {
-  TextLine line;
+  std::vector<TextRun> runs;
+  P2 at;
+  Anchor anchor;
+  double size;
   Box box;
   int axis;    // 0: x, 1: y, 2: the origin's 0
   long index;  // of its grid line
@@ -503,13 +506,13 @@ class PanelPainter {
   }
 
   void number(std::string text, P2 at, Anchor anchor, double size, int axis, long index) {
-    const std::vector<TextRun> runs = plain_runs(std::move(text));
+    std::vector<TextRun> runs = plain_runs(std::move(text));
     const TextExtent e = text_extent(runs, size);
     const double x0 = anchor == Anchor::start    ? at.x
                       : anchor == Anchor::middle ? at.x - e.width / 2
                                                  : at.x - e.width;
     const Box box{x0, at.y - e.ascent, x0 + e.width, at.y + e.descent};
-    numbers_.push_back({TextLine{at, anchor, size, runs, style_.numbers}, box, axis, index});
+    numbers_.push_back({std::move(runs), at, anchor, size, box, axis, index});
   }
 
   void request_label(const Label& l, P2 anchor_math, double gap, double size) {
@@ -587,7 +590,7 @@ class PanelPainter {
     if (!grid_.empty() || !numbers_.empty()) {
       canvas_.begin_group("grid");
       for (const Op& op : grid_) draw(op);
-      for (const Number& n : numbers_) canvas_.text(n.line);
+      for (const Number& n : numbers_) canvas_.text(TextLine{n.at, n.anchor, n.size, n.runs, style_.numbers});
       canvas_.end_group();
     }
     for (Role role : kLayerOrder) {
@@ -640,7 +643,7 @@ class PanelPainter {
 
  public:
   // The arrows of the \vec runs of a line set from (x0, baseline).
-  static void draw_vec_arrows(Canvas& canvas, const std::vector<TextRun>& runs, double x0,
+  static void draw_vec_arrows(Canvas& canvas, std::span<const TextRun> runs, double x0,
                               double baseline, double size, Colour colour) {
     const std::vector<RunPlacement> placed = place_runs(runs, size);
     for (std::size_t i = 0; i < runs.size(); ++i) {

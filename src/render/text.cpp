@@ -168,7 +168,7 @@ Ink run_ink(std::string_view text) {
 
 }  // namespace
 
-std::vector<RunPlacement> place_runs(const std::vector<TextRun>& runs, double font_size) {
+std::vector<RunPlacement> place_runs(std::span<const TextRun> runs, double font_size) {
   std::vector<RunPlacement> out;
   out.reserve(runs.size());
   double x = 0;
@@ -187,7 +187,7 @@ std::vector<RunPlacement> place_runs(const std::vector<TextRun>& runs, double fo
   return out;
 }
 
-TextExtent text_extent(const std::vector<TextRun>& runs, double font_size) {
+TextExtent text_extent(std::span<const TextRun> runs, double font_size) {
   TextExtent e;
   const std::vector<RunPlacement> placed = place_runs(runs, font_size);
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -206,7 +206,7 @@ std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight) {
   return Parser(rich, weight == Weight::bold).run();
 }
 
-double text_width(const std::vector<TextRun>& runs, double font_size) {
+double text_width(std::span<const TextRun> runs, double font_size) {
   double width = 0;
   for (const TextRun& r : runs) {
     const double scale = r.shift == Shift::none ? 1.0 : kScriptScale;

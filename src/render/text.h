@@ -3,6 +3,7 @@
 // runs, and widths measured with the advance widths of DejaVu Sans (the font epure's pages name),
 // so that line breaking and label placement are decided once, deterministically, before any
 // backend draws. Backends draw the runs; they do not re-wrap.
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,7 +30,7 @@ inline constexpr double kSubShift = 0.25;    // down, × font size
 inline constexpr double kSuperShift = 0.38;  // up, × font size
 
 // Advance width of the runs at `font_size` (same unit as font_size).
-double text_width(const std::vector<TextRun>& runs, double font_size);
+double text_width(std::span<const TextRun> runs, double font_size);
 double text_width(std::string_view rich, double font_size, Weight weight = Weight::regular);
 
 // Where a run sits in its line: everything a backend needs to set it and the painter needs to
@@ -43,7 +44,7 @@ struct RunPlacement {
   double rise = 0;
   double top = 0;
 };
-std::vector<RunPlacement> place_runs(const std::vector<TextRun>& runs, double font_size);
+std::vector<RunPlacement> place_runs(std::span<const TextRun> runs, double font_size);
 
 // The arrow over a \vec run, × the run's size: its stroke kArrowGap above the run's letters,
 // its head kArrowHead long and 2 × kArrowHeadHalf wide, its stroke kArrowStroke thick.
@@ -58,7 +59,7 @@ inline constexpr double kArrowStroke = 0.06;
 struct TextExtent {
   double width = 0, ascent = 0, descent = 0;
 };
-TextExtent text_extent(const std::vector<TextRun>& runs, double font_size);
+TextExtent text_extent(std::span<const TextRun> runs, double font_size);
 
 // Greedy line breaking of rich text into lines no wider than `max_width`; breaks at spaces,
 // never inside a markup group; a word longer than a line gets a line of its own; a '\n' forces a

@@ -162,9 +162,10 @@ TEST_CASE("text: SVG's initial values are not written; the root preserves spaces
   SvgWriter w;
   w.start("svg", {{"xml:space", "preserve"}});
   SvgCanvas canvas(w);
+  const std::vector<TextRun> runs{TextRun{"a  b"}};
   TextLine plain;
   plain.at = {1, 2};
-  plain.runs = {TextRun{"a  b"}};
+  plain.runs = runs;
   canvas.text(plain);
   TextLine grey = plain;
   grey.colour = {0x70, 0x70, 0x70};
