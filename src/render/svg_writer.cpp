@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string_view>
 
-#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include "render/utf8.h"

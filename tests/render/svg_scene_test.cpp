@@ -137,13 +137,18 @@ TEST_CASE("scene_to_svg: a standalone SVG 1.1 document, grouped by role, escaped
   CHECK(svg.back() == '\n');
 }
 
-TEST_CASE("text: scripts as tspans that return to the baseline, \\vec as a drawn arrow") {
+// One panel with one label at its centre.
+Scene one_label(std::string text) {
   Scene s;
   Panel p;
   p.view = {0, 0, 4, 4};
-  p.add(Label{"t_{ab}·\\vec{AB}", {2, 2}, Side::right});
+  p.add(Label{std::move(text), {2, 2}, Side::right});
   s.panels.push_back(p);
-  const std::string svg = scene_to_svg(s, 200);
+  return s;
+}
+
+TEST_CASE("text: scripts as tspans that return to the baseline, \\vec as a drawn arrow") {
+  const std::string svg = scene_to_svg(one_label("t_{ab}·\\vec{AB}"), 200);
   CHECK(contains(svg,
                  "\">t<tspan dy=\"2.5\" font-size=\"7\">ab</tspan><tspan "
                  "dy=\"-2.5\">·</tspan>AB</text>"));
@@ -181,13 +186,8 @@ TEST_CASE("text: SVG's initial values are not written; the root preserves spaces
   CHECK(contains(svg, "<text x=\"1\" y=\"2\" font-size=\"10\" text-anchor=\"end\">a  b</text>"));
 
   // Whole documents carry xml:space on their root, so the double space above is kept.
-  Scene s;
-  Panel p;
-  p.view = {0, 0, 4, 4};
-  p.add(Label{"A", {2, 2}, Side::right});
-  s.panels.push_back(p);
-  const std::string doc = scene_to_svg(s, 200);
-  const std::string root = doc.substr(doc.find("<svg"), doc.find('>', doc.find("<svg")) - doc.find("<svg"));
-  CHECK(contains(root, "xml:space=\"preserve\""));
-  CHECK_FALSE(contains(doc.substr(doc.find('>', doc.find("<svg"))), "xml:space"));
+  const std::string doc = scene_to_svg(one_label("A"), 200);
+  const std::size_t root = doc.find("<svg"), root_end = doc.find('>', root);
+  CHECK(contains(doc.substr(root, root_end - root), "xml:space=\"preserve\""));
+  CHECK_FALSE(contains(doc.substr(root_end), "xml:space"));
 }

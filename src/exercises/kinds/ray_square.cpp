@@ -252,11 +252,10 @@ class RaySquareKind final : public ExerciseKind {
       // Widened (a large set has used up the usual ranges): A further out, finer steps inside,
       // longer directions.
       const int w = ctx.widening;
-      if (inside && !hard && w == 0) {
-        // half a grid step: the only integer point strictly inside is the centre
-        x.A = {0.5 * double(rng.integer(-1, 1)), 0.5 * double(rng.integer(-1, 1))};
-      } else if (inside && !hard) {
-        const std::int64_t k = 2 * w + 1;  // A on a grid of 1/(2w + 2), strictly inside
+      if (inside && !hard) {
+        // A grid of 1/(2w + 2), strictly inside: unwidened, half a grid step (the only integer
+        // point strictly inside is the centre)
+        const std::int64_t k = 2 * w + 1;
         x.A = {double(rng.integer(-k, k)) / double(k + 1), double(rng.integer(-k, k)) / double(k + 1)};
       } else if (inside) {
         x.A = {grid_value(rng, -0.9, 0.9, level), grid_value(rng, -0.9, 0.9, level)};
