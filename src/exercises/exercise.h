@@ -14,6 +14,12 @@
 #include <variant>
 #include <vector>
 
+#include <any>
+#include <span>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "exercises/method.h"
 #include "exercises/numbers.h"
 #include "exercises/rng.h"
 #include "exercises/spec.h"
@@ -86,6 +92,13 @@ struct SheetField {
   std::vector<std::string> choices;  // contract words ("behind", "miss") or face names
 };
 
+// A point or vector answer that a feedback sheet draws on the key's diagram.
+struct DrawnField {
+  std::string_view group;   // "P", "I", "N", "Ac"
+  int panel = 0;            // which panel of the key's scene (0: the world frame)
+  std::string_view anchor;  // for a vector: the group of the point it is drawn from ("I")
+};
+
 class ExerciseKind {
  public:
   virtual ~ExerciseKind() = default;
@@ -103,6 +116,26 @@ class ExerciseKind {
   // Draws until the constraints hold (throws std::runtime_error after too many attempts, naming
   // the constraint that could not be met).
   virtual ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const = 0;
+
+  // ---- the kind model (kind_method.h): what grading and the exports read from the kind's one
+  // method. Empty for a kind not written as a method.
+  // The questions the kind can ask, in the sheet's order, with their default weights.
+  virtual std::span<const method::QuestionDecl> questions() const { return {}; }
+  // The named mistakes its method declares, in the order grading tries them.
+  virtual std::span<const std::string_view> mistakes() const { return {}; }
+  // The other right roads its method declares (method.h: Run::road), by name.
+  virtual std::span<const std::string_view> roads() const { return {}; }
+  // The point and vector answers a feedback sheet draws on the key's diagram.
+  virtual std::vector<DrawnField> drawn() const { return {}; }
+  // The instance read from a solve input (key.json's "instance"); throws std::runtime_error
+  // naming the field.
+  virtual std::any read_instance(const nlohmann::json& instance) const;
+  // The method run on an instance read by read_instance: with `given`, on the student's own
+  // answers where they gave them; with `mistake`, taking that mistake's road. The answers in
+  // the order the method reaches them, each with the answers it was computed from.
+  virtual std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data,
+                                                                 const method::GivenAnswers* given,
+                                                                 std::string_view mistake, int decimals) const;
 };
 
 // All kinds, in the course's order; nullptr for an unknown name.

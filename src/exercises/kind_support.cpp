@@ -280,18 +280,29 @@ double constraint(const ExerciseContext& ctx, const ExerciseKind& kind, const st
 
 namespace epure::kinds {
 
-std::optional<exact::Rational> rational_of(double x) {
-  double scale = 1;
-  for (int k = 0; k <= 6; ++k, scale *= 10) {
-    const double scaled = x * scale;
-    if (std::abs(scaled) > 9e15) return std::nullopt;
-    const double whole = std::nearbyint(scaled);
-    // the datum was written with k decimals exactly when scaling lands on an integer (to
-    // rounding of the scaling itself)
-    if (std::abs(scaled - whole) <= 1e-9 * std::max(1.0, std::abs(scaled)))
-      return exact::Rational(static_cast<std::int64_t>(whole), static_cast<std::int64_t>(scale));
+std::string step_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& e) {
+  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
+  if (!e) return rounded;
+  try {
+    const std::string pretty = e->pretty();
+    if (pretty.size() > 16 || e->a().den() > 1000 || e->b().den() > 1000) return rounded;
+    const std::string exact = ctx.numbers.localise(pretty);
+    if (!e->is_rational()) return fmt::format("{} ≈ {}", exact, rounded);
+    const std::int64_t den = e->a().den();
+    if (den == 1) return exact;
+    std::int64_t pow10 = 1;
+    for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
+    if (pow10 % den == 0) return fmt::format("{} = {}", exact, ctx.numbers.datum(value, ctx.decimals));
+    return fmt::format("{} ≈ {}", exact, rounded);
+  } catch (const exact::ExactOverflow&) {
+    return rounded;
   }
-  return std::nullopt;
+}
+
+std::string step_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
+                       const std::optional<exact::Surd>& ey) {
+  return fmt::format("({}{} {})", step_value(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
+                     step_value(ctx, p.y, ey));
 }
 
 std::string shown(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {

@@ -10,6 +10,7 @@
 
 #include "exercises/exact.h"
 #include "exercises/exercise.h"
+#include "exercises/method.h"
 #include "exercises/tolerance.h"
 #include "geometry/vec.h"
 #include "render/scene.h"
@@ -123,7 +124,14 @@ double constraint(const ExerciseContext& ctx, const ExerciseKind& kind, const st
 namespace epure::kinds {
 
 // The exact rational a datum denotes, when it has at most 6 decimals (data on a grid always do).
-std::optional<exact::Rational> rational_of(double x);
+using method::rational_of;
+
+// A value as a worked step shows it: its exact form when short, with its decimal value when that
+// is not the same number written otherwise ("37/5 = 7.4", "−6√5/5 ≈ −2.68"); the decimal alone
+// when the exact form is long (one-decimal data give fractions like 376996/25925).
+std::string step_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& e);
+std::string step_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
+                       const std::optional<exact::Surd>& ey);
 
 // A value as the key's worked steps show it: its exact form when it has a short one, else
 // rounded ("1/4", "5 − 2√2", "≈ 2.17" → "2.17").

@@ -10,16 +10,11 @@
 #include <string_view>
 #include <vector>
 
+#include "exercises/exercise.h"
+
 namespace epure::grading {
 
 class ExerciseReview;
-
-// A point or vector answer that a feedback sheet draws on the key's diagram.
-struct DrawnField {
-  std::string_view group;   // "P", "I", "N", "Ac"
-  int panel = 0;            // which panel of the key's scene (0: the world frame)
-  std::string_view anchor;  // for a vector: the group of the point it is drawn from ("I")
-};
 
 class KindGrader {
  public:

@@ -242,6 +242,15 @@ bool ExerciseReview::follow_word(std::string_view field, std::string_view w, std
   return true;
 }
 
+bool ExerciseReview::follow_faces(std::string_view field, FaceBits value, std::string_view from, std::string_view code) {
+  const int i = key_.find(field);
+  if (!open_at(i)) return false;
+  const auto* m = readable_at(i, AnswerType::faces);
+  if (!m || m->given.faces != value || !some_wrong(from)) return false;
+  credit(i, from, code, NAN);
+  return true;
+}
+
 bool ExerciseReview::mistake(std::string_view field, double value, std::string_view code) {
   const int i = key_.find(field);
   if (!open_at(i)) return false;

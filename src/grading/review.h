@@ -31,6 +31,7 @@ class ExerciseReview {
                  NumberStyle numbers, int decimals);
 
   const ExerciseKey& key() const { return key_; }
+  int decimals() const { return decimals_; }
   bool follow_through() const { return follow_through_; }
 
   // ---- what the student answered (readable answers only)
@@ -57,6 +58,7 @@ class ExerciseReview {
                       std::string_view mistake = {});
   bool follow_word(std::string_view field, std::string_view word, std::string_view from,
                    std::string_view mistake = {});
+  bool follow_faces(std::string_view field, FaceBits value, std::string_view from, std::string_view mistake = {});
 
   // ---- named mistakes: the wrong answer is what `value` gives.
   bool mistake(std::string_view field, double value, std::string_view code);

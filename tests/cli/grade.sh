@@ -44,7 +44,7 @@ q = {x["id"]: x for x in by["N'Diaye, Aïssatou"]["questions"]}
 expect = {
     "1.cross": ("wrong", "cross_sign"), "1.sin": ("follow_through", None), "1.angle_deg": ("follow_through", None),
     "2.t": ("wrong", "t_unsquared_norm"), "2.P.x": ("follow_through", None), "2.P.y": ("follow_through", None),
-    "2.position": ("follow_through", "position_from_wrong_t"),
+    "2.position": ("follow_through", None),
     "3.t_ab": ("wrong", "t_swapped"), "3.t_cd": ("wrong", "t_swapped"),
     "4.t": ("wrong", "far_intersection"), "4.I.x": ("follow_through", None), "4.I.y": ("follow_through", None),
     "4.N.x": ("follow_through", None), "4.N.y": ("follow_through", None),

@@ -3,6 +3,8 @@
 // fields its branch has) with exact forms that agree, tolerances that accept an honest student's
 // rounding, solves, and formats in both languages; the same seed draws the same instance.
 #include <doctest/doctest.h>
+
+#include "support/method_answers.h"
 #include <fmt/format.h>
 
 #include <array>
@@ -212,7 +214,7 @@ TEST_CASE("segments: every difficulty and branch draws a well-posed instance the
         std::vector<std::string> fields;
         for (const auto& q : inst.questions) fields.push_back(q.field);
         if (branch == "intersects") CHECK(fields == std::vector<std::string>{"intersects", "t_ab", "t_cd", "I.x", "I.y"});
-        if (branch == "outside") CHECK(fields == std::vector<std::string>{"intersects", "reason", "t_ab", "t_cd"});
+        if (branch == "outside") CHECK(fields == std::vector<std::string>{"intersects", "t_ab", "t_cd", "reason"});
         if (!crossing) CHECK(fields == std::vector<std::string>{"intersects", "reason"});
         CHECK(std::get<bool>(question(inst, "intersects").expected) == s.intersects());
         if (!s.intersects()) CHECK(std::get<std::string>(question(inst, "reason").expected) == branch);
@@ -248,10 +250,13 @@ TEST_CASE("segments: every difficulty and branch draws a well-posed instance the
           CHECK(question(inst, "t_ab").tolerance.abs < 0.05);
 
           // the hand method is the core's when nothing is rounded
-          const auto by_hand = kinds::detail::segments_by_hand(m.A, m.B, m.C, m.D, Nudge{}, {-1, -1, -1, -1, -1});
-          const Point2 P = m.A + *s.t_ab * s.AB;
-          const double expected[4] = {*s.t_ab, *s.t_cd, P.x, P.y};
-          for (int i = 0; i < 4; ++i) CHECK(std::abs(by_hand[i] - expected[i]) <= 1e-9 * std::max(1.0, std::abs(expected[i])));
+          const auto by_hand = test::method_answers(inst.instance);
+          CHECK(by_hand.at("t_ab")[0] == doctest::Approx(*s.t_ab).epsilon(1e-9));
+          CHECK(by_hand.at("t_cd")[0] == doctest::Approx(*s.t_cd).epsilon(1e-9));
+          if (s.I) {
+            CHECK(by_hand.at("I")[0] == doctest::Approx(s.I->x).epsilon(1e-9));
+            CHECK(by_hand.at("I")[1] == doctest::Approx(s.I->y).epsilon(1e-9));
+          }
 
           // a student who rounds t_ab and t_cd to 2 decimals, then I, is accepted
           const double t_ab = round_to(s.ac_cross_cd / s.ab_cross_cd, 2), t_cd = round_to(s.ac_cross_ab / s.ab_cross_cd, 2);
@@ -295,20 +300,26 @@ TEST_CASE("segments: both languages format every instance alike") {
 
 TEST_CASE("segments: the hand method on worked cases") {
   // 1. the diagonals of the square (0,0)–(4,4) cross at its centre: t_ab = t_cd = 1/2
-  auto r = kinds::detail::segments_by_hand({0, 0}, {4, 4}, {0, 4}, {4, 0}, Nudge{}, {-1, -1, -1, -1, -1});
-  CHECK(r[0] == doctest::Approx(0.5).epsilon(1e-15));
-  CHECK(r[1] == doctest::Approx(0.5).epsilon(1e-15));
-  CHECK(r[2] == doctest::Approx(2).epsilon(1e-15));
-  CHECK(r[3] == doctest::Approx(2).epsilon(1e-15));
-  // 2. crossing beyond B: A(0,0) B(2,0), C(4,−1) D(4,1): t_ab = 2, t_cd = 1/2
-  r = kinds::detail::segments_by_hand({0, 0}, {2, 0}, {4, -1}, {4, 1}, Nudge{}, {-1, -1, -1, -1, -1});
-  CHECK(r[0] == doctest::Approx(2).epsilon(1e-15));
-  CHECK(r[1] == doctest::Approx(0.5).epsilon(1e-15));
-  // 3. a nudged t_ab moves I along AB and nothing else
-  r = kinds::detail::segments_by_hand({0, 0}, {4, 4}, {0, 4}, {4, 0}, Nudge{0, 0.25}, {-1, -1, -1, 0, 1});
-  CHECK(r[0] == doctest::Approx(0.75).epsilon(1e-15));
-  CHECK(r[1] == doctest::Approx(0.5).epsilon(1e-15));
-  CHECK(r[2] == doctest::Approx(3).epsilon(1e-15));
+  const char* diagonals = R"({"kind":"segments","A":[0,0],"B":[4,4],"C":[0,4],"D":[4,0]})";
+  auto r = test::method_answers(diagonals);
+  CHECK(r["t_ab"][0] == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(r["t_cd"][0] == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(r["I"][0] == doctest::Approx(2).epsilon(1e-15));
+  CHECK(r["I"][1] == doctest::Approx(2).epsilon(1e-15));
+  // 2. crossing beyond B: A(0,0) B(2,0), C(4,−1) D(4,1): t_ab = 2, t_cd = 1/2, no I
+  r = test::method_answers(R"({"kind":"segments","A":[0,0],"B":[2,0],"C":[4,-1],"D":[4,1]})");
+  CHECK(r["t_ab"][0] == doctest::Approx(2).epsilon(1e-15));
+  CHECK(r["t_cd"][0] == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(r.count("I") == 0);
+  // 3. t_ab and t_cd swapped, and the cross products taken the other way round
+  r = test::method_answers(R"({"kind":"segments","A":[0,0],"B":[2,0],"C":[4,-1],"D":[4,1]})", "t_swapped");
+  CHECK(r["t_ab"][0] == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(r["t_cd"][0] == doctest::Approx(2).epsilon(1e-15));
+  r = test::method_answers(R"({"kind":"segments","A":[0,0],"B":[2,0],"C":[4,-1],"D":[4,1]})", "cross_sign");
+  CHECK(r["t_ab"][0] == doctest::Approx(-2).epsilon(1e-15));
+  // 4. parallel lines: no parameter
+  r = test::method_answers(R"({"kind":"segments","A":[0,0],"B":[2,0],"C":[0,1],"D":[3,1]})");
+  CHECK(r.count("t_ab") == 0);
 }
 
 TEST_CASE("segments: an unknown branch is refused") {

@@ -3,6 +3,8 @@
 // exact forms that agree, tolerances that accept an honest student's rounding, solves, and
 // formats in both languages; the same seed draws the same instance.
 #include <doctest/doctest.h>
+
+#include "support/method_answers.h"
 #include <fmt/format.h>
 
 #include <array>
@@ -218,8 +220,9 @@ TEST_CASE("vectors: every difficulty and branch draws a well-posed instance the 
         CHECK(question(inst, "angle_deg").tolerance.abs < 3);
 
         // the hand method is the core's when nothing is rounded
-        const auto by_hand = kinds::detail::vectors_by_hand(m.u, m.v, Nudge{}, {-1, -1, -1, -1, -1, -1});
-        for (int i = 0; i < 7; ++i) CHECK(std::abs(by_hand[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i])));
+        const auto by_hand = test::method_answers(inst.instance);
+        for (int i = 0; i < 7; ++i)
+          CHECK(std::abs(by_hand.at(fields[i])[0] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i])));
 
         // a student who rounds every intermediate result to 2 decimals is accepted
         const double nu = round_to(r.norm_u, 2), nv = round_to(r.norm_v, 2);
@@ -263,18 +266,24 @@ TEST_CASE("vectors: both languages format every instance") {
 
 TEST_CASE("vectors: the hand method on a worked pair") {
   // u = (3, 4), v = (−4, 3): a quarter turn counter-clockwise
-  const auto r = kinds::detail::vectors_by_hand({3, 4}, {-4, 3}, Nudge{}, {-1, -1, -1, -1, -1, -1});
-  CHECK(r[0] == doctest::Approx(0).epsilon(1e-15));
-  CHECK(r[1] == doctest::Approx(25).epsilon(1e-15));
-  CHECK(r[2] == doctest::Approx(5).epsilon(1e-15));
-  CHECK(r[3] == doctest::Approx(5).epsilon(1e-15));
-  CHECK(r[4] == doctest::Approx(0).epsilon(1e-15));
-  CHECK(r[5] == doctest::Approx(1).epsilon(1e-15));
-  CHECK(r[6] == doctest::Approx(90).epsilon(1e-15));
-  // a nudge moves only its own intermediate and what follows from it
-  const auto n = kinds::detail::vectors_by_hand({3, 4}, {-4, 3}, Nudge{0, 0.5}, {-1, -1, 0, 1, 2, 3});
-  CHECK(n[0] == doctest::Approx(0).epsilon(1e-15));
-  CHECK(n[2] == doctest::Approx(5.5).epsilon(1e-15));
+  const char* pair = R"({"kind":"vectors","u":[3,4],"v":[-4,3]})";
+  auto r = test::method_answers(pair);
+  CHECK(r["dot"][0] == doctest::Approx(0).epsilon(1e-15));
+  CHECK(r["cross"][0] == doctest::Approx(25).epsilon(1e-15));
+  CHECK(r["norm_u"][0] == doctest::Approx(5).epsilon(1e-15));
+  CHECK(r["norm_v"][0] == doctest::Approx(5).epsilon(1e-15));
+  CHECK(r["cos"][0] == doctest::Approx(0).epsilon(1e-15));
+  CHECK(r["sin"][0] == doctest::Approx(1).epsilon(1e-15));
+  CHECK(r["angle_deg"][0] == doctest::Approx(90).epsilon(1e-15));
+  // the named mistakes take their own road, and only theirs
+  r = test::method_answers(pair, "cross_sign");
+  CHECK(r["cross"][0] == doctest::Approx(-25).epsilon(1e-15));
+  CHECK(r["angle_deg"][0] == doctest::Approx(-90).epsilon(1e-15));
+  r = test::method_answers(pair, "norm_not_rooted");
+  CHECK(r["norm_u"][0] == doctest::Approx(25).epsilon(1e-15));
+  CHECK(r["dot"][0] == doctest::Approx(0).epsilon(1e-15));
+  r = test::method_answers(pair, "angle_radians");
+  CHECK(r["angle_deg"][0] == doctest::Approx(std::numbers::pi / 2).epsilon(1e-15));
 }
 
 TEST_CASE("vectors: an unknown branch is refused") {

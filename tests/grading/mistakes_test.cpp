@@ -65,9 +65,9 @@ std::vector<Case> cases() {
   return {
       {"t_unsquared_norm", exercise(projection, {"t"}), {{"t", "3.8"}}, "t"},
       {"t_not_divided", exercise(projection, {"t"}), {{"t", "19"}}, "t"},
-      {"position_from_wrong_t", exercise(projection, {"t", "position"}), {{"t", "3.8"}, {"position", "after"}}, "position"},
       {"t_swapped", exercise(segments, {"t_ab", "t_cd"}), {{"t_ab", "0.5"}, {"t_cd", "0.25"}}, "t_ab"},
       {"cross_sign", exercise(segments, {"t_ab", "t_cd"}), {{"t_ab", "-0.25"}}, "t_ab"},
+      {"faces_inner_half_planes", exercise(R"({"kind":"ray_square","A":[3,0.5],"u":[-1,0]})", {"faces"}), {{"faces", "-x +y -y"}}, "faces"},
       {"cross_sign", exercise(R"({"kind":"vectors","u":[3,4],"v":[1,2]})", vector_fields), {{"cross", "-2"}}, "cross"},
       {"norm_not_rooted", exercise(R"({"kind":"vectors","u":[3,4],"v":[1,2]})", vector_fields), {{"norm_v", "5"}}, "norm_v"},
       {"angle_unsigned", exercise(R"({"kind":"vectors","u":[1,2],"v":[3,4]})", vector_fields), {{"angle_deg", "10.30"}}, "angle_deg"},

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "exercises/kinds/registry.h"
 #include "geometry/projection.h"
 
@@ -24,9 +24,50 @@ struct Data {
 constexpr Vec2 kEasyDirections[] = {{2, 0}, {4, 0}, {5, 0}, {0, 2}, {0, 4}, {0, 5},
                                     {3, 4}, {4, 3}, {6, 8}, {8, 6}, {1, 2}, {2, 1}};
 
-class Projection final : public ExerciseKind {
+using method::AnswerType;
+constexpr std::string_view kPositions[] = {"before", "between", "after"};
+
+// The course's exercise 1, written once (method.h).
+struct ProjectionMethod {
+  using Data = kinds::Data;
+  static constexpr std::string_view kName = "projection";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    v("A", d.A);
+    v("B", d.B);
+    v("C", d.C);
+  }
+
+  static constexpr method::QuestionDecl kQuestions[] = {
+      {"t", AnswerType::number}, {"P", AnswerType::point}, {"position", AnswerType::choice, 1, kPositions}};
+
+  static constexpr std::string_view kMistakes[] = {"t_unsquared_norm", "t_not_divided"};
+
+  // t = AB·AC / AB·AB, rounded; P = A + t·AB; P's place on the line from t.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    const auto A = m.in(d.A), B = m.in(d.B), C = m.in(d.C);
+    const auto AB = m.note("AB", B - A), AC = m.note("AC", C - A);
+    const auto ab_ac = m.note("ab_ac", dot(AB, AC)), ab_ab = m.note("ab_ab", dot(AB, AB));
+    const auto ratio = m.mistake("t_not_divided", m.mistake("t_unsquared_norm", ab_ac / ab_ab, ab_ac / sqrt(ab_ab)), ab_ac);
+    const auto t = m.number("t", m.round("t", ratio));
+    m.point("P", A + t * AB);
+    const auto before = less(t, m.in(0.0)), after = less(m.in(1.0), t);
+    m.choice("position", {before ? "before" : after ? "after" : "between", before.deps | after.deps});
+  }
+
+  static CoreAnswers core(const Data& d) {
+    const auto p = geo::project(d.A, d.B, d.C);
+    CoreAnswers a;
+    a.number("t", p.t).point("P", p.P).choice("position", geo::to_string(p.position));
+    return a;
+  }
+};
+
+class Projection final : public MethodKind<ProjectionMethod> {
  public:
-  std::string_view name() const override { return "projection"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"before", 1}, {"between", 2}, {"after", 1}};
   }
@@ -34,7 +75,7 @@ class Projection final : public ExerciseKind {
     // t at least this far from 0 and 1; C at least this far from the line; |AB| at least
     return {{"t_margin", 0.15}, {"min_distance", 1.0}, {"min_length", 3.0}, {"max_t", 2.0}};
   }
-  std::vector<std::string> fields() const override { return {"t", "P", "position"}; }
+  std::vector<DrawnField> drawn() const override { return {{"P", 0, {}}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Difficulty level = ctx.spec.difficulty;
@@ -71,60 +112,20 @@ class Projection final : public ExerciseKind {
       if (p.P.x < -1 || p.P.x > 11 || p.P.y < -1 || p.P.y > 9) return std::nullopt;
       return x;
     });
-    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
-  static std::string instance_text(const Data& d) {
-    return InstanceWriter("projection").point("A", d.A).point("B", d.B).point("C", d.C).finish();
-  }
-
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto p = geo::project(d.A, d.B, d.C);
 
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    // Exact forms from the rational data: a second computation of every answer.
-    std::optional<exact::Surd> t_exact, px_exact, py_exact, ab_ac_exact, ab_ab_exact;
-    auto ax = rational_of(d.A.x), ay = rational_of(d.A.y), bx = rational_of(d.B.x),
-         by = rational_of(d.B.y), cx = rational_of(d.C.x), cy = rational_of(d.C.y);
-    if (ax && ay && bx && by && cx && cy) {
-      try {
-        const auto abx = *bx - *ax, aby = *by - *ay, acx = *cx - *ax, acy = *cy - *ay;
-        const auto ab_ac = abx * acx + aby * acy, ab_ab = abx * abx + aby * aby;
-        const auto t = ab_ac / ab_ab;
-        t_exact = exact::Surd(t);
-        px_exact = exact::Surd(*ax + t * abx);
-        py_exact = exact::Surd(*ay + t * aby);
-        ab_ac_exact = exact::Surd(ab_ac);
-        ab_ab_exact = exact::Surd(ab_ab);
-      } catch (const exact::ExactOverflow&) {
-      }
-    }
-
-    // The student's method: t is rounded, then P = A + t·AB.
-    const StudentMethod method = [&](const Nudge& nudge) {
-      const Vec2 AB = d.B - d.A, AC = d.C - d.A;
-      const double t = nudge.at(0, geo::dot(AB, AC) / geo::dot(AB, AB));
-      const Point2 P = d.A + t * AB;
-      return std::vector<double>{t, P.x, P.y};
-    };
-    const auto tol = derive_abs_tolerances(method, 1, ctx.decimals);
-
-    Questions q(ctx);
-    q.number("t", p.t, tol[0], t_exact);
-    q.point("P", p.P, tol[1], tol[2], px_exact, py_exact);
-    q.choice("position", geo::to_string(p.position), {"before", "between", "after"});
-    inst.questions = q.take_questions();
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
                                 {"B", N.point(d.B.x, d.B.y)},
@@ -142,11 +143,11 @@ class Projection final : public ExerciseKind {
     inst.key.add(render::Paragraph{T.format(
         "projection.step.vectors", {{"AB", N.point(AB.x, AB.y)}, {"AC", N.point(AC.x, AC.y)}})});
     inst.key.add(render::Paragraph{T.format(
-        "projection.step.dots", {{"ab_ac", shown(ctx, p.ab_dot_ac, ab_ac_exact)},
-                                 {"ab_ab", shown(ctx, p.ab_dot_ab, ab_ab_exact)}})});
-    inst.key.add(render::Paragraph{T.format("projection.step.t", {{"t", shown(ctx, p.t, t_exact)}})});
+        "projection.step.dots", {{"ab_ac", shown(ctx, p.ab_dot_ac, key.exact("ab_ac"))},
+                                 {"ab_ab", shown(ctx, p.ab_dot_ab, key.exact("ab_ab"))}})});
+    inst.key.add(render::Paragraph{T.format("projection.step.t", {{"t", shown(ctx, p.t, key.exact("t"))}})});
     inst.key.add(render::Paragraph{
-        T.format("projection.step.P", {{"P", shown_point(ctx, p.P, px_exact, py_exact)}})});
+        T.format("projection.step.P", {{"P", shown_point(ctx, p.P, key.exact_x("P"), key.exact_y("P"))}})});
     inst.key.add(render::Paragraph{T.get(fmt::format("projection.step.position.{}", geo::to_string(p.position)))});
     inst.key.add(render::Figure{key_scene(d, p, ctx), 0.6});
     add_lines(inst.key, q);

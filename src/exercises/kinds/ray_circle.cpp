@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "exercises/kinds/registry.h"
 #include "geometry/ray_circle.h"
 
@@ -31,158 +31,88 @@ struct Data {
 constexpr Vec2 kEasyDirections[] = {{1, 0}, {0, 1}, {2, 0}, {0, 2},  {3, 4},
                                     {4, 3}, {6, 8}, {8, 6}, {5, 12}, {12, 5}};
 
-// Beyond this radicand (numerator × denominator under the root) an exact form is neither short
-// nor cheap: Surd reduces √c by trial division. Such answers are given in decimals only.
-constexpr std::int64_t kMaxRadicand = 100'000'000;
-
-// √r as a Surd; throws ExactOverflow when the radicand is too large to be worth it.
-Surd bounded_sqrt(Rational r) {
-  if (r.num() > kMaxRadicand / r.den()) throw exact::ExactOverflow();
-  return Surd::sqrt(r);
-}
-
-// Runs one exact computation; empty when it overflows or needs two different radicands.
-template <class F>
-auto attempt(F&& f) -> std::optional<decltype(f())> {
-  try {
-    return f();
-  } catch (const exact::ExactOverflow&) {
-  } catch (const std::domain_error&) {
-  }
-  return std::nullopt;
-}
-
-// An exact form must agree with the core's double: it is an independent second computation, and
-// a sheet is issued only when both agree.
-void check_agrees(const std::optional<Surd>& e, double core, const char* what) {
-  if (e && !(std::abs(e->value() - core) <= 1e-9 * std::max(1.0, std::abs(core))))
-    throw std::logic_error(fmt::format("ray_circle: exact {} = {} disagrees with the core's {}", what,
-                                       e->value(), core));
-}
-
-// A value as a worked step shows it: its exact form when short, with its decimal value when that
-// is not the same number written otherwise ("37/5 = 7.4", "−6√5/5 ≈ −2.68"); the decimal alone
-// when the exact form is long (one-decimal data give fractions like 376996/25925).
-std::string step_value(const ExerciseContext& ctx, double value, const std::optional<Surd>& e) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
-  if (!e) return rounded;
-  try {
-    const std::string pretty = e->pretty();
-    if (pretty.size() > 16 || e->a().den() > 1000 || e->b().den() > 1000) return rounded;
-    const std::string exact = ctx.numbers.localise(pretty);
-    if (!e->is_rational()) return fmt::format("{} ≈ {}", exact, rounded);
-    const std::int64_t den = e->a().den();
-    if (den == 1) return exact;
-    std::int64_t pow10 = 1;
-    for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
-    if (pow10 % den == 0) return fmt::format("{} = {}", exact, ctx.numbers.datum(value, ctx.decimals));
-    return fmt::format("{} ≈ {}", exact, rounded);
-  } catch (const exact::ExactOverflow&) {
-    return rounded;
-  }
-}
-
-std::string step_point(const ExerciseContext& ctx, Point2 p, const std::optional<Surd>& ex,
-                       const std::optional<Surd>& ey) {
-  return fmt::format("({}{} {})", step_value(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
-                     step_value(ctx, p.y, ey));
-}
-
 std::string branch_of(const geo::RayCircle& rc) {
   if (rc.inside) return "inside";
   if (rc.hit) return "hit";
   return geo::to_string(*rc.reason);
 }
 
-// The exact values of the worked solution, from the rational data.
-struct Exact {
-  std::optional<Rational> ac2, r2, d2;
-  std::optional<Surd> norm_u, ux, uy, t_proj, px, py, d2s, h, t, ix, iy, nx, ny;
+geo::RayCircle solve_core(const Data& d) { return geo::intersect(geo::Ray2::unit(d.A, d.u), geo::Circle{d.C, d.r}); }
+
+using method::AnswerType;
+constexpr std::string_view kReasons[] = {"behind", "miss"};
+
+// The course's exercise 3, written once (method.h).
+struct RayCircle {
+  using Data = kinds::Data;
+  static constexpr std::string_view kName = "ray_circle";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    v("A", d.A);
+    v("u", d.u);
+    v("C", d.C);
+    v("r", d.r);
+  }
+
+  static constexpr method::QuestionDecl kQuestions[] = {
+      {"t_proj", AnswerType::number}, {"d2", AnswerType::number}, {"inside", AnswerType::boolean},
+      {"hit", AnswerType::boolean},   {"t", AnswerType::number},  {"I", AnswerType::point},
+      {"N", AnswerType::point},       {"reason", AnswerType::choice, 1, kReasons}};
+
+  static constexpr std::string_view kRoads[] = {"pythagoras_apc"};
+  static constexpr std::string_view kMistakes[] = {"direction_not_unit", "far_intersection", "near_root_inside",
+                                                   "normal_not_unit", "normal_inward"};
+
+  // The student's road, in the course's order: û, t_proj = û·AC, P = A + t_proj·û, d² = CP²,
+  // then Pythagoras in C–P–I, t = t_proj ∓ √(r² − d²), I = A + t·û, N = (I − C)/r. They round
+  // û, t_proj, P, d², PI, t and I on the way.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    using method::less_equal;
+    const auto A = m.in(d.A), C = m.in(d.C), u = m.in(d.u);
+    const auto r = m.in(d.r), zero = m.in(0.0), one = m.in(1.0);
+    const auto AC = m.note("AC", C - A);
+    const auto ac2 = m.note("ac2", norm2(AC));
+    const auto r2 = m.note("r2", r * r);
+    const auto inside = m.boolean("inside", less(ac2, r2));
+    const auto n = dot(u, u);
+    const auto length = m.note("norm_u", sqrt(n));
+    const auto uh = m.round("u_hat", m.mistake("direction_not_unit", u / length, u));
+    const auto t_proj = m.number("t_proj", m.round("t_proj", dot(uh, AC)));
+    const auto P = m.round("P", A + t_proj * uh);
+    // d² = CP², or by Pythagoras in the triangle A–P–C: AC² − t_proj²
+    const auto d2 = m.number("d2", m.round("d2", m.road("pythagoras_apc", norm2(P - C), ac2 - t_proj * t_proj)));
+    const auto ahead = !less(t_proj, zero);
+    const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, r2)));
+    if (!hit) {
+      m.choice("reason", method::pick(ahead, "miss", "behind"));
+      return;
+    }
+    const auto h2 = r2 - d2;
+    const auto h = m.round("h", sqrt(h2));
+    // from outside the ray meets the near point first; from inside it leaves at the far one
+    const auto t = m.number("t", m.round("t", inside ? m.mistake("near_root_inside", t_proj + h, t_proj - h)
+                                                     : m.mistake("far_intersection", t_proj - h, t_proj + h)));
+    const auto along = (inside ? one : -one) * sqrt(h2 / n);
+    const auto I = m.point("I", m.round("I", m.either(A + t * uh, P + along * u)));
+    const auto IC = I - C;
+    m.point("N", m.mistake("normal_inward", m.mistake("normal_not_unit", IC / r, IC), -(IC / r)));
+  }
+
+  static CoreAnswers core(const Data& d) {
+    const auto rc = solve_core(d);
+    CoreAnswers a;
+    a.number("t_proj", rc.t_proj).number("d2", rc.d2).boolean("inside", rc.inside).boolean("hit", rc.hit.has_value());
+    if (rc.hit) a.number("t", rc.hit->t).point("I", rc.hit->I).vec("N", rc.hit->N);
+    else a.choice("reason", geo::to_string(*rc.reason));
+    return a;
+  }
 };
 
-Exact exact_values(const Data& d, bool inside) {
-  Exact e;
-  const auto ax = rational_of(d.A.x), ay = rational_of(d.A.y), ux = rational_of(d.u.x),
-             uy = rational_of(d.u.y), cx = rational_of(d.C.x), cy = rational_of(d.C.y),
-             r = rational_of(d.r);
-  if (!(ax && ay && ux && uy && cx && cy && r)) return e;
-  try {
-    const Rational acx = *cx - *ax, acy = *cy - *ay;
-    const Rational n = *ux * *ux + *uy * *uy;
-    const Rational dot = *ux * acx + *uy * acy, cross = *ux * acy - *uy * acx;
-    e.ac2 = acx * acx + acy * acy;
-    e.r2 = *r * *r;
-    e.d2 = cross * cross / n;  // (u∧AC)² / u·u
-    e.d2s = Surd(*e.d2);
-    // P = A + (u·AC / u·u)·u: rational whatever the length of u
-    const Rational k = dot / n;
-    e.px = Surd(*ax + k * *ux);
-    e.py = Surd(*ay + k * *uy);
-    e.norm_u = attempt([&] { return bounded_sqrt(n); });
-    if (e.norm_u) {
-      e.ux = attempt([&] { return *e.norm_u * Surd(*ux / n); });
-      e.uy = attempt([&] { return *e.norm_u * Surd(*uy / n); });
-      e.t_proj = attempt([&] { return *e.norm_u * Surd(k); });
-    }
-    const Rational h2 = *e.r2 - *e.d2;
-    if (h2.sign() < 0) return e;  // a miss: no Pythagoras
-    const Rational sign(inside ? 1 : -1);
-    e.h = attempt([&] { return bounded_sqrt(h2); });
-    if (e.t_proj && e.h) e.t = attempt([&] { return *e.t_proj + *e.h * Surd(sign); });
-    // I = P ± √(h²/u·u)·u, N = (I − C)/r
-    const auto along = attempt([&] { return bounded_sqrt(h2 / n) * Surd(sign); });
-    if (!along) return e;
-    e.ix = attempt([&] { return *e.px + *along * Surd(*ux); });
-    e.iy = attempt([&] { return *e.py + *along * Surd(*uy); });
-    if (e.ix) e.nx = attempt([&] { return (*e.ix - Surd(*cx)) / *r; });
-    if (e.iy) e.ny = attempt([&] { return (*e.iy - Surd(*cy)) / *r; });
-  } catch (const exact::ExactOverflow&) {
-  }
-  return e;
-}
-
-// True when x is written exactly with `decimals` decimals: a student's rounding leaves it as is.
-bool on_decimal_grid(double x, int decimals) {
-  const double scaled = x * std::pow(10.0, decimals);
-  return std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
-}
-
-// The student's method, in the course's order, rounding û, t_proj, P, d², PI, t and I: the
-// answers t_proj, d² and, with a hit, t, I and N. An intermediate that already has at most
-// `decimals` decimals (û = (0.6, 0.8)) is written as it is: rounding does not move it.
-StudentMethod student_method(const Data& d, bool hit, bool from_inside, int decimals) {
-  return [d, hit, from_inside, decimals](const Nudge& nudge) {
-    auto rounded = [&](int k, double v) { return on_decimal_grid(v, decimals) ? v : nudge.at(k, v); };
-    const double length = geo::norm(d.u);
-    const Vec2 uh{rounded(0, d.u.x / length), rounded(1, d.u.y / length)};
-    const Vec2 AC = d.C - d.A;
-    const double t_proj = rounded(2, uh.x * AC.x + uh.y * AC.y);
-    const Point2 P{rounded(3, d.A.x + t_proj * uh.x), rounded(4, d.A.y + t_proj * uh.y)};
-    const Vec2 CP = P - d.C;
-    const double d2 = rounded(5, CP.x * CP.x + CP.y * CP.y);
-    if (!hit) return std::vector<double>{t_proj, d2};
-    const double h = rounded(6, std::sqrt(d.r * d.r - d2));
-    const double t = rounded(7, from_inside ? t_proj + h : t_proj - h);
-    const Point2 I{rounded(8, d.A.x + t * uh.x), rounded(9, d.A.y + t * uh.y)};
-    return std::vector<double>{t_proj, d2, t, I.x, I.y, (I.x - d.C.x) / d.r, (I.y - d.C.y) / d.r};
-  };
-}
-
-// Unnudged, the student's method is the core's answer by another road: tolerances derived from
-// a method that disagrees would grade against the wrong figure.
-void check_method(const StudentMethod& method, const geo::RayCircle& rc) {
-  std::vector<double> core = {rc.t_proj, rc.d2};
-  if (rc.hit) core.insert(core.end(), {rc.hit->t, rc.hit->I.x, rc.hit->I.y, rc.hit->N.x, rc.hit->N.y});
-  const auto mine = method(Nudge{});
-  for (std::size_t i = 0; i < core.size(); ++i)
-    if (!(std::abs(mine[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
-      throw std::logic_error(fmt::format("ray_circle: the student's method gives {} where the core gives {}",
-                                         mine[i], core[i]));
-}
-
-class RayCircleKind final : public ExerciseKind {
+class RayCircleKind final : public MethodKind<RayCircle> {
  public:
-  std::string_view name() const override { return "ray_circle"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"hit", 3}, {"behind", 1}, {"miss", 1}, {"inside", 1}};
   }
@@ -197,15 +127,7 @@ class RayCircleKind final : public ExerciseKind {
         {"max_radius", 4.0},
     };
   }
-  std::vector<std::string> fields() const override {
-    return {"t_proj", "d2", "inside", "hit", "t", "I", "N", "reason"};
-  }
-  std::vector<SheetField> sheet_fields() const override {
-    return {{"t_proj", render::AnswerField::Kind::number, {}}, {"d2", render::AnswerField::Kind::number, {}},
-            {"inside", render::AnswerField::Kind::boolean, {}},   {"hit", render::AnswerField::Kind::boolean, {}},
-            {"t", render::AnswerField::Kind::number, {}},         {"I", render::AnswerField::Kind::point, {}},
-            {"N", render::AnswerField::Kind::point, {}},          {"reason", render::AnswerField::Kind::choice, {"behind", "miss"}}};
-  }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Difficulty level = ctx.spec.difficulty;
@@ -244,8 +166,9 @@ class RayCircleKind final : public ExerciseKind {
     // easy: Pythagoras gives a rational PI (r² − d² is the square of a rational)
     auto pythagorean = [&](const Data& x) {
       if (level != Difficulty::easy || ctx.branch == "behind" || ctx.branch == "miss") return true;
-      const auto e = exact_values(x, ctx.branch == "inside");
-      return e.h && e.h->is_rational();
+      const auto run = exact_run(x);
+      const auto* h = run.step("h");
+      return h && h->x.e && h->x.e->is_rational();
     };
 
     const Data d = draw_until(200000, "ray_circle (branch, tangency and boundary margins, t range)",
@@ -266,58 +189,23 @@ class RayCircleKind final : public ExerciseKind {
       if (!accept(x) || !pythagorean(x)) return std::nullopt;
       return x;
     });
-    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
-  static std::string instance_text(const Data& d) {
-    return InstanceWriter("ray_circle").point("A", d.A).vec("u", d.u).point("C", d.C).number("r", d.r).finish();
-  }
-
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto rc = geo::intersect(geo::Ray2::unit(d.A, d.u), geo::Circle{d.C, d.r});
+    const auto rc = solve_core(d);
     const std::string branch = branch_of(rc);
 
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    const Exact e = exact_values(d, rc.inside);
-    check_agrees(e.t_proj, rc.t_proj, "t_proj");
-    check_agrees(e.d2s, rc.d2, "d2");
-    if (rc.hit) {
-      check_agrees(e.t, rc.hit->t, "t");
-      check_agrees(e.ix, rc.hit->I.x, "I.x");
-      check_agrees(e.iy, rc.hit->I.y, "I.y");
-      check_agrees(e.nx, rc.hit->N.x, "N.x");
-      check_agrees(e.ny, rc.hit->N.y, "N.y");
-    }
-
-    const StudentMethod method = student_method(d, rc.hit.has_value(), rc.inside, ctx.decimals);
-    check_method(method, rc);
-    const auto tol = derive_abs_tolerances(method, 10, ctx.decimals);
-
-    const bool hit = rc.hit.has_value();
-    Questions q(ctx);
-    q.number("t_proj", rc.t_proj, tol[0], e.t_proj);
-    q.number("d2", rc.d2, tol[1], e.d2s);
-    q.boolean("inside", rc.inside);
-    q.boolean("hit", hit);
-    if (hit) {
-      q.number("t", rc.hit->t, tol[2], e.t);
-      q.point("I", rc.hit->I, tol[3], tol[4], e.ix, e.iy);
-      q.vector("N", rc.hit->N, tol[5], tol[6], e.nx, e.ny);
-    } else {
-      q.choice("reason", geo::to_string(*rc.reason), {"behind", "miss"});
-    }
-    inst.questions = q.take_questions();
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
+    auto value = [&](std::string_view id) { return step_value(ctx, key.value(id), key.exact(id)); };
+    auto point = [&](std::string_view id) { return step_point(ctx, key.point(id), key.exact_x(id), key.exact_y(id)); };
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
                                 {"u", N.point(d.u.x, d.u.y)},
@@ -335,28 +223,23 @@ class RayCircleKind final : public ExerciseKind {
     auto step = [&](std::string_view key, const TextVars& vars = {}) {
       inst.key.add(render::Paragraph{T.format(fmt::format("ray_circle.step.{}", key), vars)});
     };
-    const std::string r2 = step_value(ctx, d.r * d.r, e.r2 ? std::optional<Surd>(*e.r2) : std::nullopt);
-    const std::string d2 = step_value(ctx, rc.d2, e.d2s);
-    step("AC", {{"AC", N.point(rc.AC.x, rc.AC.y)},
-                {"ac2", step_value(ctx, geo::norm2(rc.AC), e.ac2 ? std::optional<Surd>(*e.ac2) : std::nullopt)},
-                {"r2", r2}});
+    const std::string r2 = value("r2"), d2 = value("d2");
+    step("AC", {{"AC", N.point(rc.AC.x, rc.AC.y)}, {"ac2", value("ac2")}, {"r2", r2}});
     step(rc.inside ? "inside.yes" : "inside.no");
-    const Vec2 uh = d.u / geo::norm(d.u);
-    step("unit", {{"norm_u", step_value(ctx, geo::norm(d.u), e.norm_u)},
-                  {"u_hat", step_point(ctx, geo::to_point(uh), e.ux, e.uy)}});
-    step("t_proj", {{"t_proj", step_value(ctx, rc.t_proj, e.t_proj)}});
+    step("unit", {{"norm_u", value("norm_u")}, {"u_hat", point("u_hat")}});
+    step("t_proj", {{"t_proj", value("t_proj")}});
     if (rc.inside) step("ahead.inside");
     else if (branch == "behind") step("behind");
     else step("ahead.outside");
-    step("P", {{"P", step_point(ctx, rc.P, e.px, e.py)}});
+    step("P", {{"P", point("P")}});
     step("d2", {{"d2", d2}});
     if (branch == "miss") {
       step("miss", {{"d2", d2}, {"r2", r2}});
     } else if (branch != "behind") {
-      step("pythagoras", {{"d2", d2}, {"r2", r2}, {"h", step_value(ctx, *rc.half_chord, e.h)}});
-      step(rc.inside ? "t.inside" : "t.outside", {{"t", step_value(ctx, rc.hit->t, e.t)}});
-      step("I", {{"I", step_point(ctx, rc.hit->I, e.ix, e.iy)}});
-      step("N", {{"N", step_point(ctx, geo::to_point(rc.hit->N), e.nx, e.ny)}});
+      step("pythagoras", {{"d2", d2}, {"r2", r2}, {"h", value("h")}});
+      step(rc.inside ? "t.inside" : "t.outside", {{"t", value("t")}});
+      step("I", {{"I", point("I")}});
+      step("N", {{"N", point("N")}});
     }
     inst.key.add(render::Figure{key_scene(d, rc, branch, ctx), 0.6});
     add_lines(inst.key, q);
@@ -447,14 +330,6 @@ class RayCircleKind final : public ExerciseKind {
 };
 
 }  // namespace
-
-namespace testing {
-// The student's method without nudges, for the tests to compare with the core.
-std::vector<double> ray_circle_student_answers(geo::Point2 A, geo::Vec2 u, geo::Point2 C, double r) {
-  const auto rc = geo::intersect(geo::Ray2::unit(A, u), geo::Circle{C, r});
-  return student_method(Data{A, u, C, r}, rc.hit.has_value(), rc.inside, 2)(Nudge{});
-}
-}  // namespace testing
 
 const ExerciseKind& ray_circle_kind() {
   static const RayCircleKind kind;

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "exercises/kinds/registry.h"
 #include "geometry/ray_square.h"
 
@@ -37,35 +37,7 @@ double coord(Point2 p, int axis) { return axis == 0 ? p.x : p.y; }
 Vec2 normal_of(Face f) { return f.axis == 0 ? Vec2{double(f.sign), 0} : Vec2{0, double(f.sign)}; }
 const char* axis_name(int axis) { return axis == 0 ? "x" : "y"; }
 
-// A value as a worked step shows it: its exact form when short, with its decimal value when that
-// is not the same number written otherwise ("37/5 = 7.4", "−6√5/5 ≈ −2.68"); the decimal alone
-// when the exact form is long (one-decimal data give fractions like 376996/25925).
-std::string step_value(const ExerciseContext& ctx, double value, const std::optional<Surd>& e) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
-  if (!e) return rounded;
-  try {
-    const std::string pretty = e->pretty();
-    if (pretty.size() > 16 || e->a().den() > 1000 || e->b().den() > 1000) return rounded;
-    const std::string exact = ctx.numbers.localise(pretty);
-    if (!e->is_rational()) return fmt::format("{} ≈ {}", exact, rounded);
-    const std::int64_t den = e->a().den();
-    if (den == 1) return exact;
-    std::int64_t pow10 = 1;
-    for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
-    if (pow10 % den == 0) return fmt::format("{} = {}", exact, ctx.numbers.datum(value, ctx.decimals));
-    return fmt::format("{} ≈ {}", exact, rounded);
-  } catch (const exact::ExactOverflow&) {
-    return rounded;
-  }
-}
-
-std::string step_point(const ExerciseContext& ctx, Point2 p, const std::optional<Surd>& ex,
-                       const std::optional<Surd>& ey) {
-  return fmt::format("({}{} {})", step_value(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
-                     step_value(ctx, p.y, ey));
-}
-
-geo::RaySquare solve(const Data& d) { return geo::intersect_canonical_square(geo::Ray2::unit(d.A, d.u)); }
+geo::RaySquare solve_core(const Data& d) { return geo::intersect_canonical_square(geo::Ray2::unit(d.A, d.u)); }
 
 std::string branch_of(const geo::RaySquare& rs) {
   if (rs.inside) return "inside";
@@ -98,42 +70,13 @@ std::vector<Side> sides_in_play(const Data& d, const geo::RaySquare& rs) {
   return out;
 }
 
-// Exact forms from the rational data: û = u/√(u·u), and for a side (axis k, sign σ) with u_n =
-// σ·u_k, t = (1 − σ·A_k)·√(u·u)/u_n and the crossing A + ((1 − σ·A_k)/u_n)·u (rational).
-struct Exact {
-  std::optional<Surd> norm_u, ux, uy;
-  struct PerSide {
-    std::optional<Surd> u_n, t, jx, jy;
-  };
-  PerSide side[4];
-};
+using method::AnswerType;
+constexpr std::string_view kFaceNames[] = {"+x", "+y", "-x", "-y"};
 
-Exact exact_values(const Data& d) {
-  Exact e;
-  const auto ax = rational_of(d.A.x), ay = rational_of(d.A.y), ux = rational_of(d.u.x),
-             uy = rational_of(d.u.y);
-  if (!(ax && ay && ux && uy)) return e;
-  try {
-    const Rational n = *ux * *ux + *uy * *uy;
-    e.norm_u = Surd::sqrt(n);
-    e.ux = *e.norm_u * Surd(*ux / n);
-    e.uy = *e.norm_u * Surd(*uy / n);
-    for (int i = 0; i < 4; ++i) {
-      const Face f = kSides[i];
-      const Rational sign(f.sign);
-      const Rational u_n = sign * (f.axis == 0 ? *ux : *uy);
-      const Rational a_n = sign * (f.axis == 0 ? *ax : *ay);
-      e.side[i].u_n = *e.norm_u * Surd(u_n / n);
-      if (u_n.is_zero()) continue;
-      const Rational k = (Rational(1) - a_n) / u_n;
-      e.side[i].t = *e.norm_u * Surd(k);
-      e.side[i].jx = Surd(*ax + k * *ux);
-      e.side[i].jy = Surd(*ay + k * *uy);
-    }
-  } catch (const exact::ExactOverflow&) {
-  }
-  return e;
-}
+// Step names per side, in kSides' order (recorded steps keep views of their names).
+constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
+constexpr std::string_view kStepT[] = {"t.+x", "t.+y", "t.-x", "t.-y"};
+constexpr std::string_view kStepJ[] = {"J.+x", "J.+y", "J.-x", "J.-y"};
 
 int index_of(Face f) {
   for (int i = 0; i < 4; ++i)
@@ -141,46 +84,105 @@ int index_of(Face f) {
   return 0;
 }
 
-void check_agrees(const std::optional<Surd>& e, double core, const char* what) {
-  if (e && !(std::abs(e->value() - core) <= 1e-9 * std::max(1.0, std::abs(core))))
-    throw std::logic_error(fmt::format("ray_square: exact {} = {} disagrees with the core's {}", what,
-                                       e->value(), core));
-}
+method::FaceMask bit_of(Face f) { return method::FaceMask(1u << (f.axis + (f.sign > 0 ? 0 : 3))); }
 
-// True when x is written exactly with `decimals` decimals: a student's rounding leaves it as is.
-bool on_decimal_grid(double x, int decimals) {
-  const double scaled = x * std::pow(10.0, decimals);
-  return std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
-}
+// The course's exercise 4, written once (method.h).
+struct RaySquareMethod {
+  using Data = kinds::Data;
+  static constexpr std::string_view kName = "ray_square";
 
-// The student's method on the side hit: û, t = (1 − A·n)/(û·n), I = A + t·û, each rounded
-// (unless already written with `decimals` decimals); the answers t, I and N.
-StudentMethod student_method(const Data& d, Face f, int decimals) {
-  return [d, f, decimals](const Nudge& nudge) {
-    auto rounded = [&](int k, double v) { return on_decimal_grid(v, decimals) ? v : nudge.at(k, v); };
-    const double length = geo::norm(d.u);
-    const Vec2 uh{rounded(0, d.u.x / length), rounded(1, d.u.y / length)};
-    const Vec2 n = normal_of(f);
-    const double t = rounded(2, (1 - geo::dot(geo::to_vec(d.A), n)) / geo::dot(uh, n));
-    const Point2 I{rounded(3, d.A.x + t * uh.x), rounded(4, d.A.y + t * uh.y)};
-    return std::vector<double>{t, I.x, I.y, n.x, n.y};
-  };
-}
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    v("A", d.A);
+    v("u", d.u);
+  }
 
-// Unnudged, the student's method must give the core's answer, or the tolerances derived from it
-// would grade against another figure.
-void check_method(const StudentMethod& method, const geo::RaySquare& rs) {
-  const std::vector<double> core = {rs.hit->t, rs.hit->I.x, rs.hit->I.y, rs.hit->N.x, rs.hit->N.y};
-  const auto mine = method(Nudge{});
-  for (std::size_t i = 0; i < core.size(); ++i)
-    if (!(std::abs(mine[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
-      throw std::logic_error(fmt::format("ray_square: the student's method gives {} where the core gives {}",
-                                         mine[i], core[i]));
-}
+  static constexpr method::QuestionDecl kQuestions[] = {
+      {"faces", AnswerType::faces, 1, kFaceNames}, {"inside", AnswerType::boolean}, {"hit", AnswerType::boolean},
+      {"t", AnswerType::number},                   {"I", AnswerType::point},        {"N", AnswerType::point}};
 
-class RaySquareKind final : public ExerciseKind {
+  static constexpr std::string_view kMistakes[] = {"faces_wrong_half_planes", "faces_inner_half_planes", "faces_from_direction",
+                                                   "direction_not_unit", "normal_inward"};
+
+  // The candidate sides are those whose closed outer half-plane holds A (A·n ≥ 1); on each the
+  // ray heads into (û·n < 0), (A + t·û)·n = 1 gives t = (1 − A·n)/(û·n), and the crossing is
+  // the hit when it lies on the side. From inside, the ray leaves through the side it reaches
+  // first among those it heads to (û·n > 0). N is the side's normal: the side I lies on.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    using N = typename M::Number;
+    const auto A = m.in(d.A), u = m.in(d.u);
+    const auto zero = m.in(0.0), one = m.in(1.0);
+    auto coord = [](const auto& p, int axis) { return axis == 0 ? p.x : p.y; };
+    auto along = [&](const auto& p, Face f) { return f.sign > 0 ? coord(p, f.axis) : -coord(p, f.axis); };
+
+    method::FaceMask candidates = 0, opposite = 0, inner = 0, towards = 0;
+    method::Cond inside{true};
+    for (int i = 0; i < 4; ++i) {
+      const Face f = kSides[i];
+      const auto a_n = along(A, f);
+      if (!less(a_n, one)) candidates |= bit_of(f), opposite |= bit_of({f.axis, -f.sign});
+      if (!less(one, a_n)) inner |= bit_of(f);
+      inside = inside && less(a_n, one);
+      if (less(along(u, f), zero)) towards |= bit_of(f);
+    }
+    const method::Faces right{candidates};
+    const auto faces = m.faces(
+        "faces", m.mistake("faces_from_direction",
+                           m.mistake("faces_inner_half_planes",
+                                     m.mistake("faces_wrong_half_planes", right, method::Faces{opposite}),
+                                     inside ? right : method::Faces{inner}),
+                           method::Faces{towards}));
+    const auto in = m.boolean("inside", inside);
+    const auto length = m.note("norm_u", sqrt(dot(u, u)));
+    const auto uh = m.round("u_hat", m.mistake("direction_not_unit", u / length, u));
+
+    std::optional<N> best;
+    method::Deps deps = faces.deps | in.deps;
+    for (int i = 0; i < 4; ++i) {
+      const Face f = kSides[i];
+      const auto u_n = m.note(kStepUn[i], along(uh, f));
+      const bool in_play = in ? !less_equal_zero(u_n) : (faces.bits & bit_of(f)) != 0;
+      if (!in_play || (!in && !less(u_n, zero))) continue;
+      const auto t = m.note(kStepT[i], (one - along(A, f)) / u_n);
+      const auto J = m.note(kStepJ[i], A + t * uh);
+      const auto other = coord(J, 1 - f.axis);
+      const bool on_side = static_cast<bool>(!less(t, zero) && !less(one, method::magnitude(other)));
+      if (on_side && (!best || less(t, *best))) best = t;
+    }
+    const auto hit = m.boolean("hit", method::Cond{best.has_value(), deps});
+    if (!hit) return;
+    const auto t = m.number("t", m.round("t", best ? *best : zero));
+    const auto I = m.point("I", m.round("I", A + t * uh));
+    // the side I lies on: its larger coordinate, in absolute value
+    const bool on_x = static_cast<bool>(!less(method::magnitude(I.x), method::magnitude(I.y)));
+    const auto sign = [&](const auto& c) { return less(c, zero) ? -one : one; };
+    const auto no = I.x - I.x;  // carries I's dependencies into N, at no cost to its value
+    const typename M::Vec n{m.either(no + (on_x ? sign(I.x) : zero), on_x ? sign(I.x) : zero),
+                            m.either(no + (on_x ? zero : sign(I.y)), on_x ? zero : sign(I.y))};
+    m.point("N", m.mistake("normal_inward", n, -n));
+  }
+
+  static CoreAnswers core(const Data& d) {
+    const auto rs = solve_core(d);
+    method::FaceMask bits = 0;
+    rs.faces.for_each([&](Face f) { bits |= bit_of(f); });
+    CoreAnswers a;
+    a.faces("faces", bits).boolean("inside", rs.inside).boolean("hit", rs.hit.has_value());
+    if (rs.hit) a.number("t", rs.hit->t).point("I", rs.hit->I).vec("N", rs.hit->N);
+    return a;
+  }
+
+ private:
+  template <class T>
+  static bool less_equal_zero(const T& x) {
+    return !(method::value(x) > 0);
+  }
+};
+
+class RaySquareKind final : public MethodKind<RaySquareMethod> {
  public:
-  std::string_view name() const override { return "ray_square"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"hit", 3}, {"miss", 1}, {"inside", 1}};
   }
@@ -192,15 +194,7 @@ class RaySquareKind final : public ExerciseKind {
         {"min_cos", 0.2},         // |û·n| of a side in play at least this, unless exactly 0
     };
   }
-  std::vector<std::string> fields() const override { return {"faces", "inside", "hit", "t", "I", "N"}; }
-  std::vector<SheetField> sheet_fields() const override {
-    return {{"faces", render::AnswerField::Kind::faces, {"+x", "+y", "-x", "-y"}},
-            {"inside", render::AnswerField::Kind::boolean, {}},
-            {"hit", render::AnswerField::Kind::boolean, {}},
-            {"t", render::AnswerField::Kind::number, {}},
-            {"I", render::AnswerField::Kind::point, {}},
-            {"N", render::AnswerField::Kind::point, {}}};
-  }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Difficulty level = ctx.spec.difficulty;
@@ -215,7 +209,7 @@ class RaySquareKind final : public ExerciseKind {
     const double graze = cm + 0.1;
 
     auto accept = [&](const Data& x) {
-      const auto rs = solve(x);
+      const auto rs = solve_core(x);
       if (branch_of(rs) != ctx.branch) return false;
       for (int k = 0; k < 2; ++k)
         if (std::abs(std::abs(coord(x.A, k)) - 1) < sm_clear) return false;
@@ -275,60 +269,29 @@ class RaySquareKind final : public ExerciseKind {
       if (!accept(x)) return std::nullopt;
       return x;
     });
-    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
-  static std::string instance_text(const Data& d) {
-    return InstanceWriter("ray_square").point("A", d.A).vec("u", d.u).finish();
-  }
-
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto rs = solve(d);
-    const Exact e = exact_values(d);
+    const auto rs = solve_core(d);
     const auto sides = sides_in_play(d, rs);
 
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
     std::vector<std::string> faces;
     rs.faces.for_each([&](Face f) { faces.emplace_back(geo::face_name(f)); });
-
     std::optional<Surd> t_exact, ix_exact, iy_exact;
-    if (rs.hit) {
-      const auto& s = e.side[index_of(*rs.face)];
-      t_exact = s.t, ix_exact = s.jx, iy_exact = s.jy;
-      check_agrees(t_exact, rs.hit->t, "t");
-      check_agrees(ix_exact, rs.hit->I.x, "I.x");
-      check_agrees(iy_exact, rs.hit->I.y, "I.y");
-    }
-
-    std::vector<double> tol;
-    if (rs.hit) {
-      const StudentMethod method = student_method(d, *rs.face, ctx.decimals);
-      check_method(method, rs);
-      tol = derive_abs_tolerances(method, 5, ctx.decimals);
-    }
-
-    Questions q(ctx);
-    q.faces("faces", faces, {"+x", "+y", "-x", "-y"});
-    q.boolean("inside", rs.inside);
-    q.boolean("hit", rs.hit.has_value());
-    if (rs.hit) {
-      q.number("t", rs.hit->t, tol[0], t_exact);
-      q.point("I", rs.hit->I, tol[1], tol[2], ix_exact, iy_exact);
-      q.vector("N", rs.hit->N, tol[3], tol[4], Surd(Rational(std::lround(rs.hit->N.x))),
-               Surd(Rational(std::lround(rs.hit->N.y))));
-    }
-    inst.questions = q.take_questions();
+    if (rs.hit) t_exact = key.exact("t"), ix_exact = key.exact_x("I"), iy_exact = key.exact_y("I");
+    auto side_exact = [&](std::string_view id) -> std::optional<Surd> {
+      const auto* r = key.run.step(id);
+      return r ? r->x.e : std::nullopt;
+    };
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)}, {"u", N.point(d.u.x, d.u.y)}};
     // ---- the sheet
@@ -358,10 +321,14 @@ class RaySquareKind final : public ExerciseKind {
       step("candidates", {{"faces", list}});
     }
     const Vec2 uh = d.u / geo::norm(d.u);
-    step("unit", {{"norm_u", step_value(ctx, geo::norm(d.u), e.norm_u)},
-                  {"u_hat", step_point(ctx, geo::to_point(uh), e.ux, e.uy)}});
+    step("unit", {{"norm_u", step_value(ctx, geo::norm(d.u), key.exact("norm_u"))},
+                  {"u_hat", step_point(ctx, geo::to_point(uh), key.exact_x("u_hat"), key.exact_y("u_hat"))}});
     for (const Side& s : sides) {
-      const auto& ex = e.side[index_of(s.face)];
+      const int i = index_of(s.face);
+      struct {
+        std::optional<Surd> u_n, t, jx, jy;
+      } ex{side_exact(kStepUn[i]), side_exact(kStepT[i]), std::nullopt, std::nullopt};
+      if (const auto* J = key.run.step(kStepJ[i])) ex.jx = J->x.e, ex.jy = J->y.e;
       const bool hit_here = rs.face && *rs.face == s.face;
       const Vec2 n = normal_of(s.face);
       // the side hit shows the core's values; the others their exact values (or the formula's)
@@ -472,16 +439,6 @@ class RaySquareKind final : public ExerciseKind {
 };
 
 }  // namespace
-
-namespace testing {
-// The student's method without nudges (t, I, N), for the tests to compare with the core; empty
-// without a hit.
-std::vector<double> ray_square_student_answers(geo::Point2 A, geo::Vec2 u) {
-  const auto rs = solve(Data{A, u});
-  if (!rs.hit) return {};
-  return student_method(Data{A, u}, *rs.face, 2)(Nudge{});
-}
-}  // namespace testing
 
 const ExerciseKind& ray_square_kind() {
   static const RaySquareKind kind;

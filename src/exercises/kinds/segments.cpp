@@ -12,28 +12,9 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "exercises/kinds/registry.h"
 #include "geometry/segments.h"
-
-namespace epure::kinds::detail {
-
-// The student's hand method, in the course's order: AB∧CD, AC∧CD, AC∧AB, then t_ab and t_cd by
-// division, then I = A + t_ab·AB. rounded[k] is the nudge index of the k-th of those five
-// intermediates (−1 when the student writes it exactly and does not round it). Returns
-// {t_ab, t_cd, I.x, I.y}. Exposed for the tests.
-std::vector<double> segments_by_hand(geo::Point2 A, geo::Point2 B, geo::Point2 C, geo::Point2 D,
-                                     const Nudge& nudge, const std::array<int, 5>& rounded) {
-  const geo::Vec2 AB = B - A, CD = D - C, AC = C - A;
-  const double ab_cd = nudge.at(rounded[0], AB.x * CD.y - AB.y * CD.x);
-  const double ac_cd = nudge.at(rounded[1], AC.x * CD.y - AC.y * CD.x);
-  const double ac_ab = nudge.at(rounded[2], AC.x * AB.y - AC.y * AB.x);
-  const double t_ab = nudge.at(rounded[3], ac_cd / ab_cd);
-  const double t_cd = nudge.at(rounded[4], ac_ab / ab_cd);
-  return {t_ab, t_cd, A.x + t_ab * AB.x, A.y + t_ab * AB.y};
-}
-
-}  // namespace epure::kinds::detail
 
 namespace epure::kinds {
 
@@ -66,36 +47,80 @@ Vec2 small_direction(Rng& rng) {
   }
 }
 
-// Exact forms from the rational data.
+// The exact forms the key's figure shows.
 struct Exact {
-  std::optional<exact::Surd> ab_cd, ac_cd, ac_ab, t_ab, t_cd, x, y;  // (x, y): the lines' crossing
+  std::optional<exact::Surd> t_ab, t_cd, x, y;  // (x, y): the lines' crossing
 };
 
-Exact exact_forms(const Data& d) {
-  Exact e;
-  const std::optional<exact::Rational> r[8] = {rational_of(d.A.x), rational_of(d.A.y), rational_of(d.B.x),
-                                               rational_of(d.B.y), rational_of(d.C.x), rational_of(d.C.y),
-                                               rational_of(d.D.x), rational_of(d.D.y)};
-  for (const auto& x : r)
-    if (!x) return e;
-  try {
-    const exact::Rational abx = *r[2] - *r[0], aby = *r[3] - *r[1], cdx = *r[6] - *r[4],
-                          cdy = *r[7] - *r[5], acx = *r[4] - *r[0], acy = *r[5] - *r[1];
-    const exact::Rational ab_cd = abx * cdy - aby * cdx, ac_cd = acx * cdy - acy * cdx,
-                          ac_ab = acx * aby - acy * abx;
-    e.ab_cd = exact::Surd(ab_cd);
-    e.ac_cd = exact::Surd(ac_cd);
-    e.ac_ab = exact::Surd(ac_ab);
-    if (ab_cd.is_zero()) return e;
-    const exact::Rational t_ab = ac_cd / ab_cd, t_cd = ac_ab / ab_cd;
-    e.t_ab = exact::Surd(t_ab);
-    e.t_cd = exact::Surd(t_cd);
-    e.x = exact::Surd(*r[0] + t_ab * abx);
-    e.y = exact::Surd(*r[1] + t_ab * aby);
-  } catch (const exact::ExactOverflow&) {
+using method::AnswerType;
+constexpr std::string_view kReasons[] = {"outside", "parallel", "collinear"};
+
+// AB∧CD below this fraction of ‖AB‖‖CD‖ is zero: grid data make it exactly zero or at least
+// 1e-2 of the product, so the cut-off only absorbs the binary rounding of decimal data.
+constexpr double kParallelSine = 1e-9;
+
+// The course's exercise 2, written once (method.h).
+struct SegmentsMethod {
+  using Data = kinds::Data;
+  static constexpr std::string_view kName = "segments";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    v("A", d.A);
+    v("B", d.B);
+    v("C", d.C);
+    v("D", d.D);
   }
-  return e;
-}
+
+  static constexpr method::QuestionDecl kQuestions[] = {{"intersects", AnswerType::boolean},
+                                                        {"t_ab", AnswerType::number},
+                                                        {"t_cd", AnswerType::number},
+                                                        {"I", AnswerType::point},
+                                                        {"reason", AnswerType::choice, 1, kReasons}};
+
+  static constexpr std::string_view kMistakes[] = {"t_swapped", "cross_sign"};
+
+  // The student's hand method, in the course's order: AB∧CD (zero: parallel, and collinear when
+  // AC∧AB is zero too), AC∧CD, AC∧AB, then t_ab and t_cd by division, then I = A + t_ab·AB.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    using method::magnitude;
+    const auto A = m.in(d.A), B = m.in(d.B), C = m.in(d.C), D = m.in(d.D);
+    const auto zero = m.in(0.0), one = m.in(1.0), sine = m.in(kParallelSine);
+    const auto AB = m.note("AB", B - A), CD = m.note("CD", D - C), AC = m.note("AC", C - A);
+    const auto ab_cd = m.round("ab_cd", cross(AB, CD));
+    const auto ac_cd = m.round("ac_cd", m.mistake("cross_sign", cross(AC, CD), cross(CD, AC)));
+    const auto ac_ab = m.round("ac_ab", m.mistake("cross_sign", cross(AC, AB), cross(AB, AC)));
+    const auto parallel = less(magnitude(ab_cd), sine * norm(AB) * norm(CD));
+    if (parallel) {
+      const auto collinear = less(magnitude(ac_ab), sine * norm(AB) * (norm(AC) + one));
+      m.boolean("intersects", method::Cond{false, parallel.deps});
+      m.choice("reason", method::pick(collinear, "collinear", "parallel"));
+      return;
+    }
+    const auto t_ab = m.number("t_ab", m.round("t_ab", m.mistake("t_swapped", ac_cd / ab_cd, ac_ab / ab_cd)));
+    const auto t_cd = m.number("t_cd", m.round("t_cd", m.mistake("t_swapped", ac_ab / ab_cd, ac_cd / ab_cd)));
+    const auto P = m.note("P", A + t_ab * AB);
+    auto on_segment = [&](const auto& t) { return !less(t, zero) && !less(one, t); };
+    const auto intersects = m.boolean("intersects", on_segment(t_ab) && on_segment(t_cd));
+    if (!intersects) {
+      m.choice("reason", method::Word{"outside", intersects.deps});
+      return;
+    }
+    m.point("I", P);
+  }
+
+  static CoreAnswers core(const Data& d) {
+    const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
+    CoreAnswers a;
+    a.boolean("intersects", s.intersects());
+    if (s.t_ab) a.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
+    if (s.I) a.point("I", *s.I);
+    if (!s.intersects()) a.choice("reason", geo::to_string(s.relation));
+    return a;
+  }
+};
 
 // A parameter on a tick of the key's figure: "t_{ab} = 0.25" when exact within the decimals,
 // "t_{ab} ≈ 0.43" otherwise.
@@ -105,9 +130,8 @@ std::string parameter_label(const ExerciseContext& ctx, std::string_view name, d
   return fmt::format("{} ≈ {}", name, ctx.numbers.rounded(t, ctx.decimals));
 }
 
-class Segments final : public ExerciseKind {
+class Segments final : public MethodKind<SegmentsMethod> {
  public:
-  std::string_view name() const override { return "segments"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     // collinear is available on request: the course only names it in passing
     return {{"intersects", 2}, {"outside", 1}, {"parallel", 1}, {"collinear", 0}};
@@ -123,14 +147,7 @@ class Segments final : public ExerciseKind {
             {"min_angle_deg", 20.0}, {"min_length", 3.0},      {"parallel_gap", 1.0},
             {"min_separation", 1.0}, {"outside_clearance", 1.5}};
   }
-  std::vector<std::string> fields() const override { return {"intersects", "reason", "t_ab", "t_cd", "I"}; }
-  std::vector<SheetField> sheet_fields() const override {
-    return {{"intersects", render::AnswerField::Kind::boolean, {}},
-            {"t_ab", render::AnswerField::Kind::number, {}},
-            {"t_cd", render::AnswerField::Kind::number, {}},
-            {"I", render::AnswerField::Kind::point, {}},
-            {"reason", render::AnswerField::Kind::choice, {"outside", "parallel", "collinear"}}};
-  }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     SegmentRelation wanted;
@@ -237,56 +254,27 @@ class Segments final : public ExerciseKind {
     };
     const Data d = draw_until(20000, fmt::format("segments, branch {} (parameters, angle, lengths, gap, separation)", ctx.branch),
                               draw);
-    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
-  static std::string instance_text(const Data& d) {
-    return InstanceWriter("segments").point("A", d.A).point("B", d.B).point("C", d.C).point("D", d.D).finish();
-  }
-
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
     const bool crossing = s.t_ab.has_value();
 
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    const Exact e = exact_forms(d);
-    Questions q(ctx);
-    q.boolean("intersects", s.intersects());
-    if (!s.intersects()) q.choice("reason", geo::to_string(s.relation), {"outside", "parallel", "collinear"});
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
+    Exact e;
     Point2 P{};  // where the lines cross
     if (crossing) {
-      P = s.I ? *s.I : d.A + *s.t_ab * s.AB;
-      // The student rounds an intermediate only when it does not stop within the asked decimals.
-      std::array<int, 5> rounded{};
-      int count = 0;
-      const std::optional<exact::Surd>* steps[5] = {&e.ab_cd, &e.ac_cd, &e.ac_ab, &e.t_ab, &e.t_cd};
-      for (int k = 0; k < 5; ++k) rounded[k] = terminates_within(*steps[k], ctx.decimals) ? -1 : count++;
-      const StudentMethod method = [&](const Nudge& nudge) {
-        return detail::segments_by_hand(d.A, d.B, d.C, d.D, nudge, rounded);
-      };
-      const auto tol = derive_abs_tolerances(method, count, ctx.decimals);
-      // the method is the key's: with nothing rounded it must give the core's answers
-      const auto by_hand = method(Nudge{});
-      const double core[4] = {*s.t_ab, *s.t_cd, P.x, P.y};
-      for (int i = 0; i < 4; ++i)
-        if (!(std::abs(by_hand[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
-          throw std::logic_error(fmt::format("segments: the hand method disagrees with the core ({})", inst.instance));
-      q.number("t_ab", *s.t_ab, tol[0], e.t_ab);
-      q.number("t_cd", *s.t_cd, tol[1], e.t_cd);
-      if (s.I) q.point("I", *s.I, tol[2], tol[3], e.x, e.y);
+      e = {key.exact("t_ab"), key.exact("t_cd"), key.exact_x("P"), key.exact_y("P")};
+      P = s.I ? *s.I : key.point("P");
     }
-    inst.questions = q.take_questions();
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
                                 {"B", N.point(d.B.x, d.B.y)},

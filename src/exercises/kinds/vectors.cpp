@@ -14,29 +14,9 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "exercises/kinds/registry.h"
 #include "geometry/vectors.h"
-
-namespace epure::kinds::detail {
-
-// The student's hand method, in the course's order: u·v, u∧v, ‖u‖, ‖v‖, then cos and sin by
-// dividing by ‖u‖‖v‖, then θ = atan2(sin, cos). rounded[k] is the nudge index of the k-th of
-// those six intermediates (−1 when the student writes it exactly and does not round it).
-// Returns {dot, cross, norm_u, norm_v, cos, sin, angle_deg}. Exposed for the tests.
-std::vector<double> vectors_by_hand(geo::Vec2 u, geo::Vec2 v, const Nudge& nudge,
-                                    const std::array<int, 6>& rounded) {
-  const double dot = nudge.at(rounded[0], u.x * v.x + u.y * v.y);
-  const double cross = nudge.at(rounded[1], u.x * v.y - u.y * v.x);
-  const double norm_u = nudge.at(rounded[2], std::sqrt(u.x * u.x + u.y * u.y));
-  const double norm_v = nudge.at(rounded[3], std::sqrt(v.x * v.x + v.y * v.y));
-  const double cos = nudge.at(rounded[4], dot / (norm_u * norm_v));
-  const double sin = nudge.at(rounded[5], cross / (norm_u * norm_v));
-  const double angle = std::atan2(sin, cos) * (180.0 / std::numbers::pi);
-  return {dot, cross, norm_u, norm_v, cos, sin, angle};
-}
-
-}  // namespace epure::kinds::detail
 
 namespace epure::kinds {
 
@@ -86,47 +66,60 @@ std::optional<Vec2> perpendicular_on_grid(Vec2 u, int per_unit, double max_compo
 
 bool is_whole(double x) { return std::abs(x - std::nearbyint(x)) <= 1e-9 * std::max(1.0, std::abs(x)); }
 
-// Exact forms from the rational data: a second computation of every answer that has one.
-struct Exact {
-  std::optional<exact::Surd> dot, cross, norm_u, norm_v, cos, sin, angle;
-};
-
-Exact exact_forms(const Data& d) {
-  Exact e;
-  const auto ux = rational_of(d.u.x), uy = rational_of(d.u.y), vx = rational_of(d.v.x),
-             vy = rational_of(d.v.y);
-  if (!ux || !uy || !vx || !vy) return e;
-  try {
-    const exact::Rational dot = *ux * *vx + *uy * *vy, cross = *ux * *vy - *uy * *vx;
-    const exact::Rational nu2 = *ux * *ux + *uy * *uy, nv2 = *vx * *vx + *vy * *vy;
-    e.dot = exact::Surd(dot);
-    e.cross = exact::Surd(cross);
-    e.norm_u = exact::Surd::sqrt(nu2);
-    e.norm_v = exact::Surd::sqrt(nv2);
-    // u·v / (‖u‖‖v‖) = u·v·√(‖u‖²‖v‖²) / (‖u‖²‖v‖²), and likewise for u∧v
-    const exact::Rational nn = nu2 * nv2;
-    const exact::Surd root = exact::Surd::sqrt(nn);
-    e.cos = root * exact::Surd(dot / nn);
-    e.sin = root * exact::Surd(cross / nn);
-    // the angles whose degrees are whole: cos = 0, or |cos| = |sin|
-    const int turn = cross.sign();
-    if (dot.is_zero()) e.angle = exact::Surd(exact::Rational(90 * turn));
-    else if (dot == cross || dot == -cross)
-      e.angle = exact::Surd(exact::Rational((dot.sign() > 0 ? 45 : 135) * turn));
-  } catch (const exact::ExactOverflow&) {
-  } catch (const std::domain_error&) {
-  }
-  return e;
-}
-
 // A factor of a product as the key writes it: negative numbers in parentheses.
 std::string factor(const NumberStyle& n, double x) {
   return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x);
 }
 
-class Vectors final : public ExerciseKind {
+using method::AnswerType;
+
+// The course's preamble, written once (method.h).
+struct VectorsMethod {
+  using Data = kinds::Data;
+  static constexpr std::string_view kName = "vectors";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    v("u", d.u);
+    v("v", d.v);
+  }
+
+  static constexpr method::QuestionDecl kQuestions[] = {
+      {"dot", AnswerType::number},    {"cross", AnswerType::number}, {"norm_u", AnswerType::number},
+      {"norm_v", AnswerType::number}, {"cos", AnswerType::number},   {"sin", AnswerType::number},
+      {"angle_deg", AnswerType::number}};
+
+  static constexpr std::string_view kMistakes[] = {"norm_not_rooted", "angle_unsigned", "cross_sign", "angle_radians"};
+
+  // The student's hand method, in the course's order: u·v, u∧v, ‖u‖, ‖v‖, then cos and sin by
+  // dividing by ‖u‖‖v‖, then θ = atan2(sin, cos), each rounded unless it stops within the
+  // asked decimals.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    const auto u = m.in(d.u), v = m.in(d.v);
+    const auto uv = m.number("dot", m.round("dot", dot(u, v)));
+    const auto uxv = m.number("cross", m.round("cross", m.mistake("cross_sign", cross(u, v), cross(v, u))));
+    const auto nu = m.number("norm_u", m.round("norm_u", m.mistake("norm_not_rooted", norm(u), norm2(u))));
+    const auto nv = m.number("norm_v", m.round("norm_v", m.mistake("norm_not_rooted", norm(v), norm2(v))));
+    const auto nn = nu * nv;
+    const auto c = m.number("cos", m.round("cos", uv / nn));
+    const auto s = m.number("sin", m.round("sin", uxv / nn));
+    const auto theta = method::atan2_degrees(s, c);
+    const auto radians = theta * m.in(std::numbers::pi / 180);
+    m.number("angle_deg", m.mistake("angle_radians", m.mistake("angle_unsigned", theta, method::magnitude(theta)), radians));
+  }
+
+  static CoreAnswers core(const Data& d) {
+    const auto r = geo::compare_vectors(d.u, d.v);
+    CoreAnswers a;
+    a.number("dot", r.dot).number("cross", r.cross).number("norm_u", r.norm_u).number("norm_v", r.norm_v);
+    a.number("cos", r.cos).number("sin", r.sin).number("angle_deg", r.angle_deg);
+    return a;
+  }
+};
+
+class Vectors final : public MethodKind<VectorsMethod> {
  public:
-  std::string_view name() const override { return "vectors"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"acute", 2}, {"right", 1}, {"obtuse", 2}};
   }
@@ -137,10 +130,6 @@ class Vectors final : public ExerciseKind {
     return {{"min_angle_deg", 20.0}, {"right_margin_deg", 15.0}, {"min_norm", 2.0},
             {"max_component", 6.0}, {"min_tip_gap", 1.5}};
   }
-  std::vector<std::string> fields() const override {
-    return {"dot", "cross", "norm_u", "norm_v", "cos", "sin", "angle_deg"};
-  }
-
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     if (ctx.branch != "acute" && ctx.branch != "right" && ctx.branch != "obtuse")
       throw std::invalid_argument(fmt::format("vectors: no branch '{}'", ctx.branch));
@@ -193,55 +182,20 @@ class Vectors final : public ExerciseKind {
       if (!ok) return std::nullopt;
       return x;
     });
-    if (auto taken = already_taken(ctx, instance_text(d))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
  private:
-  static std::string instance_text(const Data& d) {
-    return InstanceWriter("vectors").vec("u", d.u).vec("v", d.v).finish();
-  }
-
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto r = geo::compare_vectors(d.u, d.v);
 
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    const Exact e = exact_forms(d);
-
-    // The student rounds an intermediate only when it does not stop within the asked decimals.
-    std::array<int, 6> rounded{};
-    int count = 0;
-    const std::optional<exact::Surd>* steps[6] = {&e.dot, &e.cross, &e.norm_u, &e.norm_v, &e.cos, &e.sin};
-    for (int k = 0; k < 6; ++k) rounded[k] = terminates_within(*steps[k], ctx.decimals) ? -1 : count++;
-    const StudentMethod method = [&](const Nudge& nudge) {
-      return detail::vectors_by_hand(d.u, d.v, nudge, rounded);
-    };
-    const auto tol = derive_abs_tolerances(method, count, ctx.decimals);
-    // the method is the key's: with nothing rounded it must give the core's answers
-    const auto by_hand = method(Nudge{});
-    const double core[7] = {r.dot, r.cross, r.norm_u, r.norm_v, r.cos, r.sin, r.angle_deg};
-    for (int i = 0; i < 7; ++i)
-      if (!(std::abs(by_hand[i] - core[i]) <= 1e-9 * std::max(1.0, std::abs(core[i]))))
-        throw std::logic_error(fmt::format("vectors: the hand method disagrees with the core ({})", inst.instance));
-
-    Questions q(ctx);
-    q.number("dot", r.dot, tol[0], e.dot);
-    q.number("cross", r.cross, tol[1], e.cross);
-    q.number("norm_u", r.norm_u, tol[2], e.norm_u);
-    q.number("norm_v", r.norm_v, tol[3], e.norm_v);
-    q.number("cos", r.cos, tol[4], e.cos);
-    q.number("sin", r.sin, tol[5], e.sin);
-    q.number("angle_deg", r.angle_deg, tol[6], e.angle);
-    inst.questions = q.take_questions();
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
 
     const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y)}, {"v", N.point(d.v.x, d.v.y)}};
     // ---- the sheet
@@ -264,13 +218,13 @@ class Vectors final : public ExerciseKind {
     inst.key.add(render::Paragraph{T.format("vectors.step.cross", cross_vars)});
     inst.key.add(render::Paragraph{T.format(
         "vectors.step.norms", {{"nu2", N.datum(geo::norm2(d.u))},
-                               {"norm_u", equals_value(ctx, r.norm_u, e.norm_u)},
+                               {"norm_u", equals_value(ctx, r.norm_u, key.exact("norm_u"))},
                                {"nv2", N.datum(geo::norm2(d.v))},
-                               {"norm_v", equals_value(ctx, r.norm_v, e.norm_v)}})});
-    inst.key.add(render::Paragraph{T.format("vectors.step.cos", {{"cos", equals_value(ctx, r.cos, e.cos)}})});
-    inst.key.add(render::Paragraph{T.format("vectors.step.sin", {{"sin", equals_value(ctx, r.sin, e.sin)}})});
+                               {"norm_v", equals_value(ctx, r.norm_v, key.exact("norm_v"))}})});
+    inst.key.add(render::Paragraph{T.format("vectors.step.cos", {{"cos", equals_value(ctx, r.cos, key.exact("cos"))}})});
+    inst.key.add(render::Paragraph{T.format("vectors.step.sin", {{"sin", equals_value(ctx, r.sin, key.exact("sin"))}})});
     inst.key.add(render::Paragraph{
-        T.format("vectors.step.angle", {{"angle", equals_value(ctx, r.angle_deg, e.angle)}})});
+        T.format("vectors.step.angle", {{"angle", equals_value(ctx, r.angle_deg, key.exact("angle_deg"))}})});
     inst.key.add(render::Paragraph{T.get(fmt::format("vectors.step.{}", ctx.branch))});
     inst.key.add(render::Paragraph{T.get(r.cross > 0 ? "vectors.step.ccw" : "vectors.step.cw")});
     inst.key.add(render::Figure{key_scene(d, r, ctx), 0.5});

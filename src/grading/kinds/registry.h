@@ -4,11 +4,6 @@
 
 namespace epure::grading::kinds {
 
-const KindGrader& vectors_grader();
-const KindGrader& projection_grader();
-const KindGrader& segments_grader();
-const KindGrader& ray_circle_grader();
-const KindGrader& ray_square_grader();
 const KindGrader& ray_ellipse_grader();
 const KindGrader& ray_rectangle_grader();
 

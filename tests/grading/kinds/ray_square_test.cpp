@@ -26,7 +26,7 @@ TEST_CASE("ray_square: candidate sides from the wrong half-planes") {
   const auto key = exercise(kInstance, kFields);
   SUBCASE("the opposite side") { CHECK(mark(key, {{"faces", "-x"}})["faces"].mistake == "faces_wrong_half_planes"); }
   SUBCASE("the sides whose inner half-plane holds A") {
-    CHECK(mark(key, {{"faces", "-x +y -y"}})["faces"].mistake == "faces_wrong_half_planes");
+    CHECK(mark(key, {{"faces", "-x +y -y"}})["faces"].mistake == "faces_inner_half_planes");
   }
   SUBCASE("read from the direction") { CHECK(mark(key, {{"faces", "+x +y"}})["faces"].mistake == "faces_from_direction"); }
 }

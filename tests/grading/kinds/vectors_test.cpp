@@ -15,7 +15,7 @@ const std::vector<std::string> kFields = {"dot", "cross", "norm_u", "norm_v", "c
 TEST_CASE("vectors: a sign error in the cross product, and what follows from it") {
   const auto key = exercise(R"({"kind":"vectors","u":[3,4],"v":[1,2]})", kFields);
   const auto m = mark(key, {{"dot", "11"}, {"cross", "-2"}, {"norm_u", "5"}, {"norm_v", "2.24"}, {"cos", "0.98"},
-                            {"sin", "-0.18"}, {"angle_deg", "-10.3"}});
+                            {"sin", "-0.18"}, {"angle_deg", "-10.41"}});
   CHECK(m["cross"].mistake == "cross_sign");
   CHECK(m["sin"].verdict == Verdict::follow_through);
   CHECK(m["angle_deg"].verdict == Verdict::follow_through);

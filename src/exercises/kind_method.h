@@ -1,0 +1,176 @@
+#pragma once
+// The generic half of an exercise kind written as one method (method.h). A kind declares, once:
+//
+//   struct Data { … };                                   // the instance
+//   static constexpr std::string_view kName = "…";
+//   template <class V, class D> static void schema(V& v, D& d) { v("A", d.A); … }
+//   static constexpr method::QuestionDecl kQuestions[] = {…};   // the sheet's questions, in order
+//   static constexpr std::string_view kMistakes[] = {…};        // codes its method declares
+//   template <class M> static void method(M& m, const Data& d);  // the course's method
+//   static method::CoreAnswers core(const Data& d);              // the geometry core's answers
+//
+// and MethodKind<Kind> derives from it everything that used to be written again elsewhere: the
+// instance as a solve input (key.json) and read back (grading), the sheet's answer fields and
+// the question ids, the key's expected values (the core's, checked against the method's own
+// double evaluation), exact forms, tolerances, and the student's evaluations for grading.
+#include <nlohmann/json.hpp>
+
+#include <any>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exercises/kind_support.h"
+#include "exercises/method.h"
+
+namespace epure::kinds {
+
+// A pair of numbers that is not a point: an ellipse's radii [a, b], a rectangle's half sizes.
+struct Pair {
+  double a = 0, b = 0;
+};
+
+// The schema's visitor that writes an instance as a solve input.
+class SchemaWriter {
+ public:
+  explicit SchemaWriter(std::string_view kind) : w_(kind) {}
+  void operator()(std::string_view field, double x) { w_.number(field, x); }
+  void operator()(std::string_view field, geo::Point2 p) { w_.point(field, p); }
+  void operator()(std::string_view field, geo::Vec2 v) { w_.vec(field, v); }
+  void operator()(std::string_view field, Pair p) { w_.pair(field, p.a, p.b); }
+  std::string finish() { return w_.finish(); }
+
+ private:
+  InstanceWriter w_;
+};
+
+// The schema's visitor that reads an instance back: throws std::runtime_error naming the field,
+// as the solve contract would ("field 'r': expected a number").
+class SchemaReader {
+ public:
+  explicit SchemaReader(const nlohmann::json& j) : j_(j) {}
+  void operator()(std::string_view field, double& x);
+  void operator()(std::string_view field, geo::Point2& p);
+  void operator()(std::string_view field, geo::Vec2& v);
+  void operator()(std::string_view field, Pair& p);
+
+ private:
+  std::pair<double, double> pair(std::string_view field);
+  const nlohmann::json& j_;
+};
+
+// The geometry core's answers for an instance, in the order of the kind's questions: what the
+// key expects (method.h's own evaluation is checked against it).
+class CoreAnswers {
+ public:
+  CoreAnswers& number(std::string_view field, double x);
+  CoreAnswers& point(std::string_view field, geo::Point2 p);
+  CoreAnswers& vec(std::string_view field, geo::Vec2 v) { return point(field, {v.x, v.y}); }
+  CoreAnswers& boolean(std::string_view field, bool b);
+  CoreAnswers& choice(std::string_view field, std::string_view word);
+  CoreAnswers& faces(std::string_view field, method::FaceMask bits);
+  const std::vector<method::Recorded<double>>& answers() const { return answers_; }
+  const method::Recorded<double>* find(std::string_view field) const;
+
+ private:
+  std::vector<method::Recorded<double>> answers_;
+};
+
+// The key's side of an instance: the method's exact run (worked steps and exact forms) and the
+// questions asked, with the core's values and the derived tolerances.
+struct KeySolution {
+  method::Run<method::Exact> run;
+  CoreAnswers core;
+  Questions questions;
+  // A step's (or an answer's) value and exact form, as the key's text shows them: the core's
+  // value for an answer the core gives, the method's for an intermediate step.
+  double value(std::string_view id) const;
+  std::optional<exact::Surd> exact(std::string_view id) const;
+  geo::Point2 point(std::string_view id) const;
+  std::optional<exact::Surd> exact_x(std::string_view id) const;
+  std::optional<exact::Surd> exact_y(std::string_view id) const;
+};
+
+namespace detail {
+
+// The checks and the questions, shared by every kind (kind_method.cpp).
+void check_against_core(std::string_view kind, const method::Run<method::Exact>& run, const CoreAnswers& core);
+Questions make_questions(const ExerciseContext& ctx, std::span<const method::QuestionDecl> decls,
+                         const method::Run<method::Exact>& run, const method::Run<method::Dual>& dual,
+                         const CoreAnswers& core);
+std::vector<SheetField> sheet_fields_of(std::span<const method::QuestionDecl> decls);
+std::vector<std::string> fields_of(std::span<const method::QuestionDecl> decls);
+
+}  // namespace detail
+
+template <class Kind>
+class MethodKind : public ExerciseKind {
+ public:
+  using Data = typename Kind::Data;
+
+  std::string_view name() const override { return Kind::kName; }
+  std::vector<std::string> fields() const override { return detail::fields_of(Kind::kQuestions); }
+  std::vector<SheetField> sheet_fields() const override { return detail::sheet_fields_of(Kind::kQuestions); }
+  std::span<const method::QuestionDecl> questions() const override { return Kind::kQuestions; }
+  std::span<const std::string_view> mistakes() const override { return Kind::kMistakes; }
+  std::span<const std::string_view> roads() const override {
+    if constexpr (requires { Kind::kRoads; }) return Kind::kRoads;
+    else return {};
+  }
+
+  std::any read_instance(const nlohmann::json& instance) const override { return read(instance); }
+
+  std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data, const method::GivenAnswers* given,
+                                                         std::string_view mistake, int decimals) const override {
+    method::Run<method::Traced> run({Kind::kQuestions, decimals, mistake, given});
+    Kind::method(run, std::any_cast<const Data&>(data));
+    return run.answers();
+  }
+
+  static std::string write(const Data& d) {
+    SchemaWriter w(Kind::kName);
+    Kind::schema(w, d);
+    return w.finish();
+  }
+  static Data read(const nlohmann::json& instance) {
+    Data d{};
+    SchemaReader r(instance);
+    Kind::schema(r, d);
+    return d;
+  }
+
+  // The method's exact run alone (cheap enough for a draw's constraints: "r² − d² a square").
+  static method::Run<method::Exact> exact_run(const Data& d, int decimals = 2) {
+    method::Run<method::Exact> exact({Kind::kQuestions, decimals});
+    Kind::method(exact, d);
+    return exact;
+  }
+
+  // Runs the method on the key's data: exact and dual evaluations, checked against the core.
+  static KeySolution solve(const Data& d, const ExerciseContext& ctx) {
+    method::Run<method::Exact> exact({Kind::kQuestions, ctx.decimals});
+    Kind::method(exact, d);
+    method::Run<method::Dual> dual({Kind::kQuestions, ctx.decimals});
+    Kind::method(dual, d);
+    const CoreAnswers core = Kind::core(d);
+    detail::check_against_core(Kind::kName, exact, core);
+    Questions q = detail::make_questions(ctx, Kind::kQuestions, exact, dual, core);
+    return KeySolution{std::move(exact), core, std::move(q)};
+  }
+
+  // The identity of a drawn instance and, unless an earlier sheet holds it, its key solution
+  // and the common parts of the ExerciseInstance (the kind adds the sections).
+  static ExerciseInstance begin_instance(const Data& d, const ExerciseContext& ctx) {
+    ExerciseInstance inst;
+    inst.n = ctx.n;
+    inst.kind = std::string(Kind::kName);
+    inst.branch = ctx.branch;
+    inst.instance = write(d);
+    inst.solution = solve_instance(inst.instance);
+    inst.fingerprint = fingerprint(inst.instance);
+    return inst;
+  }
+};
+
+}  // namespace epure::kinds

@@ -1,0 +1,538 @@
+#pragma once
+// One method, evaluated many ways (STYLE.md). A kind writes the course's method once, as a
+// template over an evaluator `M`, the way a student works it by hand:
+//
+//   template <class M> static void method(M& m, const Data& d) {
+//     const auto AC = m.in(d.C) - m.in(d.A);
+//     const auto uh = m.round("u_hat", m.mistake("direction_not_unit", u / norm(u), u));
+//     const auto t_proj = m.number("t_proj", m.round("t_proj", dot(uh, AC)));
+//     …
+//   }
+//
+// and each evaluator reads it its own way:
+// - Run<Exact>: every step in doubles and, where the data are rational, in exact form
+//   (rationals and a + b√c): the key's exact answers and its worked steps (a recorder);
+// - Run<Dual>: forward-mode derivatives of each answer with respect to every intermediate the
+//   student rounds (`round`): how far an answer moves when a student rounds on the way, hence
+//   its tolerance;
+// - Run<Traced>: the student's own values substituted for their answers (`number`, `point`,
+//   `boolean`, …), each value carrying the answers it was computed from: follow-through credit
+//   comes from the data flow, never from a list of names;
+// - any of them with one named mistake switched on (`mistake(code, right, wrong)` takes the
+//   wrong road): the values that mistake gives, for grading, feedback and platform exports.
+//
+// The plain double evaluation (the double half of Exact) is checked against the geometry core
+// on every instance the generator issues: a method that disagrees with the core is a bug.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "exercises/exact.h"
+#include "geometry/vec.h"
+
+namespace epure::method {
+
+// Bit i: the kind's i-th declared question (kQuestions). A value's deps are the answers it was
+// computed from.
+using Deps = std::uint32_t;
+
+// Sets of faces with the contract's bits: +x +y +z −x −y −z are bits 0 … 5.
+using FaceMask = std::uint8_t;
+
+// ---------------------------------------------------------------------------------------------
+// Number types
+
+// The double value and, when every datum it comes from is rational and the arithmetic stays
+// within exact.h's range and a single radicand, its exact form.
+struct Exact {
+  double v = 0;
+  std::optional<exact::Surd> e;
+};
+
+// The value and its derivatives with respect to the rounded intermediates, slot by slot.
+inline constexpr int kMaxRounded = 24;
+struct Dual {
+  double v = 0;
+  std::array<double, kMaxRounded> d{};
+};
+
+// The value and the answers it was computed from.
+struct Traced {
+  double v = 0;
+  Deps deps = 0;
+};
+
+inline double value(double x) { return x; }
+inline double value(const Exact& x) { return x.v; }
+inline double value(const Dual& x) { return x.v; }
+inline double value(const Traced& x) { return x.v; }
+inline Deps deps_of(double) { return 0; }
+inline Deps deps_of(const Exact&) { return 0; }
+inline Deps deps_of(const Dual&) { return 0; }
+inline Deps deps_of(const Traced& x) { return x.deps; }
+
+namespace detail {
+
+// Beyond this radicand (numerator × denominator under the root) an exact form is neither short
+// nor cheap: Surd reduces √c by trial division. Such values are given in decimals only.
+inline constexpr std::int64_t kMaxRadicand = 100'000'000;
+
+template <class F>
+std::optional<exact::Surd> attempt(F&& f) {
+  try {
+    return f();
+  } catch (const exact::ExactOverflow&) {
+  } catch (const std::domain_error&) {
+  }
+  return std::nullopt;
+}
+
+template <class F>
+std::optional<exact::Surd> both(const Exact& x, const Exact& y, F&& f) {
+  if (!x.e || !y.e) return std::nullopt;
+  return attempt([&] { return f(*x.e, *y.e); });
+}
+
+inline bool pure(const exact::Surd& x) { return x.a().is_zero() && !x.b().is_zero(); }
+
+// x·y; two pure surds of different radicands make a pure surd: b√c·b'√c' = bb'√(cc').
+inline exact::Surd multiply(const exact::Surd& x, const exact::Surd& y) {
+  if (pure(x) && pure(y) && x.c() != y.c()) {
+    if (x.c() > kMaxRadicand / y.c()) throw exact::ExactOverflow();
+    return exact::Surd(exact::Rational(0), x.b() * y.b(), x.c() * y.c());
+  }
+  return x * y;
+}
+
+// x / y for surds of one radicand: multiplied by y's conjugate, y·ȳ is rational; a pure surd
+// over another: b√c / b'√c' = (b / (b'c'))·√(cc').
+inline exact::Surd divide(const exact::Surd& x, const exact::Surd& y) {
+  if (y.is_rational()) return x / y.a();
+  if (pure(x) && pure(y) && x.c() != y.c()) {
+    if (x.c() > kMaxRadicand / y.c()) throw exact::ExactOverflow();
+    return exact::Surd(exact::Rational(0), x.b() / (y.b() * exact::Rational(y.c())), x.c() * y.c());
+  }
+  const exact::Surd conj(y.a(), -y.b(), y.c());
+  const exact::Surd den = y * conj;
+  return (x * conj) / den.a();
+}
+
+}  // namespace detail
+
+inline Exact operator+(const Exact& x, const Exact& y) {
+  return {x.v + y.v, detail::both(x, y, [](const auto& a, const auto& b) { return a + b; })};
+}
+inline Exact operator-(const Exact& x, const Exact& y) {
+  return {x.v - y.v, detail::both(x, y, [](const auto& a, const auto& b) { return a - b; })};
+}
+inline Exact operator*(const Exact& x, const Exact& y) {
+  return {x.v * y.v, detail::both(x, y, [](const auto& a, const auto& b) { return detail::multiply(a, b); })};
+}
+inline Exact operator/(const Exact& x, const Exact& y) {
+  return {x.v / y.v, detail::both(x, y, [](const auto& a, const auto& b) { return detail::divide(a, b); })};
+}
+inline Exact operator-(const Exact& x) {
+  std::optional<exact::Surd> e;
+  if (x.e) e = -*x.e;
+  return {-x.v, e};
+}
+inline Exact sqrt(const Exact& x) {
+  std::optional<exact::Surd> e;
+  if (x.e && x.e->is_rational() && x.e->a().sign() >= 0)
+    e = detail::attempt([&] {
+      const exact::Rational r = x.e->a();
+      if (r.num() > detail::kMaxRadicand / r.den()) throw exact::ExactOverflow();
+      return exact::Surd::sqrt(r);
+    });
+  return {std::sqrt(x.v), e};
+}
+
+inline Dual operator+(const Dual& x, const Dual& y) {
+  Dual r{x.v + y.v};
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = x.d[i] + y.d[i];
+  return r;
+}
+inline Dual operator-(const Dual& x, const Dual& y) {
+  Dual r{x.v - y.v};
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = x.d[i] - y.d[i];
+  return r;
+}
+inline Dual operator*(const Dual& x, const Dual& y) {
+  Dual r{x.v * y.v};
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = x.d[i] * y.v + x.v * y.d[i];
+  return r;
+}
+inline Dual operator/(const Dual& x, const Dual& y) {
+  Dual r{x.v / y.v};
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = (x.d[i] * y.v - x.v * y.d[i]) / (y.v * y.v);
+  return r;
+}
+inline Dual operator-(const Dual& x) {
+  Dual r{-x.v};
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = -x.d[i];
+  return r;
+}
+inline Dual sqrt(const Dual& x) {
+  Dual r{std::sqrt(x.v)};
+  // d√x = dx / (2√x); at 0 the method has left the well-posed region (the generator keeps away)
+  const double k = r.v > 0 ? 0.5 / r.v : 0.0;
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = x.d[i] * k;
+  return r;
+}
+
+inline Traced operator+(Traced x, Traced y) { return {x.v + y.v, x.deps | y.deps}; }
+inline Traced operator-(Traced x, Traced y) { return {x.v - y.v, x.deps | y.deps}; }
+inline Traced operator*(Traced x, Traced y) { return {x.v * y.v, x.deps | y.deps}; }
+inline Traced operator/(Traced x, Traced y) { return {x.v / y.v, x.deps | y.deps}; }
+inline Traced operator-(Traced x) { return {-x.v, x.deps}; }
+inline Traced sqrt(Traced x) { return {std::sqrt(x.v), x.deps}; }
+
+inline double sqrt(double x) { return std::sqrt(x); }
+
+// The angle of (c, s) in degrees, in (−180, 180]. Exact where the angle is a multiple of 45°
+// (the only ones a hand computation gives in whole degrees).
+inline double atan2_degrees(double s, double c) { return std::atan2(s, c) * (180.0 / std::numbers::pi); }
+inline Traced atan2_degrees(Traced s, Traced c) { return {atan2_degrees(s.v, c.v), s.deps | c.deps}; }
+inline Dual atan2_degrees(const Dual& s, const Dual& c) {
+  Dual r{atan2_degrees(s.v, c.v)};
+  const double k = (180.0 / std::numbers::pi) / (s.v * s.v + c.v * c.v);
+  for (int i = 0; i < kMaxRounded; ++i) r.d[i] = k * (c.v * s.d[i] - s.v * c.d[i]);
+  return r;
+}
+namespace detail {
+inline bool is_zero(const exact::Surd& x) { return x.a().is_zero() && x.b().is_zero(); }
+inline bool same(const exact::Surd& x, const exact::Surd& y) {
+  return x.a() == y.a() && x.b() == y.b() && (x.b().is_zero() || x.c() == y.c());
+}
+}  // namespace detail
+inline Exact atan2_degrees(const Exact& s, const Exact& c) {
+  Exact r{atan2_degrees(s.v, c.v), std::nullopt};
+  if (!s.e || !c.e) return r;
+  const int ss = (s.v > 0) - (s.v < 0), cs = (c.v > 0) - (c.v < 0);
+  auto whole = [](int deg) { return exact::Surd(exact::Rational(deg)); };
+  if (detail::is_zero(*s.e) && !detail::is_zero(*c.e)) r.e = whole(cs > 0 ? 0 : 180);
+  else if (detail::is_zero(*c.e) && !detail::is_zero(*s.e)) r.e = whole(90 * ss);
+  else if (detail::same(*s.e, *c.e) || detail::same(*s.e, -*c.e)) r.e = whole((cs > 0 ? 45 : 135) * ss);
+  return r;
+}
+
+// |x|, on the value's sign.
+template <class T>
+T magnitude(const T& x) {
+  return value(x) < 0 ? -x : x;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vectors over any number type
+
+template <class T>
+struct V2 {
+  T x, y;
+};
+template <class T> V2<T> operator+(const V2<T>& a, const V2<T>& b) { return {a.x + b.x, a.y + b.y}; }
+template <class T> V2<T> operator-(const V2<T>& a, const V2<T>& b) { return {a.x - b.x, a.y - b.y}; }
+template <class T> V2<T> operator-(const V2<T>& a) { return {-a.x, -a.y}; }
+template <class T> V2<T> operator*(const T& k, const V2<T>& a) { return {k * a.x, k * a.y}; }
+template <class T> V2<T> operator/(const V2<T>& a, const T& k) { return {a.x / k, a.y / k}; }
+template <class T> T dot(const V2<T>& a, const V2<T>& b) { return a.x * b.x + a.y * b.y; }
+template <class T> T cross(const V2<T>& a, const V2<T>& b) { return a.x * b.y - a.y * b.x; }
+template <class T> T norm2(const V2<T>& a) { return dot(a, a); }
+template <class T> T norm(const V2<T>& a) { return sqrt(dot(a, a)); }
+template <class T> geo::Point2 value(const V2<T>& a) { return {value(a.x), value(a.y)}; }
+
+// ---------------------------------------------------------------------------------------------
+// Decisions, words and face sets, with the answers they were read from
+
+struct Cond {
+  bool v = false;
+  Deps deps = 0;
+  explicit operator bool() const { return v; }
+};
+inline Cond operator!(Cond a) { return {!a.v, a.deps}; }
+inline Cond operator&&(Cond a, Cond b) { return {a.v && b.v, a.deps | b.deps}; }
+inline Cond operator||(Cond a, Cond b) { return {a.v || b.v, a.deps | b.deps}; }
+
+template <class T> Cond less(const T& a, const T& b) { return {value(a) < value(b), deps_of(a) | deps_of(b)}; }
+template <class T> Cond less_equal(const T& a, const T& b) { return {value(a) <= value(b), deps_of(a) | deps_of(b)}; }
+
+struct Word {
+  std::string_view w;  // a contract word, static storage
+  Deps deps = 0;
+};
+// `yes` when c holds, else `no`, read from what c was read from.
+inline Word pick(Cond c, std::string_view yes, std::string_view no) { return {c.v ? yes : no, c.deps}; }
+
+struct Faces {
+  FaceMask bits = 0;
+  Deps deps = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// What a method declares and what a run records
+
+enum class AnswerType : std::uint8_t { number, point, boolean, choice, faces };
+
+// One question a kind can ask: its field (a point's group: "I" for I.x and I.y), its type, its
+// default weight within the exercise, and for a choice the contract words offered.
+struct QuestionDecl {
+  std::string_view field;
+  AnswerType type;
+  double weight = 1;
+  std::span<const std::string_view> choices = {};
+};
+
+// What the student answered, readable answers only (grading's view of a row).
+class GivenAnswers {
+ public:
+  virtual ~GivenAnswers() = default;
+  virtual std::optional<double> number(std::string_view field) const = 0;  // "t", "I.x"
+  virtual std::optional<bool> boolean(std::string_view field) const = 0;
+  virtual std::optional<std::string_view> word(std::string_view field) const = 0;
+  virtual std::optional<FaceMask> faces(std::string_view field) const = 0;
+};
+
+// An answer (or a worked step) as a run records it.
+template <class Num>
+struct Recorded {
+  Recorded(std::string_view id_, AnswerType type_, Num x_ = {}, Num y_ = {}) : id(id_), type(type_), x(x_), y(y_) {}
+  std::string_view id;  // the field, or the step's name
+  AnswerType type = AnswerType::number;
+  Num x{}, y{};          // number: x; point: x and y
+  bool boolean = false;
+  std::string_view word;
+  FaceMask faces = 0;
+  Deps deps = 0;         // for a decision, word or face set
+};
+
+// "I" and 'x' → "I.x" without an allocation.
+struct CoordinateName {
+  char text[24];
+  std::size_t size;
+  operator std::string_view() const { return {text, size}; }
+};
+inline CoordinateName coordinate_name(std::string_view group, char axis) {
+  CoordinateName c{};
+  const std::size_t n = std::min(group.size(), sizeof c.text - 2);
+  std::copy_n(group.data(), n, c.text);
+  c.text[n] = '.';
+  c.text[n + 1] = axis;
+  c.size = n + 2;
+  return c;
+}
+
+// True when x is written exactly with `decimals` decimals: a student's rounding leaves it as is.
+inline bool on_decimal_grid(double x, int decimals) {
+  const double scaled = x * std::pow(10.0, decimals);
+  return std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
+}
+
+struct RunOptions {
+  RunOptions(std::span<const QuestionDecl> questions_, int decimals_, std::string_view mistake_ = {},
+             const GivenAnswers* given_ = nullptr)
+      : questions(questions_), decimals(decimals_), mistake(mistake_), given(given_) {}
+  std::span<const QuestionDecl> questions;  // the kind's declared questions (for deps bits)
+  int decimals = 2;                          // what the student rounds to (Dual)
+  std::string_view mistake;                  // the named mistake switched on, or none
+  const GivenAnswers* given = nullptr;       // the student's answers (Traced)
+};
+
+// One evaluation of a method. Answers and steps are recorded in the order the method meets them.
+template <class Num>
+class Run {
+ public:
+  using Number = Num;
+  using Vec = V2<Num>;
+
+  explicit Run(RunOptions options) : o_(options) {}
+
+  // ---- data
+  Num in(double x) const {
+    if constexpr (std::is_same_v<Num, Exact>) {
+      return {x, rational(x)};
+    } else {
+      return Num{x};
+    }
+  }
+  Vec in(geo::Point2 p) const { return {in(p.x), in(p.y)}; }
+  Vec in(geo::Vec2 v) const { return {in(v.x), in(v.y)}; }
+
+  // ---- steps: an intermediate the student writes down rounded (the tolerances follow its
+  // rounding), or one the key shows as it is
+  Num round(std::string_view id, Num x) {
+    if constexpr (std::is_same_v<Num, Dual>) x = seed(x);
+    note(id, x);
+    return x;
+  }
+  Vec round(std::string_view id, Vec p) {
+    if constexpr (std::is_same_v<Num, Dual>) p = {seed(p.x), seed(p.y)};
+    note(id, p);
+    return p;
+  }
+  Num note(std::string_view id, Num x) {
+    steps_.push_back(Recorded<Num>(id, AnswerType::number, x));
+    return x;
+  }
+  Vec note(std::string_view id, Vec p) {
+    steps_.push_back(Recorded<Num>(id, AnswerType::point, p.x, p.y));
+    return p;
+  }
+
+  // ---- answers: recorded; under Traced the student's own answer (when readable) is what the
+  // method goes on with, tagged as coming from that answer
+  Num number(std::string_view field, Num x) {
+    answers_.push_back(Recorded<Num>(field, AnswerType::number, x));
+    if constexpr (std::is_same_v<Num, Traced>) {
+      if (o_.given)
+        if (auto g = o_.given->number(field)) return {*g, bit(field)};
+    }
+    return x;
+  }
+  Vec point(std::string_view field, Vec p) {
+    answers_.push_back(Recorded<Num>(field, AnswerType::point, p.x, p.y));
+    if constexpr (std::is_same_v<Num, Traced>) {
+      if (o_.given) {
+        const auto gx = o_.given->number(coordinate_name(field, 'x'));
+        const auto gy = o_.given->number(coordinate_name(field, 'y'));
+        if (gx && gy) return {{*gx, bit(field)}, {*gy, bit(field)}};
+      }
+    }
+    return p;
+  }
+  Cond boolean(std::string_view field, Cond c) {
+    Recorded<Num> r(field, AnswerType::boolean);
+    r.boolean = c.v;
+    r.deps = c.deps;
+    answers_.push_back(r);
+    if (o_.given)
+      if (auto g = o_.given->boolean(field)) return {*g, bit(field)};
+    return c;
+  }
+  Word choice(std::string_view field, Word w) {
+    Recorded<Num> r(field, AnswerType::choice);
+    r.word = w.w;
+    r.deps = w.deps;
+    answers_.push_back(r);
+    if (o_.given)
+      if (auto g = o_.given->word(field)) return {*g, bit(field)};
+    return w;
+  }
+  Faces faces(std::string_view field, Faces f) {
+    Recorded<Num> r(field, AnswerType::faces);
+    r.faces = f.bits;
+    r.deps = f.deps;
+    answers_.push_back(r);
+    if (o_.given)
+      if (auto g = o_.given->faces(field)) return {*g, bit(field)};
+    return f;
+  }
+
+  // ---- another right road to the same answer (d² = CP² or AC² − t_proj²): taken only when
+  // switched on by its name, so that grading credits a student who took it from their own
+  // earlier answers. Not a mistake: the key shows the first road.
+  template <class T>
+  T road(std::string_view name, T usual, T other) {
+    return name == o_.mistake ? other : usual;
+  }
+
+  // ---- named mistakes: the wrong road, taken only when that mistake is switched on
+  template <class T>
+  T mistake(std::string_view code, T right, T wrong) {
+    if (std::find(codes_.begin(), codes_.end(), code) == codes_.end()) codes_.push_back(code);
+    return code == o_.mistake ? wrong : right;
+  }
+
+  // ---- the same value by another road, for its exact form only: `road` is the student's
+  // computation (what every evaluator goes on with), `exact_road` an equal expression whose
+  // exact form stays within one radicand where the student's does not (I = P ± √(h²/u·u)·u
+  // rather than A + (t_proj ± h)·û). Under Exact, the two must agree.
+  Num either(Num road, Num exact_road) {
+    if constexpr (std::is_same_v<Num, Exact>) {
+      if (std::abs(road.v - exact_road.v) > 1e-9 * std::max(1.0, std::abs(road.v)))
+        throw std::logic_error("method: two roads to one value disagree");
+      if (!road.e) road.e = exact_road.e;
+    }
+    return road;
+  }
+  Vec either(Vec road, Vec exact_road) { return {either(road.x, exact_road.x), either(road.y, exact_road.y)}; }
+
+  // ---- what was recorded
+  const std::vector<Recorded<Num>>& answers() const { return answers_; }
+  const std::vector<Recorded<Num>>& steps() const { return steps_; }
+  // The mistakes the method met on this road.
+  const std::vector<std::string_view>& mistakes_met() const { return codes_; }
+  int rounded_count() const { return next_slot_; }
+  const RunOptions& options() const { return o_; }
+
+  const Recorded<Num>* answer(std::string_view field) const { return find(answers_, field); }
+  const Recorded<Num>* step(std::string_view id) const {
+    if (const auto* s = find(steps_, id)) return s;
+    return find(answers_, id);
+  }
+
+ private:
+  static const Recorded<Num>* find(const std::vector<Recorded<Num>>& v, std::string_view id) {
+    for (const auto& r : v)
+      if (r.id == id) return &r;
+    return nullptr;
+  }
+  Deps bit(std::string_view field) const {
+    for (std::size_t i = 0; i < o_.questions.size(); ++i)
+      if (o_.questions[i].field == field) return Deps(1u << i);
+    return 0;
+  }
+  static std::optional<exact::Surd> rational(double x);
+  Dual seed(Dual x) {
+    // a value already on the decimal grid is written as it is: rounding does not move it
+    if (on_decimal_grid(x.v, o_.decimals)) return x;
+    if (next_slot_ >= kMaxRounded) throw std::logic_error("method: too many rounded intermediates");
+    x.d[next_slot_++] += 1;
+    return x;
+  }
+
+  RunOptions o_;
+  std::vector<Recorded<Num>> answers_, steps_;
+  std::vector<std::string_view> codes_;
+  int next_slot_ = 0;
+};
+
+// The exact rational a datum denotes, when it has at most 6 decimals (data on a grid always do).
+std::optional<exact::Rational> rational_of(double x);
+
+template <class Num>
+std::optional<exact::Surd> Run<Num>::rational(double x) {
+  if (auto r = rational_of(x)) return exact::Surd(*r);
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tolerances from a Dual run: for each numeric answer coordinate, in the order of answers(),
+// 1.5·(δ + Σ_k |∂a/∂q_k|·δ) with δ = ½·10^−decimals. The factor 1.5 leaves room for a student
+// who rounds a little differently from the key (truncates, or rounds twice).
+inline std::vector<double> tolerances(const Run<Dual>& run) {
+  const double delta = 0.5 * std::pow(10.0, -run.options().decimals);
+  std::vector<double> out;
+  auto one = [&](const Dual& x) {
+    double total = delta;
+    for (int k = 0; k < run.rounded_count(); ++k) total += std::abs(x.d[k]) * delta;
+    out.push_back(1.5 * total);
+  };
+  for (const auto& a : run.answers()) {
+    if (a.type == AnswerType::number) one(a.x);
+    if (a.type == AnswerType::point) {
+      one(a.x);
+      one(a.y);
+    }
+  }
+  return out;
+}
+
+}  // namespace epure::method
