@@ -31,6 +31,8 @@ void add_solve_command(CLI::App& app, int& status);
 void add_generate_command(CLI::App& app, int& status);
 // Registers `epure preview`.
 void add_preview_command(CLI::App& app, int& status);
+// Registers `epure kinds`.
+void add_kinds_command(CLI::App& app, int& status);
 // Registers `epure grade`.
 void add_grade_command(CLI::App& app, int& status);
 

@@ -101,10 +101,9 @@ void add_solve_command(CLI::App& app, int& status) {
   CLI::App* cmd = app.add_subcommand(
       "solve", "Solve figures given as JSON Lines (one object per line); one JSON result per line");
   cmd->add_option("file", options->file, "Input file (default: standard input)");
-  cmd->footer(
-      "Kinds: vectors, projection, segments, ray_circle, ray_square, ray_ellipse, ray_rectangle,\n"
-      "ray_sphere, ray_cube. A bad line yields {\"error\": ...} and the rest is still solved;\n"
-      "the exit status is 1 if any line failed.");
+  cmd->footer(fmt::format("Kinds: {}. A bad line yields {{\"error\": ...}} and the rest is still\n"
+                          "solved; the exit status is 1 if any line failed.",
+                          fmt::join(solve::kKinds, ", ")));
   cmd->callback([options, &status] {
     if (options->file.empty() || options->file == "-") {
       status = run_solve(stdin, "<stdin>");

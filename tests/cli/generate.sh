@@ -18,7 +18,8 @@ diff -r "$tmp/a" "$tmp/c" >/dev/null || fail "two runs differ"
 ls "$tmp/a" | grep -q '\.tmp$' && fail "a temporary file was left behind"
 
 # key.json: structure, ids, solutions == epure solve(instance), branch rates, questions
-python3 - "$tmp/a/key.json" "$tmp/a/instances.jsonl" "$tmp/a/solutions.jsonl" <<'PY' || fail "key.json checks"
+"$EPURE" kinds --json > "$tmp/kinds.json" || fail "epure kinds --json"
+python3 - "$tmp/a/key.json" "$tmp/a/instances.jsonl" "$tmp/a/solutions.jsonl" "$tmp/kinds.json" <<'PY' || fail "key.json checks"
 import json, sys, collections
 key = json.load(open(sys.argv[1]))
 assert set(key) == {"spec", "seed", "version", "sheets"}, key.keys()
@@ -51,17 +52,10 @@ branches = collections.defaultdict(collections.Counter)
 for s in sheets:
     for e in s["exercises"]:
         branches[(e["n"], e["kind"])][e["branch"]] += 1
-# the course's weights (templates/course.toml and the kinds' defaults): every branch appears,
-# each within 2 sheets of its share of 30
-weights = {
-    "vectors": {"acute": 2, "right": 1, "obtuse": 2},
-    "projection": {"before": 1, "between": 2, "after": 1},
-    "segments": {"intersects": 2, "outside": 1, "parallel": 1},
-    "ray_circle": {"hit": 3, "behind": 1, "miss": 1, "inside": 1},
-    "ray_square": {"hit": 3, "miss": 1, "inside": 1},
-    "ray_ellipse": {"hit": 2, "miss": 1, "inside": 1},
-    "ray_rectangle": {"hit": 2, "miss": 1, "inside": 1},
-}
+# the kinds' default weights (the course's spec overrides none): every branch appears, each
+# within 2 sheets of its share of 30
+weights = {k["name"]: {b: w for b, w in k["branches"].items() if w > 0} for k in json.load(open(sys.argv[4]))}
+assert len(weights) >= 7, weights
 for (n, kind), counts in sorted(branches.items()):
     print(n, kind, dict(counts))
     w = weights[kind]
