@@ -72,9 +72,11 @@ const QuestionSpec* Questions::spec_for(std::string_view field) const {
   return it == ctx_.spec.questions.end() ? nullptr : &it->second;
 }
 
+// A weight, not points yet: the set shares the exercise's points among the questions asked
+// (exercises/points.h), once this instance's questions are known.
 double Questions::points_for(std::string_view field) const {
   const QuestionSpec* q = spec_for(field);
-  return q && q->points ? *q->points : ctx_.spec.points;
+  return q && q->points ? *q->points : 1;
 }
 
 std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", ctx_.n, field); }
