@@ -37,9 +37,10 @@ struct Run {
   Outcome outcome;
 };
 
-Run grade(const std::string& csv, bool follow_through = true) {
+Run grade(const std::string& csv, bool follow_through = true, const std::string& language = "") {
   SessionOptions o;
   o.answers_name = "a.csv";
+  o.language = language;
   o.log = nullptr;
   o.follow_through = follow_through;
   GradingSession session(key(), std::move(o));
@@ -127,6 +128,24 @@ TEST_CASE("bad input, each case said with its line, every row reported") {
     CHECK(run.outcome.empty_rows == 1);
   }
   SUBCASE("no sheet column: nothing can be graded") { CHECK_THROWS_AS(grade("name,2.t\nx,1\n"), std::runtime_error); }
+}
+
+TEST_CASE("what a French teacher reads about the rows is in French") {
+  SUBCASE("1. a mistyped id: the check character, and the nearest sheet") {
+    const auto run = grade("sheet,2.t\n1000-0005-002M,1\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "n’est pas un identifiant de feuille valide\u00a0: le caractère de contrôle ne correspond pas"));
+    CHECK(has_problem(run.outcome, 2, "la feuille la plus proche dans ce corrigé est 1000-0005-002N (à 1 caractère près)"));
+    CHECK_FALSE(has_problem(run.outcome, 2, "check character"));
+  }
+  SUBCASE("2. an answer to a question the sheet does not ask") {
+    const auto run = grade("sheet,4.reason\n1000-0005-002N,miss\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "réponses à des questions que la feuille 1000-0005-002N ne pose pas, non corrigées"));
+  }
+  SUBCASE("3. an unreadable value, and a short id") {
+    const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n1000-0005,1\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "illisible, compté faux\u00a0: 2.t \"abc\" n’est pas un nombre"));
+    CHECK(has_problem(run.outcome, 3, "un identifiant de feuille a 12 caractères, celui-ci en a 8"));
+  }
 }
 
 TEST_CASE("follow-through on and off change only the follow-through points") {
