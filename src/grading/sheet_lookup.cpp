@@ -57,8 +57,12 @@ SheetLookup find_sheet(const AnswerKey& key, std::string_view typed, const Texts
       out.sheet = s;
       return out;
     }
-    if (auto r = key.refused().find(canonical); r != key.refused().end()) {
-      out.why = texts.format("grading.lookup.refused", {{"sheet", canonical}, {"why", r->second}});
+    if (key.refused().count(canonical)) {
+      // key_from_spec refuses only ids of another draw version (its reason, in English, is for
+      // the command's own report): said here in the set's language
+      out.why = texts.format("grading.lookup.refused", {{"sheet", canonical},
+                                                        {"version", std::to_string(parsed.id->version)},
+                                                        {"draw", std::to_string(kDrawVersion)}});
     } else if (parsed.id->version != key.info.draw_version) {
       out.why = texts.format("grading.lookup.other_version", {{"sheet", canonical},
                                                               {"version", std::to_string(parsed.id->version)},

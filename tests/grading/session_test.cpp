@@ -143,7 +143,7 @@ TEST_CASE("what a French teacher reads about the rows is in French") {
   }
   SUBCASE("3. an unreadable value, and a short id") {
     const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n1000-0005,1\n", true, "fr");
-    CHECK(has_problem(run.outcome, 2, "illisible, compté faux\u00a0: 2.t \"abc\" n’est pas un nombre"));
+    CHECK(has_problem(run.outcome, 2, "réponse illisible, comptée fausse\u00a0: 2.t \"abc\" n’est pas un nombre"));
     CHECK(has_problem(run.outcome, 3, "un identifiant de feuille a 12 caractères, celui-ci en a 8"));
   }
 }
@@ -163,4 +163,15 @@ TEST_CASE("edit distance between ids, as typed") {
   CHECK(id_distance("1000-0005-002N", "1000-0005-020N") == 1);  // two neighbours swapped
   CHECK(id_distance("1000-0005-002N", "1000-0005-O02N") == 0);  // O read as 0
   CHECK(id_distance("", "abc") == 3);
+}
+
+TEST_CASE("an id of another draw version, refused when keys are rebuilt, is said in the set's language") {
+  const std::vector<epure::SheetId> ids{epure::SheetId{epure::kDrawVersion, 5, 2}, epure::SheetId{9, 5, 0}};
+  const AnswerKey rebuilt = key_from_spec(epure::builtin_spec(), ids, "test");
+  const std::string other = epure::SheetId{9, 5, 0}.str();
+  const auto fr = find_sheet(rebuilt, other, epure::Texts::builtin("fr"));
+  CHECK(fr.sheet == nullptr);
+  CHECK(fr.why.find("a été tirée par la version 9 du générateur") != std::string::npos);
+  const auto en = find_sheet(rebuilt, other, epure::Texts::builtin("en"));
+  CHECK(en.why.find("was drawn by generator version 9") != std::string::npos);
 }
