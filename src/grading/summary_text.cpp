@@ -30,7 +30,6 @@ std::string padded_left(std::string_view s, std::size_t w) {
   return out + std::string(s);
 }
 
-
 }  // namespace
 
 TextSummary::TextSummary(std::FILE* out, const AnswerKey& key, const FeedbackText& text, bool rows)
