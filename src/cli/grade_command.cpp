@@ -137,17 +137,16 @@ int run_grade(const GradeCliOptions& o) {
   options.language = o.language;
   options.sheet_counts = counter.take_counts();
   GradingSession session(*key, std::move(options));
+  const Texts& texts = session.texts();
+  const TextVars versions{{"key", key->info.source},
+                          {"key_epure", key->info.epure_version},
+                          {"key_draw", std::to_string(key->info.draw_version)},
+                          {"epure", EPURE_VERSION},
+                          {"draw", std::to_string(kDrawVersion)}};
   if (key->info.draw_version != kDrawVersion)
-    session.problem(0, fmt::format("{} was written by epure {} (draw version {}); this is epure {} (draw version {}): "
-                                   "answers are marked with the key's own values and rules, but its sheets cannot be "
-                                   "redrawn on feedback sheets",
-                                   key->info.source, key->info.epure_version, key->info.draw_version, EPURE_VERSION,
-                                   kDrawVersion),
-                    false, "version");
+    session.problem(0, texts.format("grading.problem.other_draw_version", versions), false, "version");
   else if (key->info.epure_version != EPURE_VERSION)
-    session.problem(0, fmt::format("{} was written by epure {}, this is epure {} (same draw version: the same sheets)",
-                                   key->info.source, key->info.epure_version, EPURE_VERSION),
-                    false, "version");
+    session.problem(0, texts.format("grading.problem.other_epure_version", versions), false, "version");
 
   const std::string language = o.language.empty() ? key->info.language : o.language;
   const FeedbackText text(language, key->info.decimals);
@@ -177,7 +176,8 @@ int run_grade(const GradeCliOptions& o) {
   const Outcome& outcome = session.finish(info);
   if (!o.histogram.empty()) output::write_file_atomically(o.histogram, histogram_svg(session.statistics(), text));
   if (sheets && !o.quiet)
-    fmt::print("{} feedback sheets and class.svg in {}/\n", sheets->written(), o.feedback);
+    fmt::print("{}\n", texts.format("grading.problem.feedback_written",
+                                     {{"count", std::to_string(sheets->written())}, {"dir", o.feedback}}));
   return outcome.exit_status();
 }
 

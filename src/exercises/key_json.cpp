@@ -44,6 +44,7 @@ void KeyJson::begin(fmt::memory_buffer& out, const WorksheetSet& set, std::strin
   w.field("language", std::string_view(set.language()));
   w.key("decimals").integer(spec.decimals);
   w.field("follow_through", spec.follow_through);
+  if (spec.scale) w.field("scale", *spec.scale);  // only when set: keys without one are unchanged
   w.field("text", std::string_view(spec.text));
   w.end_object();
   w.key("seed").integer(static_cast<long long>(set.seed()));

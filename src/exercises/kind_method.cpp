@@ -190,6 +190,7 @@ Questions make_questions(const ExerciseContext& ctx, std::span<const method::Que
     throw std::logic_error(fmt::format("method: no tolerance for '{}'", field));
   };
   Questions q(ctx);
+  for (const auto& d : decls) q.default_weight(d.field, d.weight);
   // in the sheet's order: the kind's declaration, not the method's
   for (const auto& d : decls) {
     const auto* c = core.find(d.field);

@@ -6,6 +6,7 @@
 //   template <class V, class D> static void schema(V& v, D& d) { v("A", d.A); … }
 //   static constexpr method::QuestionDecl kQuestions[] = {…};   // the sheet's questions, in order
 //   static constexpr std::string_view kMistakes[] = {…};        // codes its method declares
+//   static constexpr double kPoints = 7;                         // what the exercise is worth
 //   template <class M> static void method(M& m, const Data& d);  // the course's method
 //   static method::CoreAnswers core(const Data& d);              // the geometry core's answers
 //
@@ -113,6 +114,7 @@ class MethodKind : public ExerciseKind {
   std::vector<std::string> fields() const override { return detail::fields_of(Kind::kQuestions); }
   std::vector<SheetField> sheet_fields() const override { return detail::sheet_fields_of(Kind::kQuestions); }
   std::span<const method::QuestionDecl> questions() const override { return Kind::kQuestions; }
+  double default_points() const override { return Kind::kPoints; }
   std::span<const std::string_view> mistakes() const override { return Kind::kMistakes; }
   std::span<const std::string_view> roads() const override {
     if constexpr (requires { Kind::kRoads; }) return Kind::kRoads;

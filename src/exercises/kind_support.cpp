@@ -72,9 +72,15 @@ const QuestionSpec* Questions::spec_for(std::string_view field) const {
   return it == ctx_.spec.questions.end() ? nullptr : &it->second;
 }
 
+// A weight, not points yet: the set shares the exercise's points among the questions asked
+// (exercises/points.h), once this instance's questions are known.
 double Questions::points_for(std::string_view field) const {
   const QuestionSpec* q = spec_for(field);
-  return q && q->points ? *q->points : ctx_.spec.points;
+  if (q && q->points) return *q->points;
+  const std::string_view base = field.substr(0, field.find('.'));
+  for (const auto& [name, weight] : default_weights_)
+    if (name == base) return weight;
+  return 1;
 }
 
 std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", ctx_.n, field); }

@@ -70,6 +70,9 @@ class Questions {
   void faces(std::string_view field, const std::vector<std::string>& value,
              const std::vector<std::string>& all);
 
+  // The kind's own weight of a question (its QuestionDecl), when the spec does not set one.
+  void default_weight(std::string_view field, double weight) { default_weights_.emplace_back(field, weight); }
+
   std::vector<Question> take_questions() { return std::move(questions_); }
   // Fields for the sheet and lines for the key, in order.
   const std::vector<render::AnswerField>& fields() const { return fields_; }
@@ -84,6 +87,7 @@ class Questions {
   std::string answer_text(double value, const std::optional<exact::Surd>& exact) const;
 
   const ExerciseContext& ctx_;
+  std::vector<std::pair<std::string_view, double>> default_weights_;
   std::vector<Question> questions_;
   std::vector<render::AnswerField> fields_;
   std::vector<render::AnswerLine> lines_;

@@ -58,19 +58,20 @@ ParsedSheetId parse_sheet_id(std::string_view text) {
   for (char ch : text) {
     if (ch == '-' || ch == ' ' || ch == '\t') continue;
     int v = value_of(ch);
-    if (v < 0) return {std::nullopt, {fmt::format("'{}' is not a sheet-id character", ch)}};
-    if (count == kDataChars + 1) return {std::nullopt, {"too long for a sheet id (12 characters)"}};
+    if (v < 0) return {std::nullopt, {fmt::format("'{}' is not a sheet-id character", ch), "character", std::string(1, ch)}};
+    if (count == kDataChars + 1)
+      return {std::nullopt, {"too long for a sheet id (12 characters)", "too_long", {}}};
     values[count++] = v;
   }
   if (count != kDataChars + 1)
-    return {std::nullopt, {fmt::format("a sheet id has 12 characters, this one has {}", count)}};
+    return {std::nullopt, {fmt::format("a sheet id has 12 characters, this one has {}", count), "length", std::to_string(count)}};
 
   std::array<int, kDataChars> data{};
   for (int i = 0; i < kDataChars; ++i) data[i] = values[i];
   if (check_value(data) != values[kDataChars]) {
     // Any single mistyped character or adjacent swap lands here. Which id was meant is for
     // the caller to say, from the ids it knows (grading suggests the nearest id of the set).
-    return {std::nullopt, {"check character does not match: a character is mistyped"}};
+    return {std::nullopt, {"check character does not match: a character is mistyped", "check", {}}};
   }
   std::uint64_t bits = 0;
   for (int v : data) bits = (bits << 5) | std::uint64_t(v);

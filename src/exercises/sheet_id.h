@@ -30,6 +30,10 @@ struct SheetId {
 
 struct SheetIdError {
   std::string message;  // why it was refused
+  // the same as a code, for a message in another language: "character" (one that no id
+  // holds), "length" (fewer than 12 characters), "too_long", "check" (the check character does not match)
+  std::string_view code;
+  std::string detail;  // "character": the character; "length": the count
 };
 
 // Reads an id as a person may type it: any case, with or without dashes and spaces, O for 0,

@@ -7,6 +7,7 @@
 
 #include "embed/embedded.h"
 #include "exercises/exercise.h"
+#include "exercises/points.h"
 #include "exercises/texts.h"
 
 namespace epure {
@@ -122,7 +123,10 @@ ExerciseSpec read_exercise(const Reader& r, const toml::table& t, std::string_vi
   }
   if (const toml::node* p = t.get("points")) {
     e.points = r.number(*p, Reader::qualified(prefix, "points"));
-    if (!(e.points >= 0)) r.fail(*p, Reader::qualified(prefix, "points"), "must be ≥ 0");
+    if (!(*e.points >= 0)) r.fail(*p, Reader::qualified(prefix, "points"), "must be ≥ 0");
+    if (!on_point_step(*e.points))
+      r.fail(*p, Reader::qualified(prefix, "points"),
+             fmt::format("must be a multiple of {} (each question gets a share in steps of {})", kPointStep, kPointStep));
   }
 
   if (const toml::node* b = t.get("branches")) {
@@ -212,7 +216,7 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
   }
   Reader r(source_name);
   r.only(root, "", {"title", "course", "author", "subject", "language", "page", "decimals",
-                    "difficulty", "follow_through", "exercise"});
+                    "difficulty", "follow_through", "scale", "exercise"});
   WorksheetSpec spec;
   spec.source = std::string(source_name);
   spec.text = std::string(toml_text);
@@ -238,6 +242,10 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
   if (const toml::node* f = root.get("follow_through")) {
     if (!f->is_boolean()) r.fail(*f, "follow_through", "expected true or false");
     spec.follow_through = f->as_boolean()->get();
+  }
+  if (const toml::node* s = root.get("scale")) {
+    spec.scale = r.number(*s, "scale");
+    if (!(*spec.scale > 0)) r.fail(*s, "scale", "expected a positive number (20: marks out of 20)");
   }
   Difficulty difficulty = Difficulty::standard;
   if (const toml::node* d = root.get("difficulty")) {

@@ -18,7 +18,7 @@ std::optional<Difficulty> parse_difficulty(std::string_view s);
 
 // Per-question settings, by the question's field ("t", "P" for both P.x and P.y, "faces").
 struct QuestionSpec {
-  std::optional<double> points;
+  std::optional<double> points;  // the question's weight in the exercise's points (default 1)
   std::optional<double> rel;  // overrides the derived relative tolerance
   std::optional<double> abs;  // overrides the derived absolute tolerance (a floor)
   bool whole_point = false;   // mark a point by its distance to the expected point, as a whole
@@ -30,7 +30,9 @@ struct ExerciseSpec {
   std::vector<std::pair<std::string, double>> branches;  // empty: the kind's defaults
   std::map<std::string, QuestionSpec> questions;
   std::map<std::string, double> constraints;  // overrides of the kind's defaults
-  double points = 1;  // default points of each question
+  // What the exercise is worth, shared by the questions its branch asks in proportion to their
+  // weights (exercises/points.h); unset: the kind's default_points().
+  std::optional<double> points;
 };
 
 // The spec's own words, printed on every page and in the PDF's metadata.
@@ -58,6 +60,8 @@ struct WorksheetSpec {
   std::string page = "A4";  // "A4" or "letter"
   int decimals = 2;         // students round data-derived answers to this many decimals
   bool follow_through = true;
+  // Reports also give the mark out of this (20 for the French "note sur 20"); unset: points only.
+  std::optional<double> scale;
   std::vector<ExerciseSpec> exercises;
   std::string text;  // the spec's own text, as read (travels in key.json)
 };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "exercises/numbers.h"
+#include "exercises/points.h"
 #include "exercises/texts.h"
 
 namespace epure {
@@ -43,7 +44,11 @@ ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std:
   ExerciseContext ctx = context(slot, slot + 1, branch);
   ctx.taken = taken;
   ctx.widening = widening;
-  return find_kind(spec_.exercises[slot].kind)->make(rng, ctx);
+  const ExerciseKind& kind = *find_kind(spec_.exercises[slot].kind);
+  ExerciseInstance instance = kind.make(rng, ctx);
+  // the questions' weights become their shares of the exercise's points, whatever the branch
+  spread_points(instance.questions, spec_.exercises[slot].points.value_or(kind.default_points()));
+  return instance;
 }
 
 Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {

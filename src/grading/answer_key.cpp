@@ -281,6 +281,10 @@ AnswerKey read_key_json(std::string_view text, std::string_view source) {
   key.info.language = spec.value("language", std::string("en"));
   key.info.decimals = spec.value("decimals", 2);
   key.info.follow_through = spec.value("follow_through", true);
+  if (const auto it = spec.find("scale"); it != spec.end()) {
+    if (!it->is_number() || !(it->get<double>() > 0)) where.fail("'scale' must be a positive number");
+    key.info.scale = it->get<double>();
+  }
   key.info.spec_text = spec.value("text", std::string{});
   key.info.spec_source = spec.value("source", std::string{});
   where.item.clear();
@@ -305,6 +309,7 @@ AnswerKey key_from_spec(const WorksheetSpec& spec, const std::vector<SheetId>& i
   key.info.language = spec.language;
   key.info.decimals = spec.decimals;
   key.info.follow_through = spec.follow_through;
+  key.info.scale = spec.scale;
   key.info.spec_text = spec.text;
   key.info.spec_source = spec.source;
   key.info.epure_version = std::string(epure_version);

@@ -97,6 +97,7 @@ struct KeyInfo {
   std::string language = "en";
   int decimals = 2;
   bool follow_through = true;
+  std::optional<double> scale;  // the spec's `scale`: marks also out of this (20)
   std::string spec_text;    // the spec the set was drawn from, as written (rebuilds diagrams)
   std::string spec_source;  // its file name when it was written
   std::uint64_t seed = 0;

@@ -284,6 +284,33 @@ class Parser {
   std::string_view why_;
 };
 
+// A unit typed after an angle ("50,91°", "−71,57 °", "50.91 deg", "50,91 degrés"), and the
+// spaces before it, cut off: the sheet asks for degrees, and a student who writes the unit
+// means the number. Radians are not a unit dropped: "0.89 rad" stays unreadable, so that it is
+// never read as 0.89°. Returns the text unchanged when it ends in no such unit.
+std::string_view without_degree_unit(std::string_view s) {
+  static constexpr std::string_view kUnits[] = {"\u00b0", "\u00ba", "degrees", "degree", "degr\u00e9s", "degr\u00e9",
+                                                "degres", "degre", "degs", "deg"};
+  for (const std::string_view unit : kUnits) {
+    if (s.size() <= unit.size()) continue;
+    const std::string_view tail = s.substr(s.size() - unit.size());
+    bool same = true;
+    for (std::size_t i = 0; same && i < unit.size(); ++i) {
+      char c = tail[i];
+      if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+      same = c == unit[i];
+    }
+    if (!same) continue;
+    std::string_view number = s.substr(0, s.size() - unit.size());
+    while (!number.empty() && (number.back() == ' ' || number.back() == '\t')) number.remove_suffix(1);
+    for (const std::string_view space : {kNbsp, kNarrowNbsp, kThinSpace})
+      while (number.size() > space.size() && number.substr(number.size() - space.size()) == space)
+        number.remove_suffix(space.size());
+    return number;
+  }
+  return s;
+}
+
 }  // namespace
 
 ParsedNumber parse_number(std::string_view text) {
@@ -293,6 +320,13 @@ ParsedNumber parse_number(std::string_view text) {
   if (text.size() > kMaxNumberLength) return {false, 0, "number"};
   double v = 0;
   if (plain_decimal(text, v) || fast_decimal(text, v)) return {true, v, {}};
+  const std::string_view number = without_degree_unit(text);
+  if (number.size() != text.size()) {
+    // the unit alone ("°") is no number; one unit only ("5°°" is not read)
+    if (number.empty() || without_degree_unit(number).size() != number.size()) return {false, 0, "number"};
+    if (plain_decimal(number, v) || fast_decimal(number, v)) return {true, v, {}};
+    return Parser(number).run();
+  }
   return Parser(text).run();
 }
 

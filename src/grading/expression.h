@@ -10,7 +10,8 @@
 //   power   := atom ('^' unary | '²')?
 //   atom    := number | '(' sum ')' | ('sqrt' | '√' | 'racine') atom | 'pi' | 'π'
 //
-// A leading '≈', '~' or '=' is skipped (copied from the key's "≈ 2.17").
+// A leading '≈', '~' or '=' is skipped (copied from the key's "≈ 2.17"), and so is a unit of
+// degrees after the number ("50,91°", "−71,57 °", "50.91 deg", "50,91 degrés").
 #include <string_view>
 
 namespace epure::grading {

@@ -88,7 +88,14 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
   std::string note = rich_escape(s.student);
   if (s.marked()) {
     if (!note.empty()) note += " — ";
-    note += T.format("grading.sheet.score", {{"score", text.points(s.score)}, {"max", text.points(s.max)}});
+    if (key.info.scale && s.max > 0)
+      note += T.format("grading.sheet.score_scaled",
+                       {{"score", text.points(s.score)},
+                        {"max", text.points(s.max)},
+                        {"mark", text.points(std::round(s.score / s.max * *key.info.scale * 100) / 100)},
+                        {"scale", text.points(*key.info.scale)}});
+    else
+      note += T.format("grading.sheet.score", {{"score", text.points(s.score)}, {"max", text.points(s.max)}});
   }
   doc.header_note = note;
 
@@ -127,7 +134,7 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
       const std::string prompt = T.has(prompt_key) ? T.get(prompt_key) : qk.field;
       const bool right = m.verdict == Verdict::right;
       std::string answer = fmt::format("{} {}", right ? "\u2713" : m.verdict == Verdict::follow_through ? "\u2197" : "\u2717",
-                                       m.given.raw.empty() ? std::string("—") : rich_escape(m.given.raw));
+                                       m.given.raw.empty() ? std::string("—") : rich_escape(text.given_shown(qk, m)));
       answer += fmt::format("  ({}/{})", text.points(m.points), text.points(qk.points));
       if (!right) {
         answer += fmt::format(" — {} {}", T.get("grading.sheet.expected"), text.expected(qk));

@@ -147,6 +147,20 @@ std::string FeedbackText::expected(const QuestionKey& q) const {
   return {};
 }
 
+std::string FeedbackText::given_shown(const QuestionKey& q, const QuestionMark& m) const {
+  if (!m.given.readable()) return given(m);
+  switch (q.type) {
+    case AnswerType::number: return given(m);
+    case AnswerType::boolean: return texts_.get(m.given.boolean ? "common.yes" : "common.no");
+    case AnswerType::word: {
+      const std::string key = fmt::format("choice.{}", m.given.word);
+      return texts_.has(key) ? texts_.get(key) : given(m);
+    }
+    case AnswerType::faces: return face_list(m.given.faces, texts_.get("common.none"));
+  }
+  return given(m);
+}
+
 const std::string& FeedbackText::verdict(Verdict v) const {
   return texts_.get(fmt::format("grading.verdict.{}", to_string(v)));
 }
@@ -162,7 +176,7 @@ std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, b
   // the template plain turns its markup into text and leaves what they typed as they typed it
   const auto theirs = [&](std::string_view text) { return plain ? rich_escape(text) : std::string(text); };
   const TextVars vars = {{"expected", expected(q)},
-                         {"given", theirs(m.given.raw)},
+                         {"given", theirs(given_shown(q, m))},
                          {"value", std::isfinite(m.value) ? number(m.value) : std::string()},
                          {"detail", theirs(m.detail)},
                          {"why", m.given.why.empty() ? std::string()

@@ -24,6 +24,10 @@ class FeedbackText {
   std::string expected(const QuestionKey& q) const;
   // The student's answer as written, or an empty string when not answered.
   std::string given(const QuestionMark& m) const { return std::string(m.given.raw); }
+  // The student's answer in the sheet's words: a yes/no, a choice or a set of sides as the
+  // sheet prints it ("outside" typed on a French sheet reads "à l’extérieur"); a number, or an
+  // answer that could not be read, as written.
+  std::string given_shown(const QuestionKey& q, const QuestionMark& m) const;
   // The verdict's word in the language ("right", "juste", …).
   const std::string& verdict(Verdict v) const;
   // Why, as a sentence that stands alone (expected and given included): empty for a right

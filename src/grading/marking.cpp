@@ -42,6 +42,50 @@ bool equal_by_rule(const HotQuestion& q, const Given& g) {
   return false;
 }
 
+// Whether `given` is what the question `q` expects, by q's rule, for the value `target`.
+bool within_rule_of(const HotQuestion& q, double given, double target) {
+  if (!std::isfinite(given)) return false;
+  const double d = std::abs(given - target);
+  switch (q.rule) {
+    case ToleranceRule::Kind::isclose: return d <= std::max(q.rel * std::abs(target), q.abs);
+    case ToleranceRule::Kind::distance: return d <= q.abs;
+    case ToleranceRule::Kind::exact: break;
+  }
+  return d <= 1e-9 * std::max(1.0, std::abs(target));
+}
+
+// The generic mistake of every point answer, named before any kind looks: x and y typed the
+// wrong way round. A coordinate pair is swapped when (given x, given y) is the expected (y, x),
+// each within the key's tolerance of the value it stands for, and it is not the expected
+// (x, y) (a point on the diagonal, x = y, is simply right).
+void name_swapped_coordinates(const ExerciseKey& key, ExerciseMarks& out) {
+  static constexpr std::string_view kSwapped = "swapped_coordinates";
+  const std::size_t n = key.questions.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const QuestionKey& qx = key.questions[i];
+    if (qx.point.empty() || qx.type != AnswerType::number || !qx.field.ends_with(".x")) continue;
+    const std::string y_field = qx.field.substr(0, qx.field.size() - 1) + "y";
+    const int j = key.find(y_field);
+    if (j < 0) continue;
+    QuestionMark &mx = out[i], &my = out[static_cast<std::size_t>(j)];
+    if (!mx.given.readable() || !my.given.readable()) continue;
+    if (mx.verdict != Verdict::wrong && my.verdict != Verdict::wrong) continue;
+    const HotQuestion& hx = key.hot[i];
+    const HotQuestion& hy = key.hot[static_cast<std::size_t>(j)];
+    bool swapped = false;
+    if (hx.rule == ToleranceRule::Kind::distance) {
+      const double abs = std::max(hx.abs, hy.abs);
+      swapped = std::hypot(mx.given.number - hy.number, my.given.number - hx.number) <= abs;
+    } else {
+      // the x given stands for the expected y: the y question's tolerance, and the other way
+      swapped = within_rule_of(hy, mx.given.number, hy.number) && within_rule_of(hx, my.given.number, hx.number);
+    }
+    if (!swapped) continue;
+    for (QuestionMark* m : {&mx, &my})
+      if (m->verdict == Verdict::wrong && m->mistake.empty()) m->mistake = kSwapped;
+  }
+}
+
 }  // namespace
 
 void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cells, const MarkingOptions& options,
@@ -92,6 +136,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
       any_wrong = true;
     }
   }
+  if (any_wrong) name_swapped_coordinates(key, out);
   if (any_wrong && key.grader) {
     ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
     key.grader->review(key.prepared, review);

@@ -1,8 +1,9 @@
 #pragma once
 // Marks one exercise of one submission: every cell read for its question's type, compared by
 // the key's rule (isclose for numbers, distance for a point marked as a whole, equality for
-// yes/no, words and face sets in any order), and then, if some answer is wrong, the kind's
-// second look (review.h) for follow-through credit and named mistakes.
+// yes/no, words and face sets in any order), and then, if some answer is wrong, the mistakes
+// every kind shares (a point's coordinates swapped: "swapped_coordinates") and the kind's
+// second look (review.h) for follow-through credit and its own named mistakes.
 #include <span>
 #include <string_view>
 

@@ -89,6 +89,7 @@ CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, Cs
   m.cell("student");
   m.cell("score");
   m.cell("max");
+  if (key.info.scale) m.cell(fmt::format("mark/{}", *key.info.scale));  // "mark/20"
   for (const auto& id : key.question_ids()) m.cell(id);
   m.cell("line");
   m.cell("flags");
@@ -106,6 +107,8 @@ void CsvReport::submission(const Submission& s) {
   if (s.marked()) {
     m.number(s.score);
     m.number(s.max);
+    // the mark out of the scale, to hundredths as a teacher writes it
+    if (m.key.info.scale) m.number(s.max > 0 ? std::round(s.score / s.max * *m.key.info.scale * 100) / 100 : 0);
     std::fill(m.asked.begin(), m.asked.end(), 0);
     // through local pointers: a store to asked (char) may alias anything, and would make the
     // compiler reload every vector's bounds at each question
@@ -130,6 +133,7 @@ void CsvReport::submission(const Submission& s) {
   } else {
     m.buf.push_back(m.dialect.delimiter);
     m.buf.push_back(m.dialect.delimiter);
+    if (m.key.info.scale) m.buf.push_back(m.dialect.delimiter);
     for (std::size_t i = 0; i < m.points.size(); ++i) m.buf.push_back(m.dialect.delimiter);
   }
   m.buf.push_back(m.dialect.delimiter);

@@ -1,6 +1,6 @@
 #pragma once
 // --report FILE.csv: one row per submission (every row read, marked or not): sheet, student,
-// score, max, then the points of each question id of the key (empty where the sheet does not
+// score, max, the mark out of the spec's scale when it has one ("mark/20"), then the points of each question id of the key (empty where the sheet does not
 // ask it), then the row's line in the answers file and its flags. Written in the answers'
 // own dialect, so that it opens in the teacher's spreadsheet as their export did: the same
 // delimiter, a decimal comma with semicolons (the French export convention), a BOM if theirs

@@ -1,5 +1,7 @@
 #include "grading/report_json.h"
 
+#include <cmath>
+
 #include "grading/encoding.h"
 #include "grading/session.h"
 #include "grading/statistics.h"
@@ -77,6 +79,7 @@ void JsonReport::submission(const Submission& s) {
   if (s.marked()) {
     w.field("score", s.score);
     w.field("max", s.max);
+    if (m.key.info.scale) w.field("mark", s.max > 0 ? std::round(s.score / s.max * *m.key.info.scale * 100) / 100 : 0.0);
   }
   w.key("flags").begin_array();
   for (const auto& f : s.flags) {
@@ -133,6 +136,16 @@ void JsonReport::finish(const ClassStatistics& stats, const Outcome& outcome) {
   w.field("min", stats.min());
   w.field("max", stats.max());
   w.field("max_points", stats.max_points());
+  // the class compared on one scale: each score in percent of its sheet's maximum
+  w.field("mean_percent", stats.mean_percent());
+  w.field("median_percent", stats.median_percent());
+  w.field("min_percent", stats.min_percent());
+  w.field("max_percent", stats.max_percent());
+  if (m.key.info.scale) {
+    w.field("scale", *m.key.info.scale);
+    w.field("mean_mark", stats.mean_percent() / 100 * *m.key.info.scale);
+    w.field("median_mark", stats.median_percent() / 100 * *m.key.info.scale);
+  }
   w.key("questions").begin_array();
   for (const auto& q : stats.questions()) {
     w.begin_object();
@@ -140,6 +153,7 @@ void JsonReport::finish(const ClassStatistics& stats, const Outcome& outcome) {
     w.key("asked").integer(q.asked);
     w.key("credited").integer(q.credited);
     w.field("success_rate", q.rate());
+    w.field("success_percent", 100 * q.rate());
     w.key("follow_through").integer(q.follow_through);
     w.key("unanswered").integer(q.unanswered);
     w.end_object();

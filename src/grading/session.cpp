@@ -38,15 +38,6 @@ std::string quoted(std::string_view s) {
   return fmt::format("\"{}…\"", s.substr(0, cut));
 }
 
-std::string_view why_unreadable(std::string_view code) {
-  if (code == "division_by_zero") return "divides by zero";
-  if (code == "negative_root") return "takes the root of a negative number";
-  if (code == "boolean") return "is not yes or no";
-  if (code == "word") return "is not one of the answers offered";
-  if (code == "faces") return "is not a list of sides such as +x -y";
-  return "is not a number";
-}
-
 bool looks_like_question(std::string_view name) {
   return !name.empty() && name[0] >= '0' && name[0] <= '9' && name.find('.') != std::string_view::npos;
 }
@@ -54,7 +45,10 @@ bool looks_like_question(std::string_view name) {
 }  // namespace
 
 GradingSession::GradingSession(const AnswerKey& key, SessionOptions options)
-    : key_(key), options_(std::move(options)), stats_(key.question_ids()) {
+    : key_(key),
+      options_(std::move(options)),
+      texts_(Texts::builtin(options_.language.empty() ? key.info.language : options_.language)),
+      stats_(key.question_ids()) {
   marking_.follow_through = options_.follow_through.value_or(key.info.follow_through);
   const std::string language = options_.language.empty() ? key.info.language : options_.language;
   marking_.numbers = NumberStyle::for_language(language);
@@ -76,10 +70,10 @@ void GradingSession::problem(int line, std::string message, bool error, std::str
     const std::string where = line > 0 ? fmt::format("{}:{}", options_.answers_name, line)
                                        : std::string(options_.answers_name);
     if (printed < kPrintedPerKind) {
-      fmt::print(options_.log, "{}: {}: {}\n", where, error ? "error" : "warning", message);
+      fmt::print(options_.log, "{}: {}: {}\n", where, texts_.get(error ? "grading.problem.error" : "grading.problem.warning"),
+                 message);
     } else if (printed == kPrintedPerKind) {
-      fmt::print(options_.log, "{}: more problems like the previous ones are counted, not printed (--json lists every row's)\n",
-                 options_.answers_name);
+      fmt::print(options_.log, "{}: {}\n", options_.answers_name, texts_.get("grading.problem.more_not_printed"));
     }
   }
   ++printed;
@@ -122,8 +116,10 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     if (it != ids.end()) {
       const auto q = static_cast<std::size_t>(it - ids.begin());
       if (question_column_[q] >= 0) {
-        problem(header_line_, fmt::format("column {} ({}) repeats column {}: the repeat is not read", c + 1, *it,
-                                          question_column_[q] + 1),
+        problem(header_line_,
+                texts_.format("grading.problem.column_repeat", {{"column", std::to_string(c + 1)},
+                                                                {"id", *it},
+                                                                {"first", std::to_string(question_column_[q] + 1)}}),
                 true, "column");
         continue;
       }
@@ -135,17 +131,16 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     warned_columns_.emplace(std::string(name), true);
     // a name shaped like a question id is most likely a typo: an error; any other column (an
     // e-mail, a time stamp) a warning
+    const TextVars vars{{"column", std::to_string(c + 1)}, {"name", std::string(name)}};
     if (looks_like_question(name))
-      problem(header_line_, fmt::format("column {} '{}' is not a question of this key: its answers are not read", c + 1, name),
-              true, "column");
+      problem(header_line_, texts_.format("grading.problem.column_not_in_key", vars), true, "column");
     else
-      problem(header_line_, fmt::format("column {} '{}' is not a question: ignored", c + 1, name), false, "column");
+      problem(header_line_, texts_.format("grading.problem.column_ignored", vars), false, "column");
   }
   if (sheet_column_ < 0)
-    throw std::runtime_error(fmt::format("{}:{}: no sheet column: the header row needs a column named 'sheet' "
-                                         "(the sheet id of each row); it has: {}",
-                                         options_.answers_name, std::max(header_line_, 1),
-                                         one_line(fmt::format("{}", fmt::join(names_, ", ")))));
+    throw std::runtime_error(fmt::format(
+        "{}:{}: {}", options_.answers_name, std::max(header_line_, 1),
+        texts_.format("grading.problem.no_sheet_column", {{"names", one_line(fmt::format("{}", fmt::join(names_, ", ")))}})));
 }
 
 const GradingSession::SheetColumns& GradingSession::columns_for(const SheetKey& sheet) {
@@ -194,9 +189,7 @@ void GradingSession::row(const AnswerRow& in) {
     r.cells = transcoded_views_;
     if (!transcoded_warned_) {
       transcoded_warned_ = true;
-      problem(r.line, "text that is not UTF-8 (a spreadsheet's plain \"CSV\" on Windows): read as Windows-1252; "
-                      "export as \"CSV UTF-8\" to be sure",
-              false, "encoding");
+      problem(r.line, texts_.get("grading.problem.encoding"), false, "encoding");
     }
   }
   const std::size_t width = names_.size();
@@ -222,36 +215,35 @@ void GradingSession::row(const AnswerRow& in) {
   s.student.assign(trim_cell(cell(student_column_)));
 
   if (r.problem == "unclosed_quote")
-    flag(s, "malformed", fmt::format("a quote opened on this row is never closed: lines {} to {} were read as one row", r.line, r.last_line), true);
-  else if (r.problem == "text_after_quote")
-    flag(s, "malformed", "text after a closing quote, kept in its cell (a quote inside a cell is written \"\")", true);
-  else if (r.problem == "not_an_object")
-    flag(s, "malformed", "not a JSON object: nothing on it could be read", true);
-  else if (r.problem == "too_many_names")
-    flag(s, "malformed", "names beyond the file's first 1024 different ones are not read", true);
-
-  if (r.cells.size() < width && r.problem.empty()) {
-    flag(s, "ragged", fmt::format("{} cells where the header has {}: the missing ones read as not answered", r.cells.size(), width),
+    flag(s, "malformed",
+         texts_.format("grading.flag.unclosed_quote", {{"from", std::to_string(r.line)}, {"to", std::to_string(r.last_line)}}),
          true);
+  else if (r.problem == "text_after_quote" || r.problem == "not_an_object" || r.problem == "too_many_names")
+    flag(s, "malformed", texts_.get(fmt::format("grading.flag.{}", r.problem)), true);
+
+  const TextVars widths{{"cells", std::to_string(r.cells.size())}, {"width", std::to_string(width)}};
+  if (r.cells.size() < width && r.problem.empty()) {
+    flag(s, "ragged", texts_.format("grading.flag.ragged_short", widths), true);
   } else if (r.cells.size() > width) {
     std::vector<std::string> extra;
     for (std::size_t c = width; c < r.cells.size(); ++c)
       if (!trim_cell(r.cells[c]).empty()) extra.push_back(quoted(trim_cell(r.cells[c])));
-    if (!extra.empty())
-      flag(s, "ragged", fmt::format("{} cells where the header has {}: the extra ones are not read: {}", r.cells.size(), width,
-                                    fmt::join(extra, ", ")),
-           true);
+    if (!extra.empty()) {
+      TextVars vars = widths;
+      vars.emplace_back("extra", fmt::format("{}", fmt::join(extra, ", ")));
+      flag(s, "ragged", texts_.format("grading.flag.ragged_long", vars), true);
+    }
   }
 
   if (s.sheet_text.empty()) {
-    flag(s, "no_sheet", "no sheet id: the row cannot be marked", true);
+    flag(s, "no_sheet", texts_.get("grading.flag.no_sheet"), true);
   } else {
-    const SheetLookup found = find_sheet(key_, s.sheet_text);
+    const SheetLookup found = find_sheet(key_, s.sheet_text, texts_);
     if (!found.sheet) {
       std::string message = found.why;
       if (!found.nearest.empty())
-        message += fmt::format("; the nearest sheet of this key is {} ({} character{} away)", found.nearest, found.distance,
-                               found.distance == 1 ? "" : "s");
+        message = texts_.format(found.distance == 1 ? "grading.flag.nearest_one" : "grading.flag.nearest_many",
+                                {{"why", message}, {"nearest", found.nearest}, {"distance", std::to_string(found.distance)}});
       flag(s, "unknown_sheet", std::move(message), true);
     } else {
       s.sheet = found.sheet;
@@ -280,9 +272,10 @@ void GradingSession::row(const AnswerRow& in) {
       // the first few lines are named; the rest are counted, so memory does not grow with rows
       if (lines.size() < kNamedLines) lines.push_back(r.line);
       else ++more;
-      s.flags.push_back({"duplicate", count > 1 ? fmt::format("sheet {} is submitted {} times: every one is marked", sheet.id, count)
-                                                : fmt::format("sheet {} was already submitted on line {}: both are marked",
-                                                              sheet.id, first)});
+      s.flags.push_back({"duplicate", count > 1 ? texts_.format("grading.flag.submitted_times",
+                                                                {{"sheet", sheet.id}, {"count", std::to_string(count)}})
+                                                : texts_.format("grading.flag.submitted_before",
+                                                                {{"sheet", sheet.id}, {"first", std::to_string(first)}})});
     }
     marks_.resize(sheet.exercises.size());
     std::string unreadable;
@@ -296,14 +289,17 @@ void GradingSession::row(const AnswerRow& in) {
         s.score += m.points;
         if (m.verdict == Verdict::unreadable) {
           if (!unreadable.empty()) unreadable += "; ";
-          unreadable += fmt::format("{} {} {}", ex.questions[q].id, quoted(m.given.raw), why_unreadable(m.given.why));
+          unreadable += texts_.format("grading.flag.unreadable_item",
+                                      {{"id", ex.questions[q].id},
+                                       {"value", quoted(m.given.raw)},
+                                       {"why", texts_.get(fmt::format("grading.why.{}", m.given.why))}});
         }
       }
     }
     s.max = sheet.max_points;
     s.marks = marks_;
     s.report_index = cols.report_index;
-    if (!unreadable.empty()) flag(s, "unreadable", fmt::format("unreadable, marked wrong: {}", unreadable), true);
+    if (!unreadable.empty()) flag(s, "unreadable", texts_.format("grading.flag.unreadable", {{"list", unreadable}}), true);
     // answers in columns of questions this sheet does not ask
     std::string stray;
     for (std::size_t c = 0; c < r.cells.size() && c < width; ++c) {
@@ -314,7 +310,7 @@ void GradingSession::row(const AnswerRow& in) {
       stray += fmt::format("{} {}", key_.question_ids()[static_cast<std::size_t>(column_question_[c])], quoted(v));
     }
     if (!stray.empty())
-      flag(s, "not_asked", fmt::format("answers to questions sheet {} does not ask, not marked: {}", sheet.id, stray), true);
+      flag(s, "not_asked", texts_.format("grading.flag.not_asked", {{"sheet", sheet.id}, {"list", stray}}), true);
     ++outcome_.marked;
   }
   stats_.add(s);
@@ -323,23 +319,27 @@ void GradingSession::row(const AnswerRow& in) {
 
 const Outcome& GradingSession::finish(const SourceInfo& source) {
   outcome_.source = source;
-  if (!source.stopped.empty()) problem(0, fmt::format("reading stopped: {}", source.stopped), true, "stopped");
+  if (!source.stopped.empty()) problem(0, texts_.format("grading.problem.stopped", {{"why", source.stopped}}), true, "stopped");
   if (header_line_ == 0 && names_.empty() && source.format != "json" && source.format != "jsonl")
-    problem(0, "the file is empty: no header row, no answers", true, "empty");
+    problem(0, texts_.get("grading.problem.empty_file"), true, "empty");
   else if (outcome_.rows == 0)
-    problem(0, "no answers: the file has a header but no rows", true, "empty");
+    problem(0, texts_.get("grading.problem.no_rows"), true, "empty");
   for (auto& [id, seen] : duplicate_lines_) {
     const auto& [lines, more] = seen;
     std::vector<std::string> at;
     for (int l : lines) at.push_back(std::to_string(l));
-    if (more > 0) at.push_back(fmt::format("and {} more", more));
-    problem(0, fmt::format("sheet {} is submitted {} times (lines {}): every submission is marked and flagged", id,
-                           lines.size() + more, fmt::join(at, ", ")),
+    if (more > 0) at.push_back(texts_.format("grading.problem.and_more", {{"count", std::to_string(more)}}));
+    problem(0,
+            texts_.format("grading.problem.duplicate_summary", {{"sheet", id},
+                                                                {"count", std::to_string(lines.size() + more)},
+                                                                {"lines", fmt::format("{}", fmt::join(at, ", "))}}),
             false, "duplicate_summary");
     outcome_.duplicates.emplace_back(id, lines);
   }
   if (outcome_.empty_rows > 0)
-    problem(0, fmt::format("{} empty row{} skipped (every cell blank)", outcome_.empty_rows, outcome_.empty_rows == 1 ? "" : "s"),
+    problem(0,
+            texts_.format(outcome_.empty_rows == 1 ? "grading.problem.empty_rows_one" : "grading.problem.empty_rows_many",
+                          {{"count", std::to_string(outcome_.empty_rows)}}),
             false, "empty_rows");
   for (auto* sink : sinks_) sink->finish(stats_, outcome_);
   return outcome_;

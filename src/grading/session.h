@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "exercises/numbers.h"
+#include "exercises/texts.h"
 #include "grading/answer_key.h"
 #include "grading/answer_source.h"
 #include "grading/marking.h"
@@ -80,6 +81,7 @@ class GradingSession final : public RowHandler {
   const ClassStatistics& statistics() const { return stats_; }
   const Outcome& outcome() const { return outcome_; }
   bool follow_through() const { return marking_.follow_through; }
+  const Texts& texts() const { return texts_; }
 
  private:
   struct SheetColumns {
@@ -92,6 +94,7 @@ class GradingSession final : public RowHandler {
 
   const AnswerKey& key_;
   SessionOptions options_;
+  const Texts& texts_;  // the set's language (or --lang): every message a teacher or student reads
   MarkingOptions marking_;
   Outcome outcome_;
   ClassStatistics stats_;

@@ -41,6 +41,10 @@ int id_distance(std::string_view a_text, std::string_view b_text) {
 }
 
 SheetLookup find_sheet(const AnswerKey& key, std::string_view typed) {
+  return find_sheet(key, typed, Texts::builtin(key.info.language));
+}
+
+SheetLookup find_sheet(const AnswerKey& key, std::string_view typed, const Texts& texts) {
   SheetLookup out;
   if (const SheetKey* s = key.find(typed)) {
     out.sheet = s;
@@ -53,19 +57,33 @@ SheetLookup find_sheet(const AnswerKey& key, std::string_view typed) {
       out.sheet = s;
       return out;
     }
-    if (auto r = key.refused().find(canonical); r != key.refused().end()) {
-      out.why = fmt::format("sheet {}: {}", canonical, r->second);
+    if (key.refused().count(canonical)) {
+      // key_from_spec refuses only ids of another draw version (its reason, in English, is for
+      // the command's own report): said here in the set's language
+      out.why = texts.format("grading.lookup.refused", {{"sheet", canonical},
+                                                        {"version", std::to_string(parsed.id->version)},
+                                                        {"draw", std::to_string(kDrawVersion)}});
     } else if (parsed.id->version != key.info.draw_version) {
-      out.why = fmt::format("sheet {} was drawn by generator version {}, this key by version {}", canonical,
-                            parsed.id->version, key.info.draw_version);
+      out.why = texts.format("grading.lookup.other_version", {{"sheet", canonical},
+                                                              {"version", std::to_string(parsed.id->version)},
+                                                              {"key_version", std::to_string(key.info.draw_version)}});
     } else if (parsed.id->seed != key.info.seed) {
-      out.why = fmt::format("sheet {} belongs to the set of seed {}, not to this key's (seed {})", canonical,
-                            parsed.id->seed, key.info.seed);
+      out.why = texts.format("grading.lookup.other_seed", {{"sheet", canonical},
+                                                           {"seed", std::to_string(parsed.id->seed)},
+                                                           {"key_seed", std::to_string(key.info.seed)}});
     } else {
-      out.why = fmt::format("sheet {} (number {} of its set) is not in this key", canonical, parsed.id->index + 1);
+      out.why = texts.format("grading.lookup.not_in_key",
+                             {{"sheet", canonical}, {"number", std::to_string(parsed.id->index + 1)}});
     }
   } else {
-    out.why = fmt::format("'{}' is not a valid sheet id: {}", typed, parsed.error.message);
+    const SheetIdError& e = parsed.error;
+    const std::string why =
+        e.code == "character" ? texts.format("grading.lookup.character", {{"character", e.detail}})
+        : e.code == "length"  ? texts.format("grading.lookup.length", {{"count", e.detail}})
+        : e.code == "too_long" ? texts.get("grading.lookup.too_long")
+        : e.code == "check"    ? texts.get("grading.lookup.check")
+                               : e.message;
+    out.why = texts.format("grading.lookup.invalid", {{"typed", std::string(typed)}, {"why", why}});
   }
   int best = 1 << 30;
   for (const auto& s : key.sheets()) {

@@ -9,6 +9,28 @@ namespace {
 
 std::int64_t thousandths(double score) { return std::llround(score * 1000); }
 
+// The median of values counted in thousandths: the mean of the two middle ones when the count
+// is even.
+double median_of(const std::map<std::int64_t, int>& counted, int total) {
+  if (total == 0) return 0;
+  const int lo = (total - 1) / 2, hi = total / 2;
+  int seen = 0;
+  double a = 0, b = 0;
+  bool have_a = false;
+  for (const auto& [value, count] : counted) {
+    if (!have_a && seen + count > lo) {
+      a = value / 1000.0;
+      have_a = true;
+    }
+    if (seen + count > hi) {
+      b = value / 1000.0;
+      break;
+    }
+    seen += count;
+  }
+  return (a + b) / 2;
+}
+
 }  // namespace
 
 ClassStatistics::ClassStatistics(std::vector<std::string> question_ids) {
@@ -22,6 +44,9 @@ void ClassStatistics::add(const Submission& s) {
   sum_ += s.score;
   max_points_ = std::max(max_points_, s.max);
   ++scores_[thousandths(s.score)];
+  const double percent = s.max > 0 ? 100 * s.score / s.max : 0;
+  percent_sum_ += percent;
+  ++percents_[thousandths(percent)];
   for (std::size_t e = 0; e < s.marks.size(); ++e) {
     const auto& marks = s.marks[e];
     const auto& index = s.report_index[e];
@@ -38,29 +63,13 @@ void ClassStatistics::add(const Submission& s) {
   }
 }
 
-double ClassStatistics::median() const {
-  if (marked_ == 0) return 0;
-  // the mean of the two middle scores when the count is even
-  const int lo = (marked_ - 1) / 2, hi = marked_ / 2;
-  int seen = 0;
-  double a = 0, b = 0;
-  bool have_a = false;
-  for (const auto& [score, count] : scores_) {
-    if (!have_a && seen + count > lo) {
-      a = score / 1000.0;
-      have_a = true;
-    }
-    if (seen + count > hi) {
-      b = score / 1000.0;
-      break;
-    }
-    seen += count;
-  }
-  return (a + b) / 2;
-}
+double ClassStatistics::median() const { return median_of(scores_, marked_); }
+double ClassStatistics::median_percent() const { return median_of(percents_, marked_); }
 
 double ClassStatistics::min() const { return scores_.empty() ? 0 : scores_.begin()->first / 1000.0; }
 double ClassStatistics::max() const { return scores_.empty() ? 0 : scores_.rbegin()->first / 1000.0; }
+double ClassStatistics::min_percent() const { return percents_.empty() ? 0 : percents_.begin()->first / 1000.0; }
+double ClassStatistics::max_percent() const { return percents_.empty() ? 0 : percents_.rbegin()->first / 1000.0; }
 
 std::vector<MistakeCount> ClassStatistics::mistakes(std::size_t limit) const {
   std::vector<MistakeCount> out;

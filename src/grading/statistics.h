@@ -45,8 +45,14 @@ class ClassStatistics {
   double median() const;
   double min() const;
   double max() const;
-  // The most points a sheet of the key offers (sheets of one spec offer about the same).
+  // The most points a sheet of the key offers (every sheet of one spec offers the same).
   double max_points() const { return max_points_; }
+  // The same, each score in percent of its own sheet's maximum: what a class's marks are
+  // compared by (a sheet worth 0 points counts as 0 %).
+  double mean_percent() const { return marked_ ? percent_sum_ / marked_ : 0; }
+  double median_percent() const;
+  double min_percent() const;
+  double max_percent() const;
 
   const std::vector<QuestionRate>& questions() const { return questions_; }
   // Most frequent first (ties by question, then code); `limit` 0 for all.
@@ -56,8 +62,9 @@ class ClassStatistics {
 
  private:
   int rows_ = 0, marked_ = 0;
-  double sum_ = 0, max_points_ = 0;
-  std::map<std::int64_t, int> scores_;  // score in thousandths → count
+  double sum_ = 0, max_points_ = 0, percent_sum_ = 0;
+  std::map<std::int64_t, int> scores_;    // score in thousandths → count
+  std::map<std::int64_t, int> percents_;  // percent of the maximum in thousandths → count
   std::vector<QuestionRate> questions_;
   std::map<std::pair<int, std::string_view>, int> mistakes_;  // (question, code) → count
 };

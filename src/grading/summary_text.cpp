@@ -24,17 +24,30 @@ std::string padded(std::string_view s, std::size_t w) {
   return out;
 }
 
-std::string score(double x) { return fmt::format("{}", std::round(x * 100) / 100); }
+std::string padded_left(std::string_view s, std::size_t w) {
+  std::string out;
+  for (std::size_t n = width(s); n < w; ++n) out.push_back(' ');
+  return out + std::string(s);
+}
 
 }  // namespace
 
 TextSummary::TextSummary(std::FILE* out, const AnswerKey& key, const FeedbackText& text, bool rows)
     : out_(out), key_(key), text_(text), rows_(rows) {}
 
+std::string TextSummary::score(double x) const { return text_.points(std::round(x * 100) / 100); }
+
+std::string TextSummary::percent(double x) const {
+  return text_.texts().format("grading.summary.percent", {{"value", text_.points(std::round(x * 10) / 10)}});
+}
+
 void TextSummary::submission(const Submission& s) {
   if (!rows_) return;
+  const Texts& T = text_.texts();
   if (!header_done_) {
-    fmt::print(out_, "{:>6}  {:<14}  {}  {:>13}  {}\n", "line", "sheet", padded("student", 24), "score", "wrong (mistake)");
+    fmt::print(out_, "{}  {}  {}  {}  {}\n", padded_left(T.get("grading.summary.line"), 6),
+               padded(T.get("grading.summary.sheet"), 14), padded(T.get("grading.summary.student"), 24),
+               padded_left(T.get("grading.summary.score"), 13), T.get("grading.summary.wrong"));
     header_done_ = true;
   }
   std::string student(s.student);
@@ -55,10 +68,10 @@ void TextSummary::submission(const Submission& s) {
         if (m.verdict == Verdict::right) continue;
         if (!detail.empty()) detail += ' ';
         detail += s.sheet->exercises[e].questions[q].id;
-        if (m.verdict == Verdict::follow_through) detail += "(ft";
-        else if (m.verdict == Verdict::unanswered) detail += "(blank";
-        else if (m.verdict == Verdict::unreadable) detail += "(unreadable";
-        else detail += "(";
+        detail += '(';
+        if (m.verdict == Verdict::follow_through) detail += T.get("grading.summary.follow_through");
+        else if (m.verdict == Verdict::unanswered) detail += T.get("grading.summary.blank");
+        else if (m.verdict == Verdict::unreadable) detail += T.get("grading.summary.unreadable");
         if (!m.mistake.empty()) detail += fmt::format("{}{}", detail.back() == '(' ? "" : " ", m.mistake);
         if (detail.back() == '(') detail.pop_back();
         else detail += ')';
@@ -66,35 +79,59 @@ void TextSummary::submission(const Submission& s) {
   }
   for (const auto& f : s.flags)
     if (f.code != "unreadable") detail += fmt::format("{}[{}]", detail.empty() ? "" : " ", f.code);
-  const std::string sc = s.marked() ? fmt::format("{} / {}", score(s.score), score(s.max)) : std::string("—");
-  fmt::print(out_, "{:>6}  {:<14}  {}  {:>13}  {}\n", s.line,
-             s.sheet ? std::string_view(s.sheet->id) : s.sheet_text, padded(student, 24), sc, detail);
+  std::string sc = s.marked() ? fmt::format("{} / {}", score(s.score), score(s.max)) : std::string("—");
+  if (s.marked() && key_.info.scale && s.max > 0)
+    sc += fmt::format(" = {} / {}", score(s.score / s.max * *key_.info.scale), score(*key_.info.scale));
+  fmt::print(out_, "{:>6}  {}  {}  {}  {}\n", s.line, padded(s.sheet ? std::string_view(s.sheet->id) : s.sheet_text, 14),
+             padded(student, 24), padded_left(sc, 13), detail);
 }
 
 void TextSummary::finish(const ClassStatistics& stats, const Outcome& outcome) {
+  const Texts& T = text_.texts();
   if (rows_ && header_done_) fmt::print(out_, "\n");
-  fmt::print(out_, "{} rows read from {} ({}), {} marked against {} (seed {}); follow-through {}\n", outcome.rows,
-             outcome.answers, outcome.source.format, outcome.marked, key_.info.source, key_.info.seed,
-             outcome.follow_through ? "on" : "off");
+  fmt::print(out_, "{}\n",
+             T.format(outcome.follow_through ? "grading.summary.run_on" : "grading.summary.run_off",
+                      {{"rows", std::to_string(outcome.rows)},
+                       {"answers", outcome.answers},
+                       {"format", outcome.source.format},
+                       {"marked", std::to_string(outcome.marked)},
+                       {"key", key_.info.source},
+                       {"seed", std::to_string(key_.info.seed)}}));
   if (stats.marked() > 0) {
-    fmt::print(out_, "scores out of {}: mean {}, median {}, lowest {}, highest {}\n", score(stats.max_points()),
-               score(stats.mean()), score(stats.median()), score(stats.min()), score(stats.max()));
+    // in percent of the maximum, so that the class is compared on one scale
+    fmt::print(out_, "{}\n",
+               T.format("grading.summary.scores", {{"max", score(stats.max_points())},
+                                                   {"mean", percent(stats.mean_percent())},
+                                                   {"median", percent(stats.median_percent())},
+                                                   {"min", percent(stats.min_percent())},
+                                                   {"highest", percent(stats.max_percent())}}));
+    if (key_.info.scale) {
+      const double scale = *key_.info.scale;
+      fmt::print(out_, "{}\n",
+                 T.format("grading.summary.scale", {{"scale", score(scale)},
+                                                    {"mean", score(stats.mean_percent() / 100 * scale)},
+                                                    {"median", score(stats.median_percent() / 100 * scale)}}));
+    }
     std::string rates;
     int shown = 0;
     for (const auto& q : stats.questions()) {
       if (q.asked == 0) continue;
-      rates += fmt::format("{}{} {:.0f}%", shown % 8 == 0 ? "\n  " : "   ", q.id, 100 * q.rate());
+      rates += fmt::format("{}{} {}", shown % 8 == 0 ? "\n  " : "   ", q.id, percent(std::round(100 * q.rate())));
       ++shown;
     }
-    fmt::print(out_, "success rate per question:{}\n", rates);
+    fmt::print(out_, "{}{}\n", T.get("grading.summary.rates"), rates);
     const auto top = stats.mistakes(8);
     if (!top.empty()) {
-      fmt::print(out_, "most frequent mistakes:\n");
-      for (const auto& m : top) fmt::print(out_, "  {:>4} × {} on {}\n", m.count, m.code, m.question);
+      fmt::print(out_, "{}\n", T.get("grading.summary.mistakes"));
+      for (const auto& m : top)
+        fmt::print(out_, "  {}\n",
+                   T.format("grading.summary.mistake_line",
+                            {{"count", padded_left(std::to_string(m.count), 4)}, {"code", std::string(m.code)}, {"question", m.question}}));
     }
   }
-  fmt::print(out_, "{} error{}, {} warning{}{}\n", outcome.errors, outcome.errors == 1 ? "" : "s", outcome.warnings,
-             outcome.warnings == 1 ? "" : "s", outcome.errors + outcome.warnings > 0 ? " (on stderr)" : "");
+  fmt::print(out_, "{}\n",
+             T.format(outcome.errors + outcome.warnings > 0 ? "grading.summary.counts_stderr" : "grading.summary.counts",
+                      {{"errors", std::to_string(outcome.errors)}, {"warnings", std::to_string(outcome.warnings)}}));
 }
 
 }  // namespace epure::grading

@@ -17,6 +17,9 @@ class TextSummary final : public SubmissionSink {
   void finish(const ClassStatistics& stats, const Outcome& outcome) override;
 
  private:
+  std::string score(double x) const;    // points as the language writes them, to hundredths
+  std::string percent(double x) const;  // "62.5%", "62,5 %"
+
   std::FILE* out_;
   const AnswerKey& key_;
   const FeedbackText& text_;

@@ -124,3 +124,36 @@ TEST_CASE("every mistake names the file, the line and the key") {
     CHECK(error_of("[[exercise]]\nkind = \"projection\"\nconstraints = { speed = 1 }\n").find("constraints.speed") != std::string::npos);
   }
 }
+
+TEST_CASE("an exercise's points and the scale are read and checked") {
+  const auto spec = parse_spec(R"(
+scale = 20
+[[exercise]]
+kind = "projection"
+points = 6.5
+questions = { t = { points = 2 } }
+[[exercise]]
+kind = "segments"
+)", "p.toml");
+  REQUIRE(spec.scale.has_value());
+  CHECK(*spec.scale == doctest::Approx(20).epsilon(1e-15));
+  REQUIRE(spec.exercises.at(0).points.has_value());
+  CHECK(*spec.exercises[0].points == doctest::Approx(6.5).epsilon(1e-15));
+  CHECK(spec.exercises[0].questions.at("t").points == 2);  // a weight
+  CHECK_FALSE(spec.exercises[1].points.has_value());       // the kind's default
+  CHECK_FALSE(parse_spec("[[exercise]]\nkind = \"projection\"\n", "m.toml").scale.has_value());
+
+  SUBCASE("1. points that are not whole quarters") {
+    const auto e = error_of("[[exercise]]\nkind = \"projection\"\npoints = 2.3\n");
+    CHECK(e.find("my.toml:3:") == 0);
+    CHECK(e.find("exercise[1].points") != std::string::npos);
+    CHECK(e.find("0.25") != std::string::npos);
+  }
+  SUBCASE("2. negative points") {
+    CHECK(error_of("[[exercise]]\nkind = \"projection\"\npoints = -1\n").find("≥ 0") != std::string::npos);
+  }
+  SUBCASE("3. a scale that is not a positive number") {
+    CHECK(error_of("scale = 0\n[[exercise]]\nkind = \"projection\"\n").find("my.toml:1:") == 0);
+    CHECK(error_of("scale = \"20\"\n[[exercise]]\nkind = \"projection\"\n").find("'scale'") != std::string::npos);
+  }
+}

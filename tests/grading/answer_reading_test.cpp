@@ -2,6 +2,10 @@
 // as the sheets print them (or close), faces in any order and separator, blanks.
 #include <doctest/doctest.h>
 
+#include <string>
+#include <string_view>
+
+#include "exercises/texts.h"
 #include "grading/answer_reading.h"
 #include "grading/words.h"
 
@@ -77,4 +81,91 @@ TEST_CASE("folding words: case, accents, apostrophes, spaces, a final full stop"
   CHECK(epure::grading::fold_word("Œuvre") == "oeuvre");
   CHECK(epure::grading::read_word("Étudiant") == std::optional<std::string_view>("student"));
   CHECK(epure::grading::read_word("Feuille") == std::optional<std::string_view>("sheet"));
+}
+
+namespace {
+
+// A word as a student may also type it: accents left out (é → e, à → a, ’ → ').
+std::string without_accents(std::string_view s) {
+  static const std::pair<std::string_view, std::string_view> kPlain[] = {
+      {"\u00e9", "e"}, {"\u00e8", "e"}, {"\u00ea", "e"}, {"\u00e0", "a"}, {"\u00e2", "a"}, {"\u00f4", "o"},
+      {"\u00ee", "i"}, {"\u00e7", "c"}, {"\u00f9", "u"}, {"\u00fb", "u"}, {"\u2019", "'"}};
+  std::string out(s);
+  for (const auto& [from, to] : kPlain)
+    for (std::size_t at = out.find(from); at != std::string::npos; at = out.find(from, at + to.size()))
+      out.replace(at, from.size(), to);
+  return out;
+}
+
+std::string upper_ascii(std::string s) {
+  for (char& c : s)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("every wording a sheet prints for a choice reads back to its word, in every language") {
+  int seen = 0;
+  for (const auto& language : epure::builtin_languages()) {
+    const auto& texts = epure::Texts::builtin(language);
+    for (const auto& [key, text] : texts.all()) {
+      if (key.rfind("choice.", 0) != 0) continue;
+      const std::string word = key.substr(7);
+      for (const std::string& typed : {text, upper_ascii(text), without_accents(text), upper_ascii(without_accents(text))}) {
+        CAPTURE(language);
+        CAPTURE(typed);
+        const auto g = read_answer(typed, AnswerType::word);
+        REQUIRE(g.readable());
+        CHECK(g.word == word);
+      }
+      ++seen;
+    }
+  }
+  CHECK(seen >= 18);  // nine choices in each of two languages
+}
+
+TEST_CASE("every spelling the templates list reads back to its word, in every language") {
+  for (const auto& language : epure::builtin_languages()) {
+    const auto& texts = epure::Texts::builtin(language);
+    for (const auto& [key, list] : texts.all()) {
+      if (key.rfind("grading.read.", 0) != 0) continue;
+      const std::string token = key.substr(13);
+      std::string_view rest = list;
+      while (!rest.empty()) {
+        const auto comma = rest.find(',');
+        const std::string spelling = epure::grading::fold_word(rest.substr(0, comma));
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+        if (spelling.empty()) continue;
+        CAPTURE(language);
+        CAPTURE(spelling);
+        // one spelling, one meaning: a word two lists share would be read as either
+        const auto w = epure::grading::read_word(spelling);
+        REQUIRE(w.has_value());
+        CHECK(*w == token);
+      }
+    }
+  }
+}
+
+TEST_CASE("the sheets' own wordings of a miss, and short forms") {
+  for (const char* miss : {"passe à côté", "Passe a cote", "la droite passe à côté", "manqué", "MANQUE", "passes beside"}) {
+    CAPTURE(miss);
+    const auto g = read_answer(miss, AnswerType::word);
+    REQUIRE(g.readable());
+    CHECK(g.word == "miss");
+  }
+  for (const char* outside : {"à l'extérieur", "A L\u2019EXTERIEUR", "dehors", "outside"}) {
+    CAPTURE(outside);
+    CHECK(read_answer(outside, AnswerType::word).word == "outside");
+  }
+}
+
+TEST_CASE("an empty set of sides, as students write it") {
+  for (const char* none : {"aucun", "Aucune", "none", "\u2205", "-", "\u2014", "rien", "aucun côté", "{}"}) {
+    CAPTURE(none);
+    const auto g = read_answer(none, AnswerType::faces);
+    REQUIRE(g.readable());
+    CHECK(g.faces == 0);
+  }
 }

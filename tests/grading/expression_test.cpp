@@ -100,3 +100,21 @@ TEST_CASE("random strings of the parser's own tokens always come back") {
     if (p.ok) CHECK(std::isfinite(p.value));
   }
 }
+
+TEST_CASE("an angle with its unit, as students type it") {
+  CHECK(value("50,91\u00b0") == within(50.91, 1e-15, 0));
+  CHECK(value("\u221271,57 \u00b0") == within(-71.57, 1e-15, 0));
+  CHECK(value("50.91 deg") == within(50.91, 1e-15, 0));
+  CHECK(value("50,91 degr\u00e9s") == within(50.91, 1e-15, 0));
+  CHECK(value("50,91 degres") == within(50.91, 1e-15, 0));
+  CHECK(value("90 DEG") == within(90, 1e-15, 0));
+  CHECK(value("-12\u00a0\u00b0") == within(-12, 1e-15, 0));
+  CHECK(value("45 degrees") == within(45, 1e-15, 0));
+  CHECK(value("180/4\u00b0") == within(45, 1e-15, 0));
+  SUBCASE("1. the unit alone, twice, or radians: not a number") {
+    CHECK_FALSE(parse_number("\u00b0").ok);
+    CHECK_FALSE(parse_number(" deg").ok);
+    CHECK_FALSE(parse_number("5\u00b0\u00b0").ok);
+    CHECK_FALSE(parse_number("0.89 rad").ok);
+  }
+}

@@ -24,6 +24,30 @@ TEST_CASE("every mistake code has its sentence in every language") {
   }
 }
 
+TEST_CASE("the generic mistakes have their sentence in every language") {
+  for (const auto& language : epure::builtin_languages()) {
+    CAPTURE(language);
+    CHECK(epure::Texts::builtin(language).has("grading.mistake.swapped_coordinates"));
+  }
+}
+
+TEST_CASE("a choice, a yes/no and a set of sides are shown in the sheet's words") {
+  const auto key = epure::test::exercise(R"({"kind":"segments","A":[0,0],"B":[2,0],"C":[3,1],"D":[3,3]})",
+                                         {"intersects", "reason"});
+  const auto m = epure::test::mark(key, {{"intersects", "no"}, {"reason", "parallel"}});
+  const FeedbackText fr("fr", 2), en("en", 2);
+  const int reason = key.find("reason"), intersects = key.find("intersects");
+  REQUIRE(reason >= 0);
+  REQUIRE(intersects >= 0);
+  CHECK(fr.given_shown(key.questions[reason], m.marks[reason]) == "parallèles");
+  CHECK(en.given_shown(key.questions[reason], m.marks[reason]) == "parallel");
+  CHECK(fr.given_shown(key.questions[intersects], m.marks[intersects]) == "non");
+  // in the sentence too: "Attendu à l’extérieur, vous avez donné parallèles."
+  const std::string said = fr.sentence(key.questions[reason], m.marks[reason]);
+  CHECK(said.find("parallèles") != std::string::npos);
+  CHECK(said.find("parallel.") == std::string::npos);
+}
+
 TEST_CASE("sentences: named mistake, follow-through, unanswered, unreadable") {
   const auto key = epure::test::exercise(R"({"kind":"projection","A":[1,1],"B":[5,4],"C":[2,6]})",
                                          {"t", "P.x", "P.y", "position"}, {}, "isclose");

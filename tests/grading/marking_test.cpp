@@ -58,3 +58,35 @@ TEST_CASE("a point's coordinates earn their points separately unless the key mar
     CHECK(m.total() == doctest::Approx(0).epsilon(1e-12));
   }
 }
+
+TEST_CASE("coordinates typed the wrong way round are named, for any point") {
+  // P = (500, 0): swapped, it reads (0, 500)
+  const auto key = exercise(kFar, {"t", "P.x", "P.y"});
+  SUBCASE("1. swapped: both wrong, the mistake named on both") {
+    const auto m = mark(key, {{"t", "0.5"}, {"P.x", "0"}, {"P.y", "500"}});
+    CHECK(m["P.x"].verdict == Verdict::wrong);
+    CHECK(m["P.x"].mistake == "swapped_coordinates");
+    CHECK(m["P.y"].mistake == "swapped_coordinates");
+    CHECK(m.total() == doctest::Approx(1).epsilon(1e-12));
+  }
+  SUBCASE("2. swapped within the tolerance of the values they stand for") {
+    const auto m = mark(key, {{"P.x", "0,01"}, {"P.y", "499.8"}});
+    CHECK(m["P.x"].mistake == "swapped_coordinates");
+  }
+  SUBCASE("3. right, or merely wrong: no swap named") {
+    CHECK(mark(key, {{"P.x", "500"}, {"P.y", "0"}})["P.x"].mistake.empty());
+    const auto m = mark(key, {{"P.x", "3"}, {"P.y", "500"}});
+    CHECK(m["P.x"].mistake.empty());
+    CHECK(m["P.y"].mistake.empty());
+  }
+  SUBCASE("4. one coordinate blank: nothing to compare") {
+    CHECK(mark(key, {{"P.y", "500"}})["P.y"].mistake.empty());
+  }
+  SUBCASE("5. a point marked as a whole") {
+    const auto whole = exercise(kFar, {"P.x", "P.y"}, {}, "distance");
+    const auto m = mark(whole, {{"P.x", "0.01"}, {"P.y", "500"}});
+    CHECK(m["P.x"].mistake == "swapped_coordinates");
+    CHECK(m["P.y"].mistake == "swapped_coordinates");
+    CHECK(m.total() == doctest::Approx(0).epsilon(1e-12));
+  }
+}

@@ -37,9 +37,10 @@ struct Run {
   Outcome outcome;
 };
 
-Run grade(const std::string& csv, bool follow_through = true) {
+Run grade(const std::string& csv, bool follow_through = true, const std::string& language = "") {
   SessionOptions o;
   o.answers_name = "a.csv";
+  o.language = language;
   o.log = nullptr;
   o.follow_through = follow_through;
   GradingSession session(key(), std::move(o));
@@ -129,6 +130,24 @@ TEST_CASE("bad input, each case said with its line, every row reported") {
   SUBCASE("no sheet column: nothing can be graded") { CHECK_THROWS_AS(grade("name,2.t\nx,1\n"), std::runtime_error); }
 }
 
+TEST_CASE("what a French teacher reads about the rows is in French") {
+  SUBCASE("1. a mistyped id: the check character, and the nearest sheet") {
+    const auto run = grade("sheet,2.t\n1000-0005-002M,1\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "n’est pas un identifiant de feuille valide\u00a0: le caractère de contrôle ne correspond pas"));
+    CHECK(has_problem(run.outcome, 2, "la feuille la plus proche dans ce corrigé est 1000-0005-002N (à 1 caractère près)"));
+    CHECK_FALSE(has_problem(run.outcome, 2, "check character"));
+  }
+  SUBCASE("2. an answer to a question the sheet does not ask") {
+    const auto run = grade("sheet,4.reason\n1000-0005-002N,miss\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "réponses à des questions que la feuille 1000-0005-002N ne pose pas, non corrigées"));
+  }
+  SUBCASE("3. an unreadable value, and a short id") {
+    const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n1000-0005,1\n", true, "fr");
+    CHECK(has_problem(run.outcome, 2, "réponse illisible, comptée fausse\u00a0: 2.t \"abc\" n’est pas un nombre"));
+    CHECK(has_problem(run.outcome, 3, "un identifiant de feuille a 12 caractères, celui-ci en a 8"));
+  }
+}
+
 TEST_CASE("follow-through on and off change only the follow-through points") {
   // t = AB·AC/‖AB‖ on 002N's projection: A(7,3), B(2,1), C(9,5): AB = (−5,−2), AC = (2,2),
   // AB·AC = −14, ‖AB‖ = √29: t = −2.60, P = A + t·AB = (20, 8.2), still before A
@@ -144,4 +163,15 @@ TEST_CASE("edit distance between ids, as typed") {
   CHECK(id_distance("1000-0005-002N", "1000-0005-020N") == 1);  // two neighbours swapped
   CHECK(id_distance("1000-0005-002N", "1000-0005-O02N") == 0);  // O read as 0
   CHECK(id_distance("", "abc") == 3);
+}
+
+TEST_CASE("an id of another draw version, refused when keys are rebuilt, is said in the set's language") {
+  const std::vector<epure::SheetId> ids{epure::SheetId{epure::kDrawVersion, 5, 2}, epure::SheetId{9, 5, 0}};
+  const AnswerKey rebuilt = key_from_spec(epure::builtin_spec(), ids, "test");
+  const std::string other = epure::SheetId{9, 5, 0}.str();
+  const auto fr = find_sheet(rebuilt, other, epure::Texts::builtin("fr"));
+  CHECK(fr.sheet == nullptr);
+  CHECK(fr.why.find("a été tirée par la version 9 du générateur") != std::string::npos);
+  const auto en = find_sheet(rebuilt, other, epure::Texts::builtin("en"));
+  CHECK(en.why.find("was drawn by generator version 9") != std::string::npos);
 }

@@ -1,6 +1,9 @@
 // Class statistics from counts: mean, exact median, histogram bins, mistakes by frequency.
 #include <doctest/doctest.h>
 
+#include <utility>
+#include <vector>
+
 #include "grading/statistics.h"
 
 using namespace epure::grading;
@@ -50,6 +53,11 @@ TEST_CASE("mean, median, range and histogram of scores") {
   CHECK(stats.median() == doctest::Approx(5.75).epsilon(1e-12));  // (4 + 7.5)/2
   CHECK(stats.min() == doctest::Approx(2).epsilon(1e-12));
   CHECK(stats.max() == doctest::Approx(10).epsilon(1e-12));
+  // out of 10: the same in percent
+  CHECK(stats.mean_percent() == doctest::Approx(58.75).epsilon(1e-12));
+  CHECK(stats.median_percent() == doctest::Approx(57.5).epsilon(1e-12));
+  CHECK(stats.min_percent() == doctest::Approx(20).epsilon(1e-12));
+  CHECK(stats.max_percent() == doctest::Approx(100).epsilon(1e-12));
   CHECK(stats.questions()[0].asked == 4);
   CHECK(stats.questions()[0].credited == 1);
   const auto bins = stats.histogram(5);
@@ -60,6 +68,30 @@ TEST_CASE("mean, median, range and histogram of scores") {
   CHECK(bins[4].count == 1);  // 10, the last bin closed
   const auto mistakes = stats.mistakes();
   REQUIRE(mistakes.size() == 1);
+  CHECK(mistakes[0].count == 1);
   CHECK(mistakes[0].code == "far_intersection");
   CHECK(mistakes[0].question == "1.t");
+}
+
+TEST_CASE("percent of the maximum: each score against its own sheet's maximum") {
+  // two sheets of different maxima (a key from before every sheet was worth the same): the
+  // percentages are compared, not the raw points
+  const SheetKey sheet = one_question_sheet();
+  ClassStatistics stats({"1.t"});
+  std::vector<std::vector<int>> report_index = {{0}};
+  for (auto [score, max] : {std::pair{5.0, 10.0}, std::pair{3.0, 4.0}, std::pair{0.0, 0.0}}) {
+    ExerciseMarks marks(1);
+    marks[0].points = score;
+    std::vector<ExerciseMarks> all = {marks};
+    Submission s;
+    s.sheet = &sheet;
+    s.marks = all;
+    s.report_index = report_index;
+    s.score = score;
+    s.max = max;
+    stats.add(s);
+  }
+  CHECK(stats.mean_percent() == doctest::Approx((50.0 + 75.0 + 0.0) / 3).epsilon(1e-12));  // a sheet worth 0: 0 %
+  CHECK(stats.median_percent() == doctest::Approx(50).epsilon(1e-12));
+  CHECK(stats.max_percent() == doctest::Approx(75).epsilon(1e-12));
 }

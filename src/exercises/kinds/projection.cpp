@@ -42,6 +42,9 @@ struct ProjectionMethod {
   static constexpr method::QuestionDecl kQuestions[] = {
       {"t", AnswerType::number}, {"P", AnswerType::point}, {"position", AnswerType::choice, 1, kPositions}};
 
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 5;
+
   static constexpr std::string_view kMistakes[] = {"t_unsquared_norm", "t_not_divided"};
 
   // t = AB·AC / AB·AB, rounded; P = A + t·AB; P's place on the line from t.

@@ -61,6 +61,9 @@ struct RayCircle {
       {"N", AnswerType::point},       {"reason", AnswerType::choice, 1, kReasons}};
 
   static constexpr std::string_view kRoads[] = {"pythagoras_apc"};
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 7;
+
   static constexpr std::string_view kMistakes[] = {"direction_not_unit", "far_intersection", "near_root_inside",
                                                    "normal_not_unit", "normal_inward"};
 

@@ -101,6 +101,9 @@ struct RaySquareMethod {
       {"faces", AnswerType::faces, 1, kFaceNames}, {"inside", AnswerType::boolean}, {"hit", AnswerType::boolean},
       {"t", AnswerType::number},                   {"I", AnswerType::point},        {"N", AnswerType::point}};
 
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 6;
+
   static constexpr std::string_view kMistakes[] = {"faces_wrong_half_planes", "faces_inner_half_planes", "faces_from_direction",
                                                    "direction_not_unit", "normal_inward"};
 

@@ -78,6 +78,9 @@ struct SegmentsMethod {
                                                         {"I", AnswerType::point},
                                                         {"reason", AnswerType::choice, 1, kReasons}};
 
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 4;
+
   static constexpr std::string_view kMistakes[] = {"t_swapped", "cross_sign"};
 
   // The student's hand method, in the course's order: AB∧CD (zero: parallel, and collinear when

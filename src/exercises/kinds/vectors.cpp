@@ -89,6 +89,9 @@ struct VectorsMethod {
       {"norm_v", AnswerType::number}, {"cos", AnswerType::number},   {"sin", AnswerType::number},
       {"angle_deg", AnswerType::number}};
 
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 7;
+
   static constexpr std::string_view kMistakes[] = {"norm_not_rooted", "angle_unsigned", "cross_sign", "angle_radians"};
 
   // The student's hand method, in the course's order: u·v, u∧v, ‖u‖, ‖v‖, then cos and sin by
