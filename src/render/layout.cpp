@@ -21,6 +21,11 @@ constexpr double kCentredBaseline = 0.36;
 // Page space is compared in points summed from a few dozen terms; this much rounding never
 // decides a page break.
 constexpr double kFitSlack = 1e-6;
+// A section's opening (statement, first figure and its fields) that does not fit in what is
+// left of a page goes whole to the next one only when at most this share of the page's text
+// height is left; with more room it starts here and is broken between lines, since keeping
+// every opening whole leaves a sheet's pages half empty (6 pages a sheet instead of under 5).
+constexpr double kMaxOpeningWaste = 0.2;
 
 // Horizontal gaps, in points.
 constexpr double kPromptGap = 8;    // after a prompt column
@@ -31,6 +36,12 @@ constexpr double kOptionGap = 16;   // between two options
 constexpr double kHeaderGap = 12;   // between the header's left and right columns
 constexpr double kSideGap = 18;     // between a figure and the fields or answers beside it
 constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fields' prompts
+// A key's answer too long for the cell beside its prompt, in a column beside a figure, goes on
+// the line under the prompt, this much indented, so that a value is never wrapped.
+constexpr double kStackIndent = 12;
+// Wider than any line a page holds: what wrapping gives for this width is the text's own lines
+// (only its '\n' break it).
+constexpr double kUnbounded = 1e9;
 // The name fields: the name gets the larger share of the line (names are longer than student
 // numbers); a writing line starts a little after its label and runs just under the baseline,
 // below the descenders (0.24 em).
@@ -118,6 +129,7 @@ struct Atom {
   int section = -1, block = -1;
   // The blocks set beside a figure in this atom, with rectangles from the atom's top.
   std::vector<PlacedBlock> side_blocks;
+  bool wrapped = false;  // a key's answer broken over lines it does not ask for
   Fragment content;
 };
 
@@ -328,6 +340,7 @@ class Builder {
       width_ = full_right - left_;
       // A narrow column keeps its boxes whole and wraps its long prompts instead.
       prompt_share_ = kSidePromptShare;
+      stack_answers_ = true;
       for (std::size_t i = from; i < to; ++i) {
         const int b = static_cast<int>(i);
         if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
@@ -342,6 +355,7 @@ class Builder {
       left_ = full_left;
       width_ = full_width;
       prompt_share_ = s_.prompt_column_max;
+      stack_answers_ = false;
       std::vector<Atom> side(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(mark)),
                              std::make_move_iterator(atoms_.end()));
       atoms_.resize(mark);
@@ -361,6 +375,8 @@ class Builder {
           if (!(t.ink == Ink::muted))
             fits = fits && t.baseline.x + text_width(t.runs, t.size) <= room + kFitSlack;
       }
+      // A value wrapped to fit the column is worse than the answers under the figure.
+      for (const Atom& atom : side) fits = fits && !atom.wrapped;
       if (!fits) continue;
       const auto [w, h] = figure_size(f, figure_w);
       if (height > std::max(h, max_h)) return false;  // a wider column would not be shorter by much
@@ -527,16 +543,34 @@ class Builder {
 
     auto id = plain(l.question_id);
     const double id_w = l.question_id.empty() ? 0 : text_width(id, s_.id_size);
-    const double answer_x = left_ + key_column_;
-    const double answer_w = right_ - answer_x - (id_w > 0 ? id_w + kIdGap : 0);
+    const double id_room = id_w > 0 ? id_w + kIdGap : 0;
+    double answer_x = left_ + key_column_;
+    double prompt_w = key_column_ - kPromptGap;
+    auto answer = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+    const std::size_t own_lines = wrap_rich_text(l.answer, size, kUnbounded).size();
+    bool stacked = false;
+    if (stack_answers_ && answer.size() > own_lines) {
+      // Prompt on its line, the answer under it with the column's whole width.
+      answer_x = left_ + kStackIndent;
+      auto under = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+      if (under.size() < answer.size()) {
+        answer = std::move(under);
+        prompt_w = right_ - left_ - id_room;
+        stacked = true;
+      } else {
+        answer_x = left_ + key_column_;
+      }
+    }
+    a.wrapped = answer.size() > own_lines;
 
     double y = pad + size * kBaseline;
     std::size_t rows = 0;
-    for (auto& runs : wrap_rich_text(l.prompt, size, key_column_ - kPromptGap)) {
+    for (auto& runs : wrap_rich_text(l.prompt, size, prompt_w)) {
       a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
     }
-    std::size_t answer_rows = 0;
-    for (auto& runs : wrap_rich_text(l.answer, size, answer_w)) {
+    const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
+    std::size_t answer_rows = first_answer_row;
+    for (auto& runs : answer) {
       a.content.text(std::move(runs), answer_x, y + static_cast<double>(answer_rows++) * body_line_,
                      size, Ink::answer);
     }
@@ -585,12 +619,23 @@ class Builder {
           const double group = span(i, group_end);
           bool fresh = !fits(space + group) && group <= page;
           if (!fresh && atom.section_start) {
-            // Keep a section whole when a fresh page would hold it; failing that, its statement.
+            // Sections share pages (a sheet on four pages, not one exercise a page), but a
+            // section's opening stays on one page: its statement, up to its first figure or
+            // field, with the run of fields or answers that follows it, so that a page never
+            // ends on a question nobody can answer there.
             std::size_t end = i + 1;
             while (end < atoms_.size() && !atoms_[end].section_start) ++end;
-            const double whole = span(i, end);
-            const double head = span(i, i + atom.head_atoms);
-            fresh = !fits(space + whole) && (whole <= page || (!fits(space + head) && head <= page));
+            std::size_t head_end = std::min(i + atom.head_atoms, end);
+            if (head_end < end) {
+              ++head_end;
+              while (head_end < end && !atoms_[head_end].break_before) ++head_end;
+            }
+            const double head = span(i, head_end);
+            // Moved whole to a fresh page only when that wastes little of this one; otherwise
+            // it starts here and breaks where its lines allow (never between a figure and the
+            // end of the paragraph before it): a figure's height is the unit of waste.
+            const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
+            fresh = !fits(space + head) && head <= page && little_left;
           }
           if (fresh) new_page();
         }
@@ -669,6 +714,7 @@ class Builder {
   double width_;
   const double top_, bottom_, body_line_;
   double prompt_share_ = s_.prompt_column_max;  // of width_, at most, for the fields' prompts
+  bool stack_answers_ = false;  // in a column beside a figure: a long answer under its prompt
 
   std::vector<Atom> atoms_;
   bool after_heading_ = false;
