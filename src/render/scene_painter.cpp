@@ -862,6 +862,7 @@ SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, 
                   c.y_min + first_baseline, size, style.caption);
   }
   double note_baseline = layout.notes.y_min + first_baseline;
+  bool first_note = true;
   for (std::size_t i = 0; i < layout.links.size() && i < scene.links.size(); ++i) {
     if (scene.links[i].empty()) continue;
     const Box& g = layout.links[i];
@@ -874,6 +875,10 @@ SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, 
                     style.caption);
     } else {
       const auto lines = wrap_rich_text(scene.links[i], size, layout.notes.width());
+      // A superscript (T^{−1}) reaches above the capitals: the first line drops to keep it in.
+      if (first_note && !lines.empty())
+        note_baseline += std::max(0.0, text_extent(lines[0], size).ascent - first_baseline);
+      first_note = false;
       centred_lines(canvas, lines, (layout.notes.x_min + layout.notes.x_max) / 2, note_baseline, size,
                     style.caption);
       note_baseline += static_cast<double>(lines.size()) * size * kLineSpacing;

@@ -549,6 +549,31 @@ TEST_CASE("layout: a figure's fields and a key's answers beside it, when they fi
     CHECK(answer_seen);
   }
 
+  SUBCASE("a key's long answers beside the figure: under their prompt, never wrapped") {
+    Document key = sample(1);
+    key.student_fields = false;
+    auto& blocks = key.sections[0].blocks;
+    blocks.erase(blocks.begin() + 3, blocks.end());
+    const std::string point = "(−5√2/8 ≈ −0.88, −3√2/4 ≈ −1.06)";
+    blocks.emplace_back(AnswerLine{"6.Ac", "A_{c} =", point});
+    blocks.emplace_back(AnswerLine{"6.N", "\\vec{N} =", "(−0.21, −0.26)"});
+    const auto pages = layout_document(key);
+    REQUIRE(pages[0].figures.size() == 1);
+    const PageRect fig = pages[0].figures[0].rect;
+    int answers = 0;
+    double prompt_y = 0, answer_y = 0;
+    for (const PlacedText& t : pages[0].texts) {
+      if (joined(t) == "A =" || joined(t) == "Ac =") prompt_y = t.baseline.y;
+      if (t.ink != Ink::answer) continue;
+      ++answers;
+      CHECK(t.baseline.x > fig.right());  // still beside the figure
+      if (joined(t) == point) answer_y = t.baseline.y;
+    }
+    CHECK(answers == 2);  // one line each: the point whole
+    CHECK(answer_y > 0);
+    if (prompt_y > 0) CHECK(answer_y > prompt_y);  // on the line under its prompt
+  }
+
   SUBCASE("fields too many for the figure's height go below it, centred as before") {
     Document doc = sample(1);
     for (int k = 0; k < 30; ++k)
