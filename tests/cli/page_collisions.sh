@@ -2,8 +2,9 @@
 # No text over text on any printed page: the class-set PDFs of many seeds (every kind of the
 # course and, over the seeds, its branches), both languages, every difficulty, A4 and Letter,
 # sheets and keys, checked word by word with pdftotext -bbox (tests/tools/page_collisions.py: an
-# overlap of more than 1 pt both across and down is a collision). 144 sheets and their keys,
-# about 1,900 pages; the sets are generated two at a time (about 30 s on two cores).
+# overlap of more than 1 pt both across and down is a collision), and a class's feedback sheets.
+# 144 sheets and their keys, about 1,900 pages; the sets are generated two at a time (about 30 s
+# on two cores).
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -34,5 +35,11 @@ for s in "${sets[@]}"; do
 done
 wait
 ls "$tmp"/*.failed >/dev/null 2>&1 && fail "$(cat "$tmp"/*.failed)"
-python3 "$checker" "$tmp"/*/sheets.pdf "$tmp"/*/keys.pdf || fail "text printed over text (above)"
+# The feedback sheets of a marked class (tests/grading/data), in both languages.
+data=$EPURE_SOURCE_DIR/tests/grading/data
+for lang in en fr; do
+  "$EPURE" grade --key "$data/key_small.json" --answers "$data/export_fr.csv" --report "$tmp/marks-$lang.csv" \
+    --feedback "$tmp/feedback-$lang" --lang "$lang" -q || fail "grade --lang $lang"
+done
+python3 "$checker" "$tmp"/*/sheets.pdf "$tmp"/*/keys.pdf "$tmp"/feedback-*/*.pdf || fail "text printed over text (above)"
 echo "page collisions: ok"
