@@ -23,7 +23,7 @@ constexpr double kCentredBaseline = 0.36;
 constexpr double kFitSlack = 1e-6;
 // A section's opening (statement, first figure and its fields) that does not fit in what is
 // left of a page goes whole to the next one only when at most this share of the page's text
-// height is left; with more room it starts here and is broken between lines, since keeping
+// height is left; with more room it starts here and is broken (see open_section), since keeping
 // every opening whole leaves a sheet's pages half empty (6 pages a sheet instead of under 5).
 constexpr double kMaxOpeningWaste = 0.2;
 
@@ -609,41 +609,49 @@ class Builder {
       Atom& atom = atoms_[i];
       const double space = empty_ ? 0 : atom.space_before;
       if (i >= group_end) {
+        if (!empty_ && atom.section_start) open_section(i, space);
         // A new group: the atoms up to the next place a page may end.
         group_end = i + 1;
         while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
         if (!empty_) {
           // A group goes to a fresh page when it does not fit here but would there; one taller
           // than a page starts here, since it must be broken anyway.
-          const double page = bottom_ - top_ + kFitSlack;
           const double group = span(i, group_end);
-          bool fresh = !fits(space + group) && group <= page;
-          if (!fresh && atom.section_start) {
-            // Sections share pages (a sheet on four pages, not one exercise a page), but a
-            // section's opening stays on one page: its statement, up to its first figure or
-            // field, with the run of fields or answers that follows it, so that a page never
-            // ends on a question nobody can answer there.
-            std::size_t end = i + 1;
-            while (end < atoms_.size() && !atoms_[end].section_start) ++end;
-            std::size_t head_end = std::min(i + atom.head_atoms, end);
-            if (head_end < end) {
-              ++head_end;
-              while (head_end < end && !atoms_[head_end].break_before) ++head_end;
-            }
-            const double head = span(i, head_end);
-            // Moved whole to a fresh page only when that wastes little of this one; otherwise
-            // it starts here and breaks where its lines allow (never between a figure and the
-            // end of the paragraph before it): a figure's height is the unit of waste.
-            const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
-            fresh = !fits(space + head) && head <= page && little_left;
-          }
-          if (fresh) new_page();
+          if (!fits(space + group) && group <= bottom_ - top_ + kFitSlack) new_page();
         }
       } else if (!empty_ && !fits(space + atom.height)) {
         new_page();  // a group taller than a page: broken where it must be
       }
       place(atom);
     }
+  }
+
+  // Sections share pages (a sheet on four pages, not one exercise a page); a section's opening
+  // (its statement up to its first figure or field, with the run of fields or answers after it)
+  // that does not fit in what is left of this page goes whole to the next one only when that
+  // wastes little of this one. Otherwise it starts here; and when its statement fits here whole,
+  // the page may end between the statement and its figure, so that the statement is read in one
+  // piece rather than its last lines carried over with the figure.
+  void open_section(std::size_t i, double space) {
+    const Atom& atom = atoms_[i];
+    std::size_t end = i + 1;
+    while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+    std::size_t head_end = std::min(i + atom.head_atoms, end);
+    if (head_end < end) {
+      ++head_end;
+      while (head_end < end && !atoms_[head_end].break_before) ++head_end;
+    }
+    const double head = span(i, head_end);
+    if (fits(space + head)) return;
+    const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
+    if (head <= bottom_ - top_ + kFitSlack && little_left) {
+      new_page();
+      return;
+    }
+    const std::size_t figure = i + atom.head_atoms - 1;
+    if (atom.head_atoms > 1 && figure < end && !atoms_[figure].content.figures.empty() &&
+        fits(space + span(i, figure)))
+      atoms_[figure].break_before = true;
   }
 
   void place(Atom& atom) {
