@@ -36,8 +36,8 @@ constexpr double kOptionGap = 16;   // between two options
 constexpr double kHeaderGap = 12;   // between the header's left and right columns
 constexpr double kSideGap = 18;     // between a figure and the fields or answers beside it
 constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fields' prompts
-// A key's answer too long for the cell beside its prompt, in a column beside a figure, goes on
-// the line under the prompt, this much indented, so that a value is never wrapped.
+// A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
+// much indented, when that wraps it less (a point or a value is then on one line).
 constexpr double kStackIndent = 12;
 // Wider than any line a page holds: what wrapping gives for this width is the text's own lines
 // (only its '\n' break it).
@@ -340,7 +340,6 @@ class Builder {
       width_ = full_right - left_;
       // A narrow column keeps its boxes whole and wraps its long prompts instead.
       prompt_share_ = kSidePromptShare;
-      stack_answers_ = true;
       for (std::size_t i = from; i < to; ++i) {
         const int b = static_cast<int>(i);
         if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
@@ -355,7 +354,6 @@ class Builder {
       left_ = full_left;
       width_ = full_width;
       prompt_share_ = s_.prompt_column_max;
-      stack_answers_ = false;
       std::vector<Atom> side(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(mark)),
                              std::make_move_iterator(atoms_.end()));
       atoms_.resize(mark);
@@ -549,7 +547,7 @@ class Builder {
     auto answer = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
     const std::size_t own_lines = wrap_rich_text(l.answer, size, kUnbounded).size();
     bool stacked = false;
-    if (stack_answers_ && answer.size() > own_lines) {
+    if (answer.size() > own_lines) {
       // Prompt on its line, the answer under it with the column's whole width.
       answer_x = left_ + kStackIndent;
       auto under = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
@@ -722,7 +720,6 @@ class Builder {
   double width_;
   const double top_, bottom_, body_line_;
   double prompt_share_ = s_.prompt_column_max;  // of width_, at most, for the fields' prompts
-  bool stack_answers_ = false;  // in a column beside a figure: a long answer under its prompt
 
   std::vector<Atom> atoms_;
   bool after_heading_ = false;
