@@ -333,6 +333,10 @@ class Builder {
     for (double column : {full_width - kSideGap - natural, full_width * 0.45, full_width * 0.5}) {
       const double figure_w = std::min(natural, full_width - kSideGap - column);
       if (figure_w < full_width * s_.figure_min_share) break;
+      // Panels side by side (a world frame and a canonical one) share the figure's width: one
+      // narrowed for a column would leave each a few centimetres wide, so it keeps its width
+      // and the answers go under it when they do not fit beside it.
+      if (f.scene.panels.size() > 1 && figure_w < natural - kFitSlack) break;
       // The column's atoms, made by the usual code with the geometry narrowed to the column.
       const std::size_t mark = atoms_.size();
       const bool heading_flag = after_heading_, figure_flag = after_figure_;

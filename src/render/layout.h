@@ -13,7 +13,8 @@
 // never between a Figure and the Paragraph just before it, never leaving one line of a
 // paragraph alone, never inside a run of fields or a key's table that a page could hold.
 // A figure followed by fields or a key's answers has them beside it, in a column on its right,
-// when they fit there (half the paper of one above the other).
+// when they fit there (half the paper of one above the other); a figure of several panels side
+// by side is never narrowed for that column.
 #include <string>
 #include <vector>
 

@@ -588,6 +588,24 @@ TEST_CASE("layout: a figure's fields and a key's answers beside it, when they fi
     if (prompt_y > 0) CHECK(answer_y > prompt_y);  // on the line under its prompt
   }
 
+  SUBCASE("a figure of two panels keeps its width: its answers go under it") {
+    Document key = sample(1);
+    key.student_fields = false;
+    auto& blocks = key.sections[0].blocks;
+    blocks.erase(blocks.begin() + 2, blocks.end());  // heading, paragraph
+    Scene two = square_scene();
+    two.panels.push_back(two.panels[0]);
+    two.links = {"T^{−1}"};
+    blocks.emplace_back(Figure{two, 0.9});
+    blocks.emplace_back(AnswerLine{"6.t", "t =", "3.56"});
+    const auto pages = layout_document(key);
+    REQUIRE(pages[0].figures.size() == 1);
+    const PageRect fig = pages[0].figures[0].rect;
+    CHECK(fig.width == doctest::Approx(0.9 * width));
+    for (const PlacedText& t : pages[0].texts)
+      if (t.ink == Ink::answer) CHECK(t.baseline.y > fig.bottom());
+  }
+
   SUBCASE("fields too many for the figure's height go below it, centred as before") {
     Document doc = sample(1);
     for (int k = 0; k < 30; ++k)
