@@ -420,12 +420,36 @@ class Builder {
   // The prompt column shared by a run of consecutive fields, so that their boxes line up.
   double field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
     double widest = 0;
+    // What the run's boxes need right of the prompts: a point's "( □ ; □ )", a number's box, a
+    // single tick option (options wrap to more rows), and the question id at the right edge.
+    double body = 0;
+    const double size = s_.body_size;
+    using K = AnswerField::Kind;
     for (std::size_t i = from; i < blocks.size(); ++i) {
       const auto* f = std::get_if<AnswerField>(&blocks[i]);
       if (!f) break;
-      widest = std::max(widest, text_width(f->prompt, s_.body_size));
+      widest = std::max(widest, text_width(f->prompt, size));
+      const double id = f->question_id.empty() ? 0 : text_width(f->question_id, s_.id_size) + kIdGap;
+      double need = s_.number_box_width;
+      if (f->kind == K::point || f->kind == K::point3) {
+        const int n = f->kind == K::point3 ? 3 : 2;
+        const double box = f->kind == K::point3 ? s_.point3_box_width : s_.point_box_width;
+        need = text_width("(", size) + text_width(")", size) + (n - 1) * text_width(";", size) +
+               n * box + 2 * n * kBoxGap;
+      } else if (f->kind != K::number) {
+        need = 0;
+        for (const auto& c : f->choices) need = std::max(need, s_.tick_size + kTickGap + text_width(c, size));
+        if (f->kind == K::boolean)
+          for (const auto& w : {doc_.words.yes, doc_.words.no})
+            need = std::max(need, s_.tick_size + kTickGap + text_width(w, size));
+      }
+      body = std::max(body, need + id);
     }
-    return std::min(widest + kPromptGap, width_ * prompt_share_);
+    // The prompts take what the boxes leave, and at least their usual share: a narrow column
+    // beside a figure no longer wraps "If they do not intersect, why?" over four lines when the
+    // boxes leave room for two.
+    const double room = std::max(width_ * prompt_share_, width_ - body - kFitSlack);
+    return std::min(widest + kPromptGap, room);
   }
 
   double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
