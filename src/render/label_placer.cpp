@@ -12,6 +12,10 @@ namespace {
 // Distances from the anchor to the label's box tried in turn, beyond the request's gap: close
 // first, farther only when everything near is taken.
 constexpr double kRings[] = {0, 3, 7, 12, 18, 26};
+// When nothing near is clear (a crowded corner: a point, its vector and the centre beside it),
+// these farther rings are tried before a label is set over something; a label placed there gets
+// a leader line to its anchor, so that it still names its point.
+constexpr double kFarRings[] = {36, 48, 62};
 // Rings from this index on try 16 directions instead of 8.
 constexpr std::size_t kFineRing = 2;
 // A box must stay this far inside its panel.
@@ -93,6 +97,9 @@ class Placer {
               area.y_max - kAreaMargin} {}
 
   Placement place(const LabelRequest& r) {
+    above_ = r.type_above;
+    below_ = r.type_below;
+    side_ = r.type_side;
     // Most labels take their first or second candidate: test each as it is made.
     Box found{};
     if (for_each_candidate(r, [&](const Box& b) {
@@ -101,6 +108,18 @@ class Placer {
           return true;
         })) {
       return accept(found, true);
+    }
+    for (double ring : kFarRings) {
+      for (const P2& t : kFine) {
+        const P2 prefer = unit(std::hypot(r.prefer.x, r.prefer.y) > 0 ? r.prefer : P2{1, -1});
+        const P2 u{prefer.x * t.x - prefer.y * t.y, prefer.x * t.y + prefer.y * t.x};
+        const Box b = candidate(r.anchor, u, r.gap + ring, r.width, r.height);
+        if (clean(b) && leader_clear(r.anchor, b)) {
+          Placement p = accept(b, true);
+          p.leader = true;
+          return p;
+        }
+      }
     }
     // No clean spot: the least bad one (the first of equals).
     double best_penalty = std::numeric_limits<double>::infinity();
@@ -155,9 +174,24 @@ class Placer {
     return false;
   }
 
+  Box type_of(const Box& b) const {
+    return {b.x_min - side_, b.y_min - above_, b.x_max + side_, b.y_max + below_};
+  }
+
   Placement accept(const Box& b, bool is_clean) {
     placed_.push_back(b);
-    return {b, is_clean};
+    placed_types_.push_back(type_of(b));
+    return {b, placed_types_.back(), is_clean};
+  }
+
+  // The leader from the anchor to the box's nearest point crosses no other label.
+  bool leader_clear(P2 anchor, const Box& b) const {
+    const P2 end{std::clamp(anchor.x, b.x_min, b.x_max), std::clamp(anchor.y, b.y_min, b.y_max)};
+    for (const Box& p : placed_types_)
+      if (segment_hits_box(anchor, end, p)) return false;
+    for (const Box& p : obstacles_.boxes)
+      if (segment_hits_box(anchor, end, p)) return false;
+    return true;
   }
 
   bool clean(const Box& b) const {
@@ -165,6 +199,10 @@ class Placer {
     const Box c = inflate(b, kLabelClearance);
     for (const Box& p : placed_) {
       if (boxes_overlap(c, p)) return false;
+    }
+    const Box t = type_of(b);
+    for (const Box& p : placed_types_) {
+      if (boxes_overlap(t, p)) return false;
     }
     for (const Box& p : obstacles_.boxes) {
       if (boxes_overlap(c, p)) return false;
@@ -182,6 +220,8 @@ class Placer {
     const Box c = inflate(b, kLabelClearance);
     double p = kOutsideWeight * outside_amount(b, area_);
     for (const Box& o : placed_) p += kOverlapWeight * overlap_area(c, o);
+    const Box t = type_of(b);
+    for (const Box& o : placed_types_) p += kOverlapWeight * overlap_area(t, o);
     for (const Box& o : obstacles_.boxes) p += kOverlapWeight * overlap_area(c, o);
     for (const auto& d : obstacles_.discs) {
       if (disc_hits_box(d.c, d.r, c)) p += kCrossWeight * 2 * d.r;
@@ -198,6 +238,8 @@ class Placer {
   const Obstacles& obstacles_;
   Box area_;
   std::vector<Box> placed_;
+  std::vector<Box> placed_types_;  // the same labels' type boxes
+  double above_ = 0, below_ = 0, side_ = 0;  // the current request's type_above, _below, _side
 };
 
 }  // namespace

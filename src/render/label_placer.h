@@ -39,11 +39,21 @@ struct LabelRequest {
   // direction. The label is then first tried beside the stroke, on the preferred side and then
   // on the other, sliding along it, before the directions around the anchor.
   P2 along{0, 0};
+  // How far the text's type box (the font's ascent to its descent: the line a reader, and a
+  // PDF's text extraction, takes the text to fill) reaches above and below the ink box. Two
+  // labels keep their type boxes apart, not only their ink, so that a subscript never sits in
+  // the line of the label under it.
+  double type_above = 0, type_below = 0;
+  // And beside it: two labels keep this much more room between them across, so that text
+  // extraction (and a reader) sees two words, not one run together.
+  double type_side = 0;
 };
 
 struct Placement {
   Box box;
+  Box type;           // `box` with the request's type_above and type_below
   bool clean = true;  // false: no candidate was clear; `box` is the least bad one
+  bool leader = false;  // placed far from its anchor: a leader line joins them
 };
 
 // Clearance kept between a label's box and anything else, points.

@@ -21,6 +21,11 @@ constexpr double kCentredBaseline = 0.36;
 // Page space is compared in points summed from a few dozen terms; this much rounding never
 // decides a page break.
 constexpr double kFitSlack = 1e-6;
+// A section's opening (statement, first figure and its fields) that does not fit in what is
+// left of a page goes whole to the next one only when at most this share of the page's text
+// height is left; with more room it starts here and is broken (see open_section), since keeping
+// every opening whole leaves a sheet's pages half empty (6 pages a sheet instead of under 5).
+constexpr double kMaxOpeningWaste = 0.2;
 
 // Horizontal gaps, in points.
 constexpr double kPromptGap = 8;    // after a prompt column
@@ -31,6 +36,12 @@ constexpr double kOptionGap = 16;   // between two options
 constexpr double kHeaderGap = 12;   // between the header's left and right columns
 constexpr double kSideGap = 18;     // between a figure and the fields or answers beside it
 constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fields' prompts
+// A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
+// much indented, when that wraps it less (a point or a value is then on one line).
+constexpr double kStackIndent = 12;
+// Wider than any line a page holds: what wrapping gives for this width is the text's own lines
+// (only its '\n' break it).
+constexpr double kUnbounded = 1e9;
 // The name fields: the name gets the larger share of the line (names are longer than student
 // numbers); a writing line starts a little after its label and runs just under the baseline,
 // below the descenders (0.24 em).
@@ -118,6 +129,7 @@ struct Atom {
   int section = -1, block = -1;
   // The blocks set beside a figure in this atom, with rectangles from the atom's top.
   std::vector<PlacedBlock> side_blocks;
+  bool wrapped = false;  // a key's answer broken over lines it does not ask for
   Fragment content;
 };
 
@@ -321,6 +333,10 @@ class Builder {
     for (double column : {full_width - kSideGap - natural, full_width * 0.45, full_width * 0.5}) {
       const double figure_w = std::min(natural, full_width - kSideGap - column);
       if (figure_w < full_width * s_.figure_min_share) break;
+      // Panels side by side (a world frame and a canonical one) share the figure's width: one
+      // narrowed for a column would leave each a few centimetres wide, so it keeps its width
+      // and the answers go under it when they do not fit beside it.
+      if (f.scene.panels.size() > 1 && figure_w < natural - kFitSlack) break;
       // The column's atoms, made by the usual code with the geometry narrowed to the column.
       const std::size_t mark = atoms_.size();
       const bool heading_flag = after_heading_, figure_flag = after_figure_;
@@ -361,6 +377,8 @@ class Builder {
           if (!(t.ink == Ink::muted))
             fits = fits && t.baseline.x + text_width(t.runs, t.size) <= room + kFitSlack;
       }
+      // A value wrapped to fit the column is worse than the answers under the figure.
+      for (const Atom& atom : side) fits = fits && !atom.wrapped;
       if (!fits) continue;
       const auto [w, h] = figure_size(f, figure_w);
       if (height > std::max(h, max_h)) return false;  // a wider column would not be shorter by much
@@ -402,12 +420,36 @@ class Builder {
   // The prompt column shared by a run of consecutive fields, so that their boxes line up.
   double field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
     double widest = 0;
+    // What the run's boxes need right of the prompts: a point's "( □ ; □ )", a number's box, a
+    // single tick option (options wrap to more rows), and the question id at the right edge.
+    double body = 0;
+    const double size = s_.body_size;
+    using K = AnswerField::Kind;
     for (std::size_t i = from; i < blocks.size(); ++i) {
       const auto* f = std::get_if<AnswerField>(&blocks[i]);
       if (!f) break;
-      widest = std::max(widest, text_width(f->prompt, s_.body_size));
+      widest = std::max(widest, text_width(f->prompt, size));
+      const double id = f->question_id.empty() ? 0 : text_width(f->question_id, s_.id_size) + kIdGap;
+      double need = s_.number_box_width;
+      if (f->kind == K::point || f->kind == K::point3) {
+        const int n = f->kind == K::point3 ? 3 : 2;
+        const double box = f->kind == K::point3 ? s_.point3_box_width : s_.point_box_width;
+        need = text_width("(", size) + text_width(")", size) + (n - 1) * text_width(";", size) +
+               n * box + 2 * n * kBoxGap;
+      } else if (f->kind != K::number) {
+        need = 0;
+        for (const auto& c : f->choices) need = std::max(need, s_.tick_size + kTickGap + text_width(c, size));
+        if (f->kind == K::boolean)
+          for (const auto& w : {doc_.words.yes, doc_.words.no})
+            need = std::max(need, s_.tick_size + kTickGap + text_width(w, size));
+      }
+      body = std::max(body, need + id);
     }
-    return std::min(widest + kPromptGap, width_ * prompt_share_);
+    // The prompts take what the boxes leave, and at least their usual share: a narrow column
+    // beside a figure no longer wraps "If they do not intersect, why?" over four lines when the
+    // boxes leave room for two.
+    const double room = std::max(width_ * prompt_share_, width_ - body - kFitSlack);
+    return std::min(widest + kPromptGap, room);
   }
 
   double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
@@ -527,16 +569,34 @@ class Builder {
 
     auto id = plain(l.question_id);
     const double id_w = l.question_id.empty() ? 0 : text_width(id, s_.id_size);
-    const double answer_x = left_ + key_column_;
-    const double answer_w = right_ - answer_x - (id_w > 0 ? id_w + kIdGap : 0);
+    const double id_room = id_w > 0 ? id_w + kIdGap : 0;
+    double answer_x = left_ + key_column_;
+    double prompt_w = key_column_ - kPromptGap;
+    auto answer = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+    const std::size_t own_lines = wrap_rich_text(l.answer, size, kUnbounded).size();
+    bool stacked = false;
+    if (answer.size() > own_lines) {
+      // Prompt on its line, the answer under it with the column's whole width.
+      answer_x = left_ + kStackIndent;
+      auto under = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+      if (under.size() < answer.size()) {
+        answer = std::move(under);
+        prompt_w = right_ - left_ - id_room;
+        stacked = true;
+      } else {
+        answer_x = left_ + key_column_;
+      }
+    }
+    a.wrapped = answer.size() > own_lines;
 
     double y = pad + size * kBaseline;
     std::size_t rows = 0;
-    for (auto& runs : wrap_rich_text(l.prompt, size, key_column_ - kPromptGap)) {
+    for (auto& runs : wrap_rich_text(l.prompt, size, prompt_w)) {
       a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
     }
-    std::size_t answer_rows = 0;
-    for (auto& runs : wrap_rich_text(l.answer, size, answer_w)) {
+    const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
+    std::size_t answer_rows = first_answer_row;
+    for (auto& runs : answer) {
       a.content.text(std::move(runs), answer_x, y + static_cast<double>(answer_rows++) * body_line_,
                      size, Ink::answer);
     }
@@ -575,30 +635,49 @@ class Builder {
       Atom& atom = atoms_[i];
       const double space = empty_ ? 0 : atom.space_before;
       if (i >= group_end) {
+        if (!empty_ && atom.section_start) open_section(i, space);
         // A new group: the atoms up to the next place a page may end.
         group_end = i + 1;
         while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
         if (!empty_) {
           // A group goes to a fresh page when it does not fit here but would there; one taller
           // than a page starts here, since it must be broken anyway.
-          const double page = bottom_ - top_ + kFitSlack;
           const double group = span(i, group_end);
-          bool fresh = !fits(space + group) && group <= page;
-          if (!fresh && atom.section_start) {
-            // Keep a section whole when a fresh page would hold it; failing that, its statement.
-            std::size_t end = i + 1;
-            while (end < atoms_.size() && !atoms_[end].section_start) ++end;
-            const double whole = span(i, end);
-            const double head = span(i, i + atom.head_atoms);
-            fresh = !fits(space + whole) && (whole <= page || (!fits(space + head) && head <= page));
-          }
-          if (fresh) new_page();
+          if (!fits(space + group) && group <= bottom_ - top_ + kFitSlack) new_page();
         }
       } else if (!empty_ && !fits(space + atom.height)) {
         new_page();  // a group taller than a page: broken where it must be
       }
       place(atom);
     }
+  }
+
+  // Sections share pages (a sheet on four pages, not one exercise a page); a section's opening
+  // (its statement up to its first figure or field, with the run of fields or answers after it)
+  // that does not fit in what is left of this page goes whole to the next one only when that
+  // wastes little of this one. Otherwise it starts here; and when its statement fits here whole,
+  // the page may end between the statement and its figure, so that the statement is read in one
+  // piece rather than its last lines carried over with the figure.
+  void open_section(std::size_t i, double space) {
+    const Atom& atom = atoms_[i];
+    std::size_t end = i + 1;
+    while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+    std::size_t head_end = std::min(i + atom.head_atoms, end);
+    if (head_end < end) {
+      ++head_end;
+      while (head_end < end && !atoms_[head_end].break_before) ++head_end;
+    }
+    const double head = span(i, head_end);
+    if (fits(space + head)) return;
+    const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
+    if (head <= bottom_ - top_ + kFitSlack && little_left) {
+      new_page();
+      return;
+    }
+    const std::size_t figure = i + atom.head_atoms - 1;
+    if (atom.head_atoms > 1 && figure < end && !atoms_[figure].content.figures.empty() &&
+        fits(space + span(i, figure)))
+      atoms_[figure].break_before = true;
   }
 
   void place(Atom& atom) {

@@ -5,14 +5,16 @@
 // so both draw the same thing.
 //
 // The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
-// with the name and student number fields and the sheet id as a QR code; a section starts on a
-// fresh page when it would fit there whole but not in what is left of the current one (and, for a section longer than a page,
-// when its statement, up to its first figure or field, would not); otherwise it flows, breaking
+// with the name and student number fields and the sheet id as a QR code; sections share pages,
+// and a section starts on a fresh page only when its opening (its statement, up to its first
+// figure or field, and the run of fields or answers after it) would fit there but not in what is
+// left of the current one; otherwise it flows, breaking
 // only between lines of text, runs of fields, tables or blocks: never right after a Heading,
 // never between a Figure and the Paragraph just before it, never leaving one line of a
 // paragraph alone, never inside a run of fields or a key's table that a page could hold.
 // A figure followed by fields or a key's answers has them beside it, in a column on its right,
-// when they fit there (half the paper of one above the other).
+// when they fit there (half the paper of one above the other); a figure of several panels side
+// by side is never narrowed for that column.
 #include <string>
 #include <vector>
 

@@ -51,6 +51,12 @@ constexpr double kPointRim = 0.8;
 // Behind a label: the grid hidden, a faint fill still showing through.
 constexpr double kLabelBackgroundOpacity = 0.85;
 constexpr double kLabelBackgroundPad = 0.6;
+// Between two labels side by side, at least this × their size (each keeps half): more than
+// the gap at which a PDF's text extraction joins letters into one word (a tenth of an em).
+constexpr double kWordSpace = 0.3;
+// A leader from a label set far from its point: thin, so that it reads as a pointer, not a line
+// of the figure.
+constexpr double kLeaderWidth = 0.4;
 // Axis numbers: their distance from the axis, and the least room between two of them.
 constexpr double kNumberGap = 2.5;
 constexpr double kNumberSpacing = 4;
@@ -530,8 +536,19 @@ class PanelPainter {
     l.extent = text_extent(l.runs, size);
     l.size = size;
     l.colour = colour;
+    // The type box: each run's font ascent and descent at its own size and shift (a subscript's
+    // reaches below the line's).
+    const VerticalMetrics vm = vertical_metrics();
+    double type_top = 0, type_bottom = 0;
+    for (const RunPlacement& p : place_runs(l.runs, size)) {
+      type_top = std::max(type_top, p.rise + vm.ascent * p.size);
+      type_bottom = std::max(type_bottom, vm.descent * p.size - p.rise);
+    }
     l.request = LabelRequest{anchor, l.extent.width, l.extent.ascent + l.extent.descent, prefer,
-                             gap,    along};
+                             gap,    along,
+                             std::max(0.0, type_top - l.extent.ascent),
+                             std::max(0.0, type_bottom - l.extent.descent),
+                             kWordSpace * size / 2};
     labels_.push_back(std::move(l));
   }
 
@@ -547,8 +564,11 @@ class PanelPainter {
         return false;
       }
       const Box b = inflate(n.box, kLabelClearance / 2);
+      // Its type box (the font's ascent to descent) clear of the labels' type boxes too.
+      const VerticalMetrics vm = vertical_metrics();
+      const Box type{n.box.x_min, n.at.y - vm.ascent * n.size, n.box.x_max, n.at.y + vm.descent * n.size};
       for (const Placement& p : placed) {
-        if (boxes_overlap(b, p.box)) return false;
+        if (boxes_overlap(b, p.box) || boxes_overlap(type, p.type)) return false;
       }
       for (const auto& d : obstacles_.discs) {
         if (disc_hits_box(d.c, d.r, b)) return false;
@@ -571,6 +591,25 @@ class PanelPainter {
       }
       std::erase_if(numbers_,
                     [&](const Number& n) { return n.axis == axis && phase(n.index, k) != best; });
+    }
+    // Where the x numbers run along the panel's bottom edge and the y numbers up its left one,
+    // the first of each meet in the corner: the y number gives way.
+    const VerticalMetrics vm = vertical_metrics();
+    const auto type_box = [&](const Number& n) {
+      return Box{n.box.x_min, n.at.y - vm.ascent * n.size, n.box.x_max, n.at.y + vm.descent * n.size};
+    };
+    // So does the origin's 0 to an x or y number beside it. (The x numbers are spaced apart.)
+    std::vector<Box> kept;
+    for (const Number& n : numbers_)
+      if (n.axis == 0) kept.push_back(type_box(n));
+    for (int axis : {1, 2}) {
+      std::erase_if(numbers_, [&](const Number& n) {
+        return n.axis == axis && std::any_of(kept.begin(), kept.end(), [&](const Box& k) {
+                 return boxes_overlap(type_box(n), k);
+               });
+      });
+      for (const Number& n : numbers_)
+        if (n.axis == axis) kept.push_back(type_box(n));
     }
     // Nothing is placed after the numbers; the report lists them with what was drawn.
     for (const Number& n : numbers_) obstacles_.boxes.push_back(n.box);
@@ -611,7 +650,10 @@ class PanelPainter {
 
     if (!labels_.empty()) {
       canvas_.begin_group("labels");
-      for (std::size_t i = 0; i < labels_.size(); ++i) draw_label(labels_[i], placed[i].box);
+      for (std::size_t i = 0; i < labels_.size(); ++i) {
+        if (placed[i].leader) draw_leader(labels_[i], placed[i].box);
+        draw_label(labels_[i], placed[i].box);
+      }
       canvas_.end_group();
     }
     canvas_.end_group();
@@ -623,6 +665,18 @@ class PanelPainter {
     } else {
       canvas_.path(op.path, op.paint);
     }
+  }
+
+  // A thin line from a far label's anchor to its box, stopping short of both.
+  void draw_leader(const PendingLabel& l, const Box& box) {
+    const P2 a = l.request.anchor;
+    const Box bg = inflate(box, kLabelBackgroundPad);
+    const P2 end{std::clamp(a.x, bg.x_min, bg.x_max), std::clamp(a.y, bg.y_min, bg.y_max)};
+    const auto u = unit(sub(end, a));
+    if (!u || norm(sub(end, a)) <= l.request.gap) return;
+    Path path;
+    path.move_to(add(a, mul(l.request.gap, *u))).line_to(end);
+    canvas_.path(path, Paint{StrokeStyle{l.colour, kLeaderWidth, {}}, std::nullopt, 1});
   }
 
   void draw_label(const PendingLabel& l, const Box& box) {
@@ -721,16 +775,21 @@ SceneLayout layout_scene(const Scene& scene, double x, double y, double width, c
   if (n == 0) return out;
   std::vector<double> gaps;
   double gap_sum = 0;
+  std::vector<std::string_view> notes;  // the links set under the captions
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const std::string_view link =
         i < scene.links.size() ? std::string_view(scene.links[i]) : std::string_view();
     double g = kPanelGap;
+    bool on_arrow = true;
     if (!link.empty()) {
-      g = std::clamp(text_width(link, style.small_size) + 2 * kLinkPad, kMinLinkGap,
-                     kMaxLinkShare * width);
+      const double one_line = text_width(link, style.small_size) + 2 * kLinkPad;
+      on_arrow = one_line <= kMaxLinkShare * width;
+      g = on_arrow ? std::max(one_line, kMinLinkGap) : kMinLinkGap;
+      if (!on_arrow) notes.push_back(link);
     }
     gaps.push_back(g);
     gap_sum += g;
+    out.link_on_arrow.push_back(on_arrow);
   }
   double aspects = 0;
   for (const Panel& p : scene.panels) {
@@ -757,6 +816,14 @@ SceneLayout layout_scene(const Scene& scene, double x, double y, double width, c
     }
   }
   out.height = h + captions;
+  if (!notes.empty()) {
+    double lines = 0;
+    for (std::string_view note : notes)
+      lines += static_cast<double>(wrap_rich_text(note, style.small_size, width).size());
+    const double top = out.height + kCaptionGap;
+    out.notes = {x, y + top, x + width, y + top + lines * style.small_size * kLineSpacing};
+    out.height = out.notes.y_max - y;
+  }
   return out;
 }
 
@@ -794,15 +861,28 @@ SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, 
     centred_lines(canvas, wrap_rich_text(caption, size, c.width()), (c.x_min + c.x_max) / 2,
                   c.y_min + first_baseline, size, style.caption);
   }
+  double note_baseline = layout.notes.y_min + first_baseline;
+  bool first_note = true;
   for (std::size_t i = 0; i < layout.links.size() && i < scene.links.size(); ++i) {
     if (scene.links[i].empty()) continue;
     const Box& g = layout.links[i];
     const double mid_y = (g.y_min + g.y_max) / 2;
-    const auto lines = wrap_rich_text(scene.links[i], size, g.width() - 2 * kLinkPad);
-    // The text stands on the arrow, centred across the gap.
-    const double block = static_cast<double>(lines.size()) * size * kLineSpacing;
-    centred_lines(canvas, lines, (g.x_min + g.x_max) / 2, mid_y - block - 2 + first_baseline, size,
-                  style.caption);
+    if (layout.link_on_arrow[i]) {
+      // The text stands on the arrow, centred across the gap, on the one line layout measured.
+      const auto lines = wrap_rich_text(scene.links[i], size, g.width() - 2 * kLinkPad);
+      const double block = static_cast<double>(lines.size()) * size * kLineSpacing;
+      centred_lines(canvas, lines, (g.x_min + g.x_max) / 2, mid_y - block - 2 + first_baseline, size,
+                    style.caption);
+    } else {
+      const auto lines = wrap_rich_text(scene.links[i], size, layout.notes.width());
+      // A superscript (T^{−1}) reaches above the capitals: the first line drops to keep it in.
+      if (first_note && !lines.empty())
+        note_baseline += std::max(0.0, text_extent(lines[0], size).ascent - first_baseline);
+      first_note = false;
+      centred_lines(canvas, lines, (layout.notes.x_min + layout.notes.x_max) / 2, note_baseline, size,
+                    style.caption);
+      note_baseline += static_cast<double>(lines.size()) * size * kLineSpacing;
+    }
     const double x0 = g.x_min + kLinkPad, x1 = g.x_max - kLinkPad;
     Path shaft;
     shaft.move_to({x0, mid_y}).line_to({x1 - kAxisArrow * 0.7, mid_y});

@@ -40,11 +40,18 @@ struct SceneLayout {
   std::vector<Box> panels;    // page rectangles of the panels' views
   std::vector<Box> captions;  // under each panel (empty box when it has no caption)
   std::vector<Box> links;     // the gaps between consecutive panels
+  // For each link: true when its text stands on the arrow in its gap, false when it is set
+  // under the panels' captions instead (it would not fit the gap on one line).
+  std::vector<bool> link_on_arrow;
+  Box notes;                  // those links' lines, across the whole scene (empty: none)
   double height = 0;
 };
 
 // Panels side by side at one common height, a gap between consecutive ones (wide enough for the
-// link's text when there is one), captions underneath. x, y: top-left corner, points.
+// link's text when there is one), captions underneath. A link whose text would not fit its gap
+// on one line gets a plain arrow and its text under the captions, across the scene's width: a map
+// such as T⁻¹ = scale(…) ∘ rotate(…) ∘ translate(…) stays on one line, and the panels keep the
+// width a narrow column of text would take. x, y: top-left corner, points.
 SceneLayout layout_scene(const Scene& scene, double x, double y, double width,
                          const Style& style = Style::print());
 

@@ -85,6 +85,43 @@ TEST_CASE("layout_scene: panels side by side at one height, links between, capti
   CHECK(scene_height(Scene{}, 400) == doctest::Approx(0).epsilon(kEps));
 }
 
+TEST_CASE("layout_scene: a link too long for its gap on one line goes under the captions") {
+  Scene s;
+  Panel a, b;
+  a.view = {0, 0, 10, 10};
+  a.caption = "world frame";
+  b.view = {-2, -2, 2, 2};
+  b.caption = "canonical frame";
+  s.panels = {a, b};
+  s.links = {"T^{−1} = scale(1/4, 1/2) ∘ rotate(−135°) ∘ translate(−5, −6)"};
+  const double width = 400;
+  const SceneLayout l = layout_scene(s, 10, 20, width);
+  REQUIRE(l.link_on_arrow.size() == 1);
+  CHECK_FALSE(l.link_on_arrow[0]);
+  // The gap keeps only its arrow; the text's line spans the scene under both captions.
+  CHECK(l.links[0].width() < 0.15 * width);
+  CHECK(l.notes.x_min == doctest::Approx(10).epsilon(kEps));
+  CHECK(l.notes.x_max == doctest::Approx(10 + width).epsilon(kEps));
+  for (const Box& c : l.captions) CHECK(l.notes.y_min >= c.y_max);
+  CHECK(l.height == doctest::Approx(l.notes.y_max - 20).epsilon(kEps));
+  // Drawn: every text inside the scene's height, the link's on one line, clear of the captions.
+  RecordingCanvas canvas;
+  paint_scene(canvas, s, 10, 20, width);
+  int link_lines = 0;
+  for (const auto& t : canvas.texts) {
+    CAPTURE(t.text);
+    CHECK(t.box.y_max <= 20 + l.height + 1e-9);
+    if (t.text.find("scale") != std::string::npos) {
+      ++link_lines;
+      CHECK(t.box.y_min >= l.notes.y_min - 1e-9);
+    }
+  }
+  CHECK(link_lines == 1);
+  // A short link still stands on its arrow.
+  s.links = {"M^{−1}"};
+  CHECK(layout_scene(s, 10, 20, width).link_on_arrow[0]);
+}
+
 TEST_CASE("lines and rays are clipped to the view; zero directions draw nothing") {
   Scene s;
   Panel p;

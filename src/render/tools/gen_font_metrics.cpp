@@ -44,7 +44,7 @@ constexpr std::pair<char32_t, char32_t> kRanges[] = {
     {0x2300, 0x2300},  // ⌀
     {0x25A0, 0x25A1},  // ■ □ (tick boxes)
     {0x25CB, 0x25CF},  // ○ ●
-    {0x2713, 0x2713},  // ✓
+    {0x2713, 0x2718},  // ✓ ✔ ✕ ✖ ✗ ✘ (marks in the feedback sheets)
 };
 
 FT_Face open(FT_Library lib, const char* path) {
