@@ -7,18 +7,11 @@ std::vector<const KindGrader*> all_graders() {
   std::vector<const KindGrader*> out;
   for (const auto* k : all_kinds())
     if (const auto* g = method_grader(*k)) out.push_back(g);
-  for (const auto* g : std::initializer_list<const KindGrader*>{
-          &kinds::ray_ellipse_grader(),
-          &kinds::ray_rectangle_grader()})
-    out.push_back(g);
   return out;
 }
 
 const KindGrader* find_grader(std::string_view kind) {
-  if (const auto* k = find_kind(kind))
-    if (const auto* g = method_grader(*k)) return g;
-  for (const auto* g : all_graders())
-    if (g->kind() == kind) return g;
+  if (const auto* k = find_kind(kind)) return method_grader(*k);
   return nullptr;
 }
 
