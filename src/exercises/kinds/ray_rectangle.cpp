@@ -24,15 +24,14 @@ geo::Rectangle rectangle_of(const Data& d) { return {d.C, d.sx, d.sy, d.angle_de
 double along(Vec2 v, int axis) { return axis == 0 ? v.x : v.y; }
 double along(Point2 p, int axis) { return axis == 0 ? p.x : p.y; }
 
-// A side the method looks at, and what it finds there. From outside: each candidate side, met
-// where (A_c + t·u_c)·n = 1 if the ray heads into it (u_c·n < 0), t = (1 − A_c·n)/(u_c·n); the
-// point must then lie on the side. From inside: along each axis the side the ray heads to.
+// A side the method looks at, on the core's canonical ray, for the draw's clearances (the key
+// shows the method's own steps). From outside: each candidate side, met where (A_c + t·u_c)·n = 1
+// if the ray heads into it (u_c·n < 0), t = (1 − A_c·n)/(u_c·n). From inside: along each axis
+// the side the ray heads to.
 struct SideTest {
   geo::Face face;
-  double u_n;               // u_c·n
   std::optional<double> t;  // where the ray crosses the side's line, when it heads to it
   Point2 at;                // the ray's point there
-  bool on_side = false;
 };
 
 std::vector<SideTest> side_tests(const geo::RayRectangle& r) {
@@ -40,12 +39,11 @@ std::vector<SideTest> side_tests(const geo::RayRectangle& r) {
   const Vec2 uc = r.canonical_ray.direction;
   std::vector<SideTest> tests;
   auto look = [&](geo::Face face) {
-    SideTest s{face, face.sign * along(uc, face.axis), std::nullopt, {}, false};
-    const bool heads_to = r.inside ? s.u_n > 0 : s.u_n < 0;
-    if (heads_to) {
-      s.t = (1 - face.sign * along(Ac, face.axis)) / s.u_n;
+    SideTest s{face, std::nullopt, {}};
+    const double u_n = face.sign * along(uc, face.axis);
+    if (r.inside ? u_n > 0 : u_n < 0) {
+      s.t = (1 - face.sign * along(Ac, face.axis)) / u_n;
       s.at = Ac + *s.t * uc;
-      s.on_side = std::abs(along(s.at, 1 - face.axis)) <= 1;
     }
     tests.push_back(s);
   };
