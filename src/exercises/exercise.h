@@ -110,7 +110,7 @@ class ExerciseKind {
   virtual std::map<std::string, double> default_constraints() const { return {}; }
   // The points an exercise of this kind is worth when the spec does not say (exercises/points.h:
   // the questions its branch asks share them, so every sheet of a set is worth the same).
-  virtual double default_points() const;
+  virtual double default_points() const = 0;
   // The question fields this kind can ask (for validating a spec's points table).
   virtual std::vector<std::string> fields() const = 0;
   // The sheet's answer fields, whatever the branch; empty: the fields asked (a kind whose

@@ -19,21 +19,6 @@ bool on_point_step(double points) {
   return std::abs(units - std::round(units)) <= kStepSlack;
 }
 
-double default_exercise_points(std::string_view kind) {
-  // One table for now, so that every kind's default is seen at a glance; each entry is meant
-  // to move into its kind's default_points(). Each is what the kind's fullest branch was worth
-  // at one point per question (a point P counting once), so a teacher's old marks still read.
-  struct Entry {
-    std::string_view kind;
-    double points;
-  };
-  static constexpr Entry kTable[] = {{"vectors", 7},    {"projection", 5},  {"segments", 4},     {"ray_circle", 7},
-                                     {"ray_square", 6}, {"ray_ellipse", 7}, {"ray_rectangle", 7}};
-  for (const auto& e : kTable)
-    if (e.kind == kind) return e.points;
-  return 5;  // a kind the table does not know yet: overrides default_points(), or is added here
-}
-
 void spread_points(std::vector<Question>& questions, double total) {
   if (questions.empty()) return;
   // The items that share: a question, or a point group (its coordinates together).
@@ -99,6 +84,5 @@ void spread_points(std::vector<Question>& questions, double total) {
   for (std::size_t i = 0; i < questions.size(); ++i) questions[i].points = static_cast<double>(share[i]) * kPointStep;
 }
 
-double ExerciseKind::default_points() const { return default_exercise_points(name()); }
 
 }  // namespace epure

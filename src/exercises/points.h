@@ -16,10 +16,6 @@ inline constexpr double kPointStep = 0.25;
 // Whether `points` is a whole number of kPointStep (what a spec's exercise total must be).
 bool on_point_step(double points);
 
-// The points of an exercise of this kind when the spec does not set them (the course's: see
-// ExerciseKind::default_points, which the kind may override).
-double default_exercise_points(std::string_view kind);
-
 // Replaces each question's weight (Question::points) by its share of `total`: largest
 // remainder over kPointStep units, ties to the question asked first. A point's coordinates
 // (same point_group) share as one question, and each gets half, so the share is a multiple of

@@ -1,9 +1,9 @@
 #pragma once
-// What one exercise kind knows about marking, beyond the key's per-question rule: how its
-// answers depend on one another (so that a later answer right from the student's own wrong
-// earlier value earns follow-through credit, as on paper) and the classic mistakes of its
-// method (recognised by recomputing what the mistake gives, from the instance, with the
-// geometry core). One file per kind under kinds/.
+// What marking asks of an exercise kind beyond the key's per-question rule: how its answers
+// depend on one another (so that a later answer right from the student's own wrong earlier value
+// earns follow-through credit, as on paper) and the classic mistakes of its method. Every kind
+// is written as one method and graded by the method grader (method_grader.h), which reads both
+// from the kind's method itself.
 #include <nlohmann/json_fwd.hpp>
 
 #include <any>
@@ -32,8 +32,8 @@ class KindGrader {
   virtual std::vector<DrawnField> drawn() const { return {}; }
 };
 
-// The grader of a kind, or null for a kind without one (its answers are marked by the key's
-// rules alone).
+// The grader of a kind, or null for an unknown kind (its answers are marked by the key's rules
+// alone). Defined in method_grader.cpp.
 const KindGrader* find_grader(std::string_view kind);
 std::vector<const KindGrader*> all_graders();
 

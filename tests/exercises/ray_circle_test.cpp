@@ -12,7 +12,6 @@
 
 #include "exercises/exercise.h"
 #include "exercises/kind_support.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/ray_circle.h"
 
 namespace epure::kinds::testing {
@@ -34,7 +33,7 @@ ExerciseInstance make(Difficulty level, const std::string& branch, std::uint64_t
   spec.difficulty = level;
   const ExerciseContext ctx{3, spec, Texts::builtin(language), NumberStyle::for_language(language), 2, branch};
   Rng rng(seed, 7);
-  return kinds::ray_circle_kind().make(rng, ctx);
+  return epure::find_kind("ray_circle")->make(rng, ctx);
 }
 
 // The value of an exact form as key.json writes it: integers, + − * /, sqrt( ), parentheses.
@@ -139,7 +138,7 @@ bool asks(const ExerciseInstance& inst, const std::string& field) {
 }  // namespace
 
 TEST_CASE("ray_circle: every difficulty and branch, over many seeds") {
-  const auto& kind = kinds::ray_circle_kind();
+  const auto& kind = (*epure::find_kind("ray_circle"));
   CHECK(kind.name() == "ray_circle");
   REQUIRE(kind.default_branches().size() == 4);
   for (Difficulty level : kLevels)
@@ -382,10 +381,10 @@ TEST_CASE("ray_circle: a spec can tighten the constraints, and an impossible one
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     CAPTURE(seed);
     Rng rng(seed);
-    const auto inst = kinds::ray_circle_kind().make(rng, ctx);
+    const auto inst = epure::find_kind("ray_circle")->make(rng, ctx);
     CHECK(json::parse(inst.instance)["r"].get<double>() == doctest::Approx(3).epsilon(1e-12));
   }
   spec.constraints["max_radius"] = 7;
   Rng rng(1);
-  CHECK_THROWS_AS(kinds::ray_circle_kind().make(rng, ctx), std::runtime_error);
+  CHECK_THROWS_AS(epure::find_kind("ray_circle")->make(rng, ctx), std::runtime_error);
 }

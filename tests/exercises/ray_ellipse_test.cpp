@@ -2,7 +2,6 @@
 // forms, tolerances and texts; and literal cases of the frame change worked by hand.
 #include <doctest/doctest.h>
 
-#include "exercises/kinds/registry.h"
 #include "exercises/transformed_checks.h"
 
 namespace {
@@ -13,6 +12,22 @@ namespace tf = epure::kinds::transformed;
 namespace geo = epure::geo;
 
 geo::Ellipse ellipse_of(const Data& d) { return {d.C, d.sx, d.sy, d.angle_deg}; }
+
+// The kind's method on the data, unrounded: {Ac.x, Ac.y, uc.x, uc.y} and with a hit {t, I.x,
+// I.y, N.x, N.y}.
+std::vector<double> hand(const Data& d) {
+  return epure::test::hand_answers(epure::test::instance_of("ray_ellipse", d));
+}
+
+// The key's solution of the data, at the standard level in English.
+epure::kinds::KeySolution key_of(const Data& d) {
+  const auto ctx = epure::test::context_for(epure::test::spec_for("ray_ellipse", epure::Difficulty::standard), "en", "hit");
+  return tf::ellipse_key(d, ctx);
+}
+std::string machine(const std::optional<epure::exact::Surd>& e) {
+  REQUIRE(e.has_value());
+  return e->machine();
+}
 
 // The clearances, checked with the quadratic formula rather than the course's method: a clear
 // hit's line passes within 1 − margin of O, a clear miss's half-line stays out of the circle of
@@ -47,13 +62,12 @@ void check_clear(const Data& d, const std::string& branch, const Limits& lim) {
 }  // namespace
 
 TEST_CASE("ray_ellipse: every difficulty and branch, over many seeds") {
-  const epure::test::KindCheck check{epure::kinds::ray_ellipse_kind(), tf::Shape::ellipse,
-                                     tf::ellipse_student_answers, check_clear};
+  const epure::test::KindCheck check{(*epure::find_kind("ray_ellipse")), tf::Shape::ellipse, check_clear};
   epure::test::check_kind(check, 300, ellipse_of);
 }
 
 TEST_CASE("ray_ellipse: the kind's name, branches, constraints and fields") {
-  const auto& kind = epure::kinds::ray_ellipse_kind();
+  const auto& kind = (*epure::find_kind("ray_ellipse"));
   CHECK(kind.name() == "ray_ellipse");
   CHECK(epure::find_kind("ray_ellipse") == &kind);
   CHECK(kind.default_branches().size() == 3);
@@ -62,7 +76,7 @@ TEST_CASE("ray_ellipse: the kind's name, branches, constraints and fields") {
 }
 
 TEST_CASE("ray_ellipse: an unmeetable constraint is refused by name") {
-  const auto& kind = epure::kinds::ray_ellipse_kind();
+  const auto& kind = (*epure::find_kind("ray_ellipse"));
   auto spec = epure::test::spec_for("ray_ellipse", epure::Difficulty::easy);
   spec.constraints["max_aspect"] = 1.1;  // below min_aspect: no ellipse qualifies
   epure::Rng rng(1);
@@ -74,13 +88,13 @@ TEST_CASE("ray_ellipse: the frame change worked by hand") {
   SUBCASE("1. angle 0: the ray along the a-axis meets the vertex") {
     // C(5, 4), a = 2, b = 1; A(0, 4), u = (1, 0): A_c = (−5/2, 0), u_c = (1/2, 0), t = 3
     const Data d{{0, 4}, {1, 0}, {5, 4}, 2, 1, 0};
-    const auto hand = tf::ellipse_student_answers(d);
+    const auto answers = hand(d);
     const std::vector<double> want{-2.5, 0, 0.5, 0, 3, 3, 4, -1, 0};
-    REQUIRE(hand.size() == want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) CHECK(hand[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
-    const auto f = tf::exact_frame(d);
-    CHECK(f.Ac.x.get()->machine() == "-5/2");
-    CHECK(f.uc.x.get()->machine() == "1/2");
+    REQUIRE(answers.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) CHECK(answers[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
+    const auto key = key_of(d);
+    CHECK(machine(key.exact_x("Ac")) == "-5/2");
+    CHECK(machine(key.exact_x("uc")) == "1/2");
   }
   SUBCASE("2. angle 90: the a-axis is vertical") {
     // C(5, 5), a = 2, b = 1, θ = 90°; A(5, 0), u = (0, 1): rotated by −90°, A − C = (0, −5)
@@ -89,25 +103,26 @@ TEST_CASE("ray_ellipse: the frame change worked by hand") {
     const auto r = geo::intersect(tf::world_ray(d), ellipse_of(d));
     REQUIRE(r.hit.has_value());
     CHECK(r.hit->t == doctest::Approx(3).epsilon(1e-12));
-    const auto hand = tf::ellipse_student_answers(d);
+    const auto answers = hand(d);
     const std::vector<double> want{-2.5, 0, 0.5, 0, 3, 5, 3, 0, -1};
-    REQUIRE(hand.size() == want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) CHECK(hand[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
+    REQUIRE(answers.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) CHECK(answers[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
   }
   SUBCASE("3. angle 45: exact surds") {
     // C(5, 5), a = 2, b = 1, θ = 45°; A(1, 1), u = (1, 1): û = (√2/2, √2/2), A_c = (−2√2, 0),
     // u_c = (1/2, 0); t = (−1 + 2√2)/(1/2) = 4√2 − 2, I = (5 − √2, 5 − √2), N = −(√2/2, √2/2)
     const Data d{{1, 1}, {1, 1}, {5, 5}, 2, 1, 45};
-    const auto f = tf::exact_frame(d);
-    CHECK(f.u_hat.x.get()->machine() == "sqrt(2)/2");
-    CHECK(f.Ac.x.get()->machine() == "-2*sqrt(2)");
-    CHECK(f.Ac.y.get()->machine() == "0");
-    CHECK(f.uc.x.get()->machine() == "1/2");
-    CHECK(f.uc.y.get()->machine() == "0");
-    const tf::Ex t = tf::Ex(epure::exact::Surd(-2, 4, 2));
-    const auto w = tf::exact_world(d, f, t, {tf::Ex::integer(-1), tf::Ex::integer(0)});
-    CHECK(w.I.x.get()->machine() == "5-sqrt(2)");
-    CHECK(w.N.y.get()->machine() == "-sqrt(2)/2");
+    const auto key = key_of(d);
+    CHECK(machine(key.exact_x("u_hat")) == "sqrt(2)/2");
+    CHECK(machine(key.exact_x("Ac")) == "-2*sqrt(2)");
+    CHECK(machine(key.exact_y("Ac")) == "0");
+    CHECK(machine(key.exact_x("uc")) == "1/2");
+    CHECK(machine(key.exact_y("uc")) == "0");
+    CHECK(machine(key.exact("t")) == "-2+4*sqrt(2)");
+    CHECK(machine(key.exact_x("Nc")) == "-1");
+    CHECK(machine(key.exact_y("Nc")) == "0");
+    CHECK(machine(key.exact_x("I")) == "5-sqrt(2)");
+    CHECK(machine(key.exact_y("N")) == "-sqrt(2)/2");
     const auto r = geo::intersect(tf::world_ray(d), ellipse_of(d));
     REQUIRE(r.hit.has_value());
     CHECK(r.hit->t == doctest::Approx(4 * std::sqrt(2.0) - 2).epsilon(1e-12));
@@ -115,10 +130,10 @@ TEST_CASE("ray_ellipse: the frame change worked by hand") {
     CHECK(r.hit->N.x == doctest::Approx(-std::sqrt(0.5)).epsilon(1e-12));
   }
   SUBCASE("4. exact cos and sin only where they are quadratic surds") {
-    CHECK(tf::exact_cos_sin(150).x.get()->machine() == "-sqrt(3)/2");
-    CHECK(tf::exact_cos_sin(150).y.get()->machine() == "1/2");
-    CHECK(tf::exact_cos_sin(270).y.get()->machine() == "-1");
-    CHECK_FALSE(tf::exact_cos_sin(20).x.has_value());
-    CHECK_FALSE(tf::exact_cos_sin(22.5).x.has_value());
+    CHECK(machine(tf::exact_cos_sin(150).cos) == "-sqrt(3)/2");
+    CHECK(machine(tf::exact_cos_sin(150).sin) == "1/2");
+    CHECK(machine(tf::exact_cos_sin(270).sin) == "-1");
+    CHECK_FALSE(tf::exact_cos_sin(20).cos.has_value());
+    CHECK_FALSE(tf::exact_cos_sin(22.5).cos.has_value());
   }
 }

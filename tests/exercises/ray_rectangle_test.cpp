@@ -2,7 +2,6 @@
 // exact forms, tolerances and texts; and literal cases of the frame change worked by hand.
 #include <doctest/doctest.h>
 
-#include "exercises/kinds/registry.h"
 #include "exercises/transformed_checks.h"
 
 namespace {
@@ -53,16 +52,31 @@ void check_clear(const Data& d, const std::string& branch, const Limits& lim) {
   if (branch == "miss") CHECK_FALSE(slab_meets(Ac, uc, 1 + lim.margin / std::sqrt(2.0) - 1e-9));
 }
 
+// The kind's method on the data, unrounded: {Ac.x, Ac.y, uc.x, uc.y} and with a hit {t, I.x,
+// I.y, N.x, N.y}.
+std::vector<double> hand(const Data& d) {
+  return epure::test::hand_answers(epure::test::instance_of("ray_rectangle", d));
+}
+
+// The key's solution of the data, at the standard level in English.
+epure::kinds::KeySolution key_of(const Data& d) {
+  const auto ctx = epure::test::context_for(epure::test::spec_for("ray_rectangle", epure::Difficulty::standard), "en", "hit");
+  return tf::rectangle_key(d, ctx);
+}
+std::string machine(const std::optional<epure::exact::Surd>& e) {
+  REQUIRE(e.has_value());
+  return e->machine();
+}
+
 }  // namespace
 
 TEST_CASE("ray_rectangle: every difficulty and branch, over many seeds") {
-  const epure::test::KindCheck check{epure::kinds::ray_rectangle_kind(), tf::Shape::rectangle,
-                                     tf::rectangle_student_answers, check_clear};
+  const epure::test::KindCheck check{(*epure::find_kind("ray_rectangle")), tf::Shape::rectangle, check_clear};
   epure::test::check_kind(check, 300, rectangle_of);
 }
 
 TEST_CASE("ray_rectangle: the kind's name, branches, constraints and fields") {
-  const auto& kind = epure::kinds::ray_rectangle_kind();
+  const auto& kind = (*epure::find_kind("ray_rectangle"));
   CHECK(kind.name() == "ray_rectangle");
   CHECK(epure::find_kind("ray_rectangle") == &kind);
   CHECK(kind.default_branches().size() == 3);
@@ -71,7 +85,7 @@ TEST_CASE("ray_rectangle: the kind's name, branches, constraints and fields") {
 }
 
 TEST_CASE("ray_rectangle: the key names the candidate sides and the side hit") {
-  const auto& kind = epure::kinds::ray_rectangle_kind();
+  const auto& kind = (*epure::find_kind("ray_rectangle"));
   const auto spec = epure::test::spec_for("ray_rectangle", epure::Difficulty::easy);
   for (int seed = 0; seed < 20; ++seed) {
     CAPTURE(seed);
@@ -90,10 +104,10 @@ TEST_CASE("ray_rectangle: the frame change worked by hand") {
     // becomes (−5, 0), A_c = (−5/2, 0), u_c = (1/2, 0); side −x at t = (−1 + 5/2)/(1/2) = 3,
     // I = (6, 3), N_c = (−1, 0) → N = (0, −1)
     const Data d{{6, 0}, {0, 2}, {6, 5}, 2, 1, 90};
-    const auto hand = tf::rectangle_student_answers(d);
+    const auto answers = hand(d);
     const std::vector<double> want{-2.5, 0, 0.5, 0, 3, 6, 3, 0, -1};
-    REQUIRE(hand.size() == want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) CHECK(hand[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
+    REQUIRE(answers.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) CHECK(answers[i] == doctest::Approx(want[i]).epsilon(1e-12).scale(1));
     const auto r = geo::intersect(tf::world_ray(d), rectangle_of(d));
     REQUIRE(r.hit.has_value());
     CHECK(geo::face_name(*r.canonical.face) == "-x");
@@ -103,11 +117,12 @@ TEST_CASE("ray_rectangle: the frame change worked by hand") {
     // becomes (−1, −√3), so A_c = (−1/2, −√3); û = (0, 1) becomes (1/2, √3/2), u_c = (1/4, √3/2);
     // side −y at t = (−1 + √3)/(√3/2) = 2 − 2√3/3, where x = −1/2 + t/4 lies in [−1, 1]
     const Data d{{6, 3}, {0, 1}, {6, 5}, 2, 1, 30};
-    const auto f = tf::exact_frame(d);
-    CHECK(f.Ac.x.get()->machine() == "-1/2");
-    CHECK(f.Ac.y.get()->machine() == "-sqrt(3)");
-    CHECK(f.uc.x.get()->machine() == "1/4");
-    CHECK(f.uc.y.get()->machine() == "sqrt(3)/2");
+    const auto key = key_of(d);
+    CHECK(machine(key.exact_x("Ac")) == "-1/2");
+    CHECK(machine(key.exact_y("Ac")) == "-sqrt(3)");
+    CHECK(machine(key.exact_x("uc")) == "1/4");
+    CHECK(machine(key.exact_y("uc")) == "sqrt(3)/2");
+    CHECK(machine(key.exact("t")) == "(6-2*sqrt(3))/3");
     const auto r = geo::intersect(tf::world_ray(d), rectangle_of(d));
     REQUIRE(r.hit.has_value());
     CHECK(geo::face_name(*r.canonical.face) == "-y");
@@ -115,8 +130,8 @@ TEST_CASE("ray_rectangle: the frame change worked by hand") {
     // the normal of side −y, rotated by 30°: (sin 30°, −cos 30°)
     CHECK(r.hit->N.x == doctest::Approx(0.5).epsilon(1e-12));
     CHECK(r.hit->N.y == doctest::Approx(-std::sqrt(3.0) / 2).epsilon(1e-12));
-    const auto hand = tf::rectangle_student_answers(d);
-    REQUIRE(hand.size() == 9);
-    CHECK(hand[4] == doctest::Approx(r.hit->t).epsilon(1e-12));
+    const auto answers = hand(d);
+    REQUIRE(answers.size() == 9);
+    CHECK(answers[4] == doctest::Approx(r.hit->t).epsilon(1e-12));
   }
 }

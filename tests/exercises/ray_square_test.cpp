@@ -12,7 +12,6 @@
 
 #include "exercises/exercise.h"
 #include "exercises/kind_support.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/ray_square.h"
 
 namespace epure::kinds::testing {
@@ -34,7 +33,7 @@ ExerciseInstance make(Difficulty level, const std::string& branch, std::uint64_t
   spec.difficulty = level;
   const ExerciseContext ctx{4, spec, Texts::builtin(language), NumberStyle::for_language(language), 2, branch};
   Rng rng(seed, 9);
-  return kinds::ray_square_kind().make(rng, ctx);
+  return epure::find_kind("ray_square")->make(rng, ctx);
 }
 
 // The value of an exact form as key.json writes it: integers, + − * /, sqrt( ), parentheses.
@@ -137,7 +136,7 @@ bool asks(const ExerciseInstance& inst, const std::string& field) {
 }  // namespace
 
 TEST_CASE("ray_square: every difficulty and branch, over many seeds") {
-  const auto& kind = kinds::ray_square_kind();
+  const auto& kind = (*epure::find_kind("ray_square"));
   CHECK(kind.name() == "ray_square");
   REQUIRE(kind.default_branches().size() == 3);
   for (Difficulty level : kLevels)

@@ -15,7 +15,6 @@
 #include <regex>
 
 #include "exercises/kind_support.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/segments.h"
 
 namespace epure::kinds::detail {
@@ -129,7 +128,7 @@ Made make(Difficulty level, const std::string& branch, const std::string& langua
   spec.difficulty = level;
   const ExerciseContext ctx{2, spec, Texts::builtin(language), NumberStyle::for_language(language), 2, branch};
   Rng rng(seed, 11);
-  Made m{kinds::segments_kind().make(rng, ctx), {}, {}, {}, {}};
+  Made m{epure::find_kind("segments")->make(rng, ctx), {}, {}, {}, {}};
   const auto j = nlohmann::json::parse(m.inst.instance);
   const auto point = [&](const char* name) { return Point2{j[name][0].get<double>(), j[name][1].get<double>()}; };
   m.A = point("A");
@@ -153,7 +152,7 @@ bool in_area(Point2 p, double slack) {
 }  // namespace
 
 TEST_CASE("segments: every difficulty and branch draws a well-posed instance the core agrees with") {
-  const auto& kind = kinds::segments_kind();
+  const auto& kind = (*epure::find_kind("segments"));
   REQUIRE(find_kind("segments") == &kind);
   const auto constraints = kind.default_constraints();
   for (Difficulty level : {Difficulty::easy, Difficulty::standard, Difficulty::hard}) {
@@ -287,7 +286,7 @@ TEST_CASE("segments: every difficulty and branch draws a well-posed instance the
 }
 
 TEST_CASE("segments: both languages format every instance alike") {
-  for (const auto& [branch, weight] : kinds::segments_kind().default_branches())
+  for (const auto& [branch, weight] : epure::find_kind("segments")->default_branches())
     for (std::uint64_t seed = 0; seed < 20; ++seed) {
       CAPTURE(branch);
       CAPTURE(seed);
@@ -327,5 +326,5 @@ TEST_CASE("segments: an unknown branch is refused") {
   spec.kind = "segments";
   const ExerciseContext ctx{1, spec, Texts::builtin("en"), NumberStyle::for_language("en"), 2, "touching"};
   Rng rng(1);
-  CHECK_THROWS_AS(kinds::segments_kind().make(rng, ctx), std::invalid_argument);
+  CHECK_THROWS_AS(epure::find_kind("segments")->make(rng, ctx), std::invalid_argument);
 }

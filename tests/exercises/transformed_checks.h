@@ -17,6 +17,7 @@
 #include "exercises/exercise.h"
 #include "exercises/kind_support.h"
 #include "exercises/kinds/transformed_common.h"
+#include "support/method_answers.h"
 
 namespace epure::test {
 
@@ -35,6 +36,27 @@ inline Data data_of(const std::string& instance) {
   d.sy = sizes[1].get<double>();
   d.angle_deg = j["angle"].get<double>();
   return d;
+}
+
+// A solve input of `kind` with the data (the sizes as "radii" or "half").
+inline std::string instance_of(std::string_view kind, const Data& d) {
+  const nlohmann::json j = {{"kind", kind},
+                            {"A", {d.A.x, d.A.y}},
+                            {"u", {d.u.x, d.u.y}},
+                            {"C", {d.C.x, d.C.y}},
+                            {kind == "ray_ellipse" ? "radii" : "half", {d.sx, d.sy}},
+                            {"angle", d.angle_deg}};
+  return j.dump();
+}
+
+// The kind's method on an instance, unrounded, in the order {Ac.x, Ac.y, uc.x, uc.y} and, with
+// a hit, {t, I.x, I.y, N.x, N.y}.
+inline std::vector<double> hand_answers(const std::string& instance, std::string_view mistake = {}) {
+  const auto answers = method_answers(instance, mistake);
+  std::vector<double> out;
+  for (const char* f : {"Ac", "uc", "t", "I", "N"})
+    if (auto it = answers.find(f); it != answers.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+  return out;
 }
 
 // The value of an exact form as Surd::machine() writes it: "3", "-1/4", "-sqrt(3)/2",
@@ -119,7 +141,6 @@ inline std::vector<render::Scene> scenes_of(const render::Section& s) {
 struct KindCheck {
   const ExerciseKind& kind;
   Shape shape;
-  std::function<std::vector<double>(const Data&)> student;  // the hand method, unrounded
   // The figure's clearances for the branch, with the (difficulty-adjusted) limits.
   std::function<void(const Data&, const std::string& branch, const kinds::transformed::Limits&)> clear;
 };
@@ -260,8 +281,8 @@ void check_kind(const KindCheck& check, int seeds, Figure figure_of) {
         if (level == Difficulty::standard)
           for (const char* f : {"Ac.x", "Ac.y"}) CHECK(find_question(inst, f)->exact.has_value());
 
-        // the student's hand method, unrounded, is the core's
-        const auto hand = check.student(d);
+        // the kind's method, unrounded, is the core's
+        const auto hand = hand_answers(inst.instance);
         REQUIRE(hand.size() == (r.hit ? 9u : 4u));
         CHECK(hand[0] == doctest::Approx(Ac.x).epsilon(1e-9).scale(1));
         CHECK(hand[1] == doctest::Approx(Ac.y).epsilon(1e-9).scale(1));

@@ -15,7 +15,6 @@
 #include <regex>
 
 #include "exercises/kind_support.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/vectors.h"
 
 namespace epure::kinds::detail {
@@ -132,7 +131,7 @@ Made make(Difficulty level, const std::string& branch, const std::string& langua
   spec.difficulty = level;
   const ExerciseContext ctx{1, spec, Texts::builtin(language), NumberStyle::for_language(language), 2, branch};
   Rng rng(seed, 7);
-  Made m{kinds::vectors_kind().make(rng, ctx), {}, {}};
+  Made m{epure::find_kind("vectors")->make(rng, ctx), {}, {}};
   const auto j = nlohmann::json::parse(m.inst.instance);
   m.u = {j["u"][0].get<double>(), j["u"][1].get<double>()};
   m.v = {j["v"][0].get<double>(), j["v"][1].get<double>()};
@@ -149,7 +148,7 @@ const Question& question(const ExerciseInstance& inst, const std::string& field)
 }  // namespace
 
 TEST_CASE("vectors: every difficulty and branch draws a well-posed instance the core agrees with") {
-  const auto& kind = kinds::vectors_kind();
+  const auto& kind = (*epure::find_kind("vectors"));
   REQUIRE(find_kind("vectors") == &kind);
   const auto constraints = kind.default_constraints();
   for (Difficulty level : {Difficulty::easy, Difficulty::standard, Difficulty::hard}) {
@@ -252,7 +251,7 @@ TEST_CASE("vectors: every difficulty and branch draws a well-posed instance the 
 }
 
 TEST_CASE("vectors: both languages format every instance") {
-  for (const auto& [branch, weight] : kinds::vectors_kind().default_branches())
+  for (const auto& [branch, weight] : epure::find_kind("vectors")->default_branches())
     for (std::uint64_t seed = 0; seed < 20; ++seed) {
       CAPTURE(branch);
       CAPTURE(seed);
@@ -291,5 +290,5 @@ TEST_CASE("vectors: an unknown branch is refused") {
   spec.kind = "vectors";
   const ExerciseContext ctx{1, spec, Texts::builtin("en"), NumberStyle::for_language("en"), 2, "sideways"};
   Rng rng(1);
-  CHECK_THROWS_AS(kinds::vectors_kind().make(rng, ctx), std::invalid_argument);
+  CHECK_THROWS_AS(epure::find_kind("vectors")->make(rng, ctx), std::invalid_argument);
 }

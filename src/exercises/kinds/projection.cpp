@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "exercises/kind_method.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/projection.h"
 
 namespace epure::kinds {

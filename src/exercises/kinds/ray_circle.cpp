@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "exercises/kind_method.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/ray_circle.h"
 
 namespace epure::kinds {

@@ -6,7 +6,6 @@
 
 #include <cmath>
 
-#include "exercises/kinds/registry.h"
 #include "exercises/kinds/transformed_common.h"
 
 namespace epure::kinds {
@@ -19,87 +18,71 @@ using namespace transformed;
 
 geo::Ellipse ellipse_of(const Data& d) { return {d.C, d.sx, d.sy, d.angle_deg}; }
 
-// The canonical circle's construction, exactly: ‖A_c‖², t_proj, P_c, d², √(1 − d²), ‖u_c‖, t,
-// and I_c (which is also N_c on the unit circle).
-struct ExactCircle {
-  Ex ac2, t_proj, d2, half_chord, norm_uc, t;
-  ExVec Pc, Ic;
+// The ray and the ellipse, written once (method.h): the frame change and the way back are
+// transformed_common's, the canonical part is the course's exercise 3 on the unit circle.
+struct RayEllipse {
+  using Data = transformed::Data;
+  static constexpr std::string_view kName = "ray_ellipse";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    transformed::schema(v, d, "radii");
+  }
+
+  static constexpr auto& kQuestions = transformed::kQuestions;
+  // In the order grading tries them: the far root last, since it moves N too (at the flat
+  // ellipse's far vertex N is −N, the normal inward, which names the answer better).
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 7;
+
+  static constexpr std::string_view kMistakes[] = {
+      "rotation_sign",     "translation_forgotten", "transform_order",        "uc_renormalised",
+      "direction_not_unit", "direction_translated",  "not_back_to_world",      "normal_inward",
+      "normal_not_unit",   "normal_wrong_transform", "far_intersection",       "near_root_inside"};
+
+  // In the canonical frame, by hand: A_c inside when ‖A_c‖² < 1; the projection of O on the
+  // ray, t_proj = −(A_c·u_c)/(u_c·u_c), P_c = A_c + t_proj·u_c, d² = ‖P_c‖²; behind (outside,
+  // t_proj < 0) or beside (d² > 1) it misses; else Pythagoras, half chord √(1 − d²), and t =
+  // t_proj ∓ √(1 − d²)/‖u_c‖ (the near root from outside, the far one from inside), I_c = A_c +
+  // t·u_c, which is also N_c on the unit circle. They round t_proj, d², √(1 − d²), ‖u_c‖, t and
+  // I_c on the way.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    using method::less_equal;
+    const Frame<M> f = frame_change(m, d);
+    const auto one = m.in(1.0), zero = m.in(0.0);
+    const auto ac2 = m.note("ac2", dot(f.Ac, f.Ac));
+    const auto inside = m.boolean("inside", less(ac2, one));
+    const auto uu = dot(f.uc, f.uc);
+    const auto t_proj = m.round("t_proj", -dot(f.Ac, f.uc) / uu);
+    const auto Pc = m.note("Pc", f.Ac + t_proj * f.uc);
+    const auto d2 = m.round("d2", dot(Pc, Pc));
+    const auto ahead = !less(t_proj, zero);
+    const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, one)));
+    if (!hit) return;
+    const auto half_chord = m.round("half_chord", sqrt(one - d2));
+    const auto norm_uc = m.round("norm_uc", sqrt(uu));
+    const auto near = t_proj - half_chord / norm_uc, far = t_proj + half_chord / norm_uc;
+    // √((1 − d²)/(u_c·u_c)) as one root: an exact form more often than each root apart
+    const auto along = sqrt((one - d2) / uu);
+    const auto t = m.number(
+        "t", m.round("t", inside ? m.either(m.mistake("near_root_inside", far, near), t_proj + along)
+                                 : m.either(m.mistake("far_intersection", near, far), t_proj - along)));
+    const auto Ic = m.round("Ic", f.Ac + t * f.uc);
+    back_to_world(m, f, t, Ic, Ic);
+  }
+
+  static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), ellipse_of(d))); }
 };
 
-// t alone, for the easy level's draw: t = t_proj ∓ √((1 − d²)/(u_c·u_c)) with
-// d² = A_c·A_c − (A_c·u_c)²/(u_c·u_c).
-Ex exact_t(const ExactFrame& f, bool inside) {
-  const Ex uu = dot(f.uc, f.uc), au = dot(f.Ac, f.uc);
-  const Ex t_proj = -au / uu;
-  const Ex d2 = dot(f.Ac, f.Ac) - au * au / uu;
-  const Ex along = sqrt((Ex::integer(1) - d2) / uu);
-  return inside ? t_proj + along : t_proj - along;
-}
-
-ExactCircle exact_circle(const ExactFrame& f, bool inside) {
-  ExactCircle e;
-  const ExVec& Ac = f.Ac;
-  const ExVec& uc = f.uc;
-  const Ex uu = dot(uc, uc);
-  e.ac2 = dot(Ac, Ac);
-  e.t_proj = -dot(Ac, uc) / uu;
-  e.Pc = {Ac.x + e.t_proj * uc.x, Ac.y + e.t_proj * uc.y};
-  e.d2 = dot(e.Pc, e.Pc);
-  const Ex one = Ex::integer(1);
-  e.half_chord = sqrt(one - e.d2);
-  e.norm_uc = sqrt(uu);
-  // √(1 − d²)/‖u_c‖ as one root: rational more often than each part
-  const Ex along = sqrt((one - e.d2) / uu);
-  e.t = inside ? e.t_proj + along : e.t_proj - along;
-  e.Ic = {Ac.x + e.t * uc.x, Ac.y + e.t * uc.y};
-  return e;
-}
-
-// The intermediates the student rounds after the frame change: t_proj, d², √(1 − d²), ‖u_c‖,
-// t, I_c.x, I_c.y.
-constexpr int kStudentSteps = kFrameSteps + 7;
-
-// The course's method in the canonical frame, by hand: {Ac.x, Ac.y, uc.x, uc.y} and, with a
-// hit, {t, I.x, I.y, N.x, N.y}.
-StudentMethod student_method(const Data& d, bool hit, bool inside, int decimals) {
-  return [d, hit, inside, decimals](const Nudge& nudge) {
-    const Rounding r(nudge, decimals);
-    const StudentFrame f = student_frame(d, r);
-    std::vector<double> out{f.Ac.x, f.Ac.y, f.uc.x, f.uc.y};
-    if (!hit) return out;
-    const Vec2 Ac = geo::to_vec(f.Ac);
-    const double t_proj = r(kFrameSteps, -(Ac.x * f.uc.x + Ac.y * f.uc.y) / (f.uc.x * f.uc.x + f.uc.y * f.uc.y));
-    const Vec2 Pc = Ac + t_proj * f.uc;
-    const double d2 = r(kFrameSteps + 1, Pc.x * Pc.x + Pc.y * Pc.y);
-    const double half_chord = r(kFrameSteps + 2, std::sqrt(std::max(0.0, 1 - d2)));
-    const double norm_uc = r(kFrameSteps + 3, std::hypot(f.uc.x, f.uc.y));
-    const double t = r(kFrameSteps + 4, inside ? t_proj + half_chord / norm_uc : t_proj - half_chord / norm_uc);
-    const Vec2 Ic{r(kFrameSteps + 5, Ac.x + t * f.uc.x), r(kFrameSteps + 6, Ac.y + t * f.uc.y)};
-    out.push_back(t);
-    for (double x : student_world(d, f, t, Ic)) out.push_back(x);
-    return out;
-  };
-}
-
-std::vector<double> tolerances(const Data& d, const geo::RayEllipse& r, int decimals) {
-  return derive_abs_tolerances(student_method(d, r.hit.has_value(), r.inside, decimals),
-                               r.hit ? kStudentSteps : kFrameSteps, decimals);
-}
-
-class RayEllipseKind final : public ExerciseKind {
+class RayEllipseKind final : public MethodKind<RayEllipse> {
  public:
-  std::string_view name() const override { return "ray_ellipse"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"hit", 2}, {"miss", 1}, {"inside", 1}};
   }
   std::map<std::string, double> default_constraints() const override { return common_constraints(); }
-  std::vector<std::string> fields() const override { return transformed::fields(); }
-  std::vector<SheetField> sheet_fields() const override {
-    return {{"Ac", render::AnswerField::Kind::point, {}},       {"uc", render::AnswerField::Kind::point, {}},
-            {"inside", render::AnswerField::Kind::boolean, {}}, {"hit", render::AnswerField::Kind::boolean, {}},
-            {"t", render::AnswerField::Kind::number, {}},       {"I", render::AnswerField::Kind::point, {}},
-            {"N", render::AnswerField::Kind::point, {}}};
-  }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}, {"Ac", 1, {}}, {"uc", 1, "Ac"}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Limits lim = limits(ctx, *this);
@@ -112,12 +95,15 @@ class RayEllipseKind final : public ExerciseKind {
       const auto r = geo::intersect(world_ray(*d), ellipse_of(*d));
       if (!clear(r, ctx.branch, lim)) return std::nullopt;
       // easy: t rational, so that I is too
-      if (level == Difficulty::easy && r.hit && !exact_t(exact_frame(*d), r.inside).is_rational())
-        return std::nullopt;
-      if (!well_conditioned(tolerances(*d, r, ctx.decimals), lim)) return std::nullopt;
+      if (level == Difficulty::easy && r.hit) {
+        const auto run = exact_run(*d, ctx.decimals);
+        const auto* t = run.answer("t");
+        if (!t || !t->x.e || !t->x.e->is_rational()) return std::nullopt;
+      }
+      if (!well_conditioned<RayEllipse>(*d, ctx.decimals, lim)) return std::nullopt;
       return d;
     });
-    if (auto taken = already_taken(ctx, instance_text(d, Shape::ellipse))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
@@ -146,37 +132,11 @@ class RayEllipseKind final : public ExerciseKind {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto r = geo::intersect(world_ray(d), ellipse_of(d));
     const Solved s = solved_of(r);
-    const geo::RayCircle& c = r.canonical;
 
-    // exact forms, each checked against the core's double
-    const ExactFrame f = exact_frame(d);
-    const ExactCircle e = exact_circle(f, r.inside);
-    ExactWorld w;
-    cross_check(f.Ac, geo::to_vec(s.canonical_ray.origin), "A_c");
-    cross_check(f.uc, s.canonical_ray.direction, "u_c");
-    cross_check(e.t_proj, c.t_proj, "t_proj");
-    cross_check(e.d2, c.d2, "d2");
-    if (s.hit) {
-      w = exact_world(d, f, e.t, e.Ic);
-      cross_check(e.half_chord, *c.half_chord, "half chord");
-      cross_check(w.t, s.hit->t, "t");
-      cross_check(e.Ic, geo::to_vec(s.canonical_hit->I), "I_c");
-      cross_check(w.I, geo::to_vec(s.hit->I), "I");
-      cross_check(w.N, s.hit->N, "N");
-    }
-
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d, Shape::ellipse);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    const auto tol = tolerances(d, r, ctx.decimals);
-    Questions q(ctx);
-    ask(q, s, tol, f, w);
-    inst.questions = q.take_questions();
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
 
     const TextVars data = data_vars(ctx, d, Shape::ellipse);
     inst.sheet = begin_sheet_section(ctx, "ray_ellipse.title");
@@ -186,35 +146,35 @@ class RayEllipseKind final : public ExerciseKind {
 
     inst.key = begin_key_section(ctx, "ray_ellipse.title");
     inst.key.add(render::Paragraph{ctx.texts.format("ray_ellipse.statement", data)});
-    frame_steps(inst.key, ctx, d, Shape::ellipse, s, f);
-    circle_steps(inst.key, ctx, s, c, e);
-    if (s.hit) world_steps(inst.key, ctx, d, Shape::ellipse, s, w);
-    inst.key.add(render::Figure{key_scene(ctx, d, Shape::ellipse, s, canonical(s, c)), 0.95});
+    frame_steps(inst.key, ctx, d, Shape::ellipse, key);
+    circle_steps(inst.key, ctx, r, key);
+    if (s.hit) world_steps(inst.key, ctx, key);
+    inst.key.add(render::Figure{key_scene(ctx, d, Shape::ellipse, s, canonical(s, r.canonical)), 0.95});
     add_lines(inst.key, q);
     return inst;
   }
 
-  static void circle_steps(render::Section& key, const ExerciseContext& ctx, const Solved& s,
-                           const geo::RayCircle& c, const ExactCircle& e) {
-    const Vec2 Ac = geo::to_vec(s.canonical_ray.origin);
-    step(key, ctx, s.inside ? "inside.yes" : "inside.no", {{"ac2", equals_value(ctx, geo::norm2(Ac), e.ac2.get())}});
-    step(key, ctx, "t_proj", {{"t_proj", equals_value(ctx, c.t_proj, e.t_proj.get())}});
+  // The canonical circle's steps, as the core decides them (inside, behind, miss), with the
+  // values of the key's method.
+  static void circle_steps(render::Section& sec, const ExerciseContext& ctx, const geo::RayEllipse& r,
+                           const KeySolution& key) {
+    auto value = [&](std::string_view id) { return equals_value(ctx, key.value(id), key.exact(id)); };
+    const geo::RayCircle& c = r.canonical;
+    step(sec, ctx, r.inside ? "inside.yes" : "inside.no", {{"ac2", value("ac2")}});
+    step(sec, ctx, "t_proj", {{"t_proj", value("t_proj")}});
     if (c.reason == geo::NoHit::behind) {
-      step(key, ctx, "behind");
+      step(sec, ctx, "behind");
       return;
     }
-    step(key, ctx, "d2",
-         {{"Pc", shown_point(ctx, c.P, e.Pc.x.get(), e.Pc.y.get())}, {"d2", equals_value(ctx, c.d2, e.d2.get())}});
+    step(sec, ctx, "d2",
+         {{"Pc", shown_point(ctx, key.point("Pc"), key.exact_x("Pc"), key.exact_y("Pc"))}, {"d2", value("d2")}});
     if (c.reason == geo::NoHit::miss) {
-      step(key, ctx, "miss");
+      step(sec, ctx, "miss");
       return;
     }
-    const double norm_uc = geo::norm(s.canonical_ray.direction);
-    step(key, ctx, "pythagoras",
-         {{"half_chord", equals_value(ctx, *c.half_chord, e.half_chord.get())},
-          {"norm_uc", equals_value(ctx, norm_uc, e.norm_uc.get())}});
-    step(key, ctx, s.inside ? "t.inside" : "t.outside", {{"t", equals_value(ctx, s.hit->t, e.t.get())}});
-    step(key, ctx, "Ic", {{"Ic", shown_point(ctx, s.canonical_hit->I, e.Ic.x.get(), e.Ic.y.get())}});
+    step(sec, ctx, "pythagoras", {{"half_chord", value("half_chord")}, {"norm_uc", value("norm_uc")}});
+    step(sec, ctx, r.inside ? "t.inside" : "t.outside", {{"t", value("t")}});
+    step(sec, ctx, "Ic", {{"Ic", shown_point(ctx, key.point("Ic"), key.exact_x("Ic"), key.exact_y("Ic"))}});
   }
 
   // The canonical frame: the unit circle, A_c and the ray, the projection P_c of O with its right
@@ -246,10 +206,7 @@ class RayEllipseKind final : public ExerciseKind {
 
 }  // namespace
 
-std::vector<double> transformed::ellipse_student_answers(const Data& d) {
-  const auto r = geo::intersect(world_ray(d), ellipse_of(d));
-  return student_method(d, r.hit.has_value(), r.inside, 2)(Nudge{});
-}
+KeySolution transformed::ellipse_key(const Data& d, const ExerciseContext& ctx) { return MethodKind<RayEllipse>::solve(d, ctx); }
 
 const ExerciseKind& ray_ellipse_kind() {
   static const RayEllipseKind kind;

@@ -6,7 +6,6 @@
 
 #include <cmath>
 
-#include "exercises/kinds/registry.h"
 #include "exercises/kinds/transformed_common.h"
 #include "geometry/box_faces.h"
 
@@ -14,6 +13,7 @@ namespace epure::kinds {
 
 namespace {
 
+using geo::Face;
 using geo::Point2;
 using geo::Vec2;
 using namespace transformed;
@@ -22,101 +22,141 @@ geo::Rectangle rectangle_of(const Data& d) { return {d.C, d.sx, d.sy, d.angle_de
 
 double along(Vec2 v, int axis) { return axis == 0 ? v.x : v.y; }
 double along(Point2 p, int axis) { return axis == 0 ? p.x : p.y; }
-const Ex& along(const ExVec& v, int axis) { return axis == 0 ? v.x : v.y; }
 
-// A side the method looks at, and what it finds there. From outside: each candidate side, met
-// where (A_c + t·u_c)·n = 1 if the ray heads into it (u_c·n < 0), t = (1 − A_c·n)/(u_c·n); the
-// point must then lie on the side. From inside: along each axis the side the ray heads to.
+// A side the method looks at, on the core's canonical ray, for the draw's clearances (the key
+// shows the method's own steps). From outside: each candidate side, met where (A_c + t·u_c)·n = 1
+// if the ray heads into it (u_c·n < 0), t = (1 − A_c·n)/(u_c·n). From inside: along each axis
+// the side the ray heads to.
+// |u_c·n| below this fraction of ‖u_c‖ is zero: what the binary rounding of cos 90° or sin 180°
+// leaves (about 1e-17) where the ray runs along a side's direction, never a real crossing.
+constexpr double kAlongSide = 1e-12;
+
 struct SideTest {
   geo::Face face;
-  double u_n;               // u_c·n
   std::optional<double> t;  // where the ray crosses the side's line, when it heads to it
   Point2 at;                // the ray's point there
-  bool on_side = false;
 };
 
 std::vector<SideTest> side_tests(const geo::RayRectangle& r) {
   const Point2 Ac = r.canonical_ray.origin;
   const Vec2 uc = r.canonical_ray.direction;
   std::vector<SideTest> tests;
+  const double tiny = kAlongSide * geo::norm(uc);
   auto look = [&](geo::Face face) {
-    SideTest s{face, face.sign * along(uc, face.axis), std::nullopt, {}, false};
-    const bool heads_to = r.inside ? s.u_n > 0 : s.u_n < 0;
-    if (heads_to) {
-      s.t = (1 - face.sign * along(Ac, face.axis)) / s.u_n;
+    SideTest s{face, std::nullopt, {}};
+    const double u_n = face.sign * along(uc, face.axis);
+    if (r.inside ? u_n > tiny : u_n < -tiny) {
+      s.t = (1 - face.sign * along(Ac, face.axis)) / u_n;
       s.at = Ac + *s.t * uc;
-      s.on_side = std::abs(along(s.at, 1 - face.axis)) <= 1;
     }
     tests.push_back(s);
   };
   if (r.inside) {
     for (int axis : {0, 1})
-      if (std::abs(along(uc, axis)) > 0) look({axis, along(uc, axis) > 0 ? +1 : -1});
+      if (std::abs(along(uc, axis)) > tiny) look({axis, along(uc, axis) > 0 ? +1 : -1});
   } else {
     r.canonical.faces.for_each(look);
   }
   return tests;
 }
 
-// The exact side test: u_c·n, t = (σ − A_c)/u_c along the side's axis, and the point there.
-struct ExactSide {
-  Ex u_n, t;
-  ExVec at;
+// The four sides in the contract's order, and the names of the method's steps on each (recorded
+// steps keep views of their names).
+constexpr Face kSides[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
+constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
+constexpr std::string_view kStepT[] = {"t.+x", "t.+y", "t.-x", "t.-y"};
+constexpr std::string_view kStepJ[] = {"J.+x", "J.+y", "J.-x", "J.-y"};
+
+int index_of(Face f) {
+  for (int i = 0; i < 4; ++i)
+    if (kSides[i] == f) return i;
+  return 0;
+}
+
+// The ray and the rectangle, written once (method.h): the frame change and the way back are
+// transformed_common's, the canonical part is the course's exercise 4 on the square.
+struct RayRectangle {
+  using Data = transformed::Data;
+  static constexpr std::string_view kName = "ray_rectangle";
+
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    transformed::schema(v, d, "half");
+  }
+
+  static constexpr auto& kQuestions = transformed::kQuestions;
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 7;
+
+  // No normal_wrong_transform: a side's canonical normal lies along an axis, which S and S⁻¹
+  // only stretch, so the normal carried by T and normalised is the right one.
+  static constexpr std::string_view kMistakes[] = {
+      "rotation_sign",        "translation_forgotten", "transform_order",   "uc_renormalised",
+      "direction_not_unit",   "direction_translated",  "not_back_to_world", "normal_inward",
+      "normal_not_unit"};
+
+  // In the canonical frame, as the course's exercise 4 (the square): the candidate sides are
+  // those whose closed outer half-plane holds A_c (A_c·n ≥ 1), A_c is inside when there is none;
+  // on each side the ray heads into (u_c·n < 0; from inside, u_c·n > 0), (A_c + t·u_c)·n = 1
+  // gives t = (1 − A_c·n)/(u_c·n), and the crossing is the hit when it lies on the side (the
+  // nearest, from inside). N_c is the normal of the side I_c = A_c + t·u_c lies on. They round t.
+  template <class M>
+  static void method(M& m, const Data& d) {
+    using method::less;
+    using Num = typename M::Number;
+    const Frame<M> f = frame_change(m, d);
+    const auto one = m.in(1.0), zero = m.in(0.0);
+    auto coord = [](const auto& p, int axis) { return axis == 0 ? p.x : p.y; };
+    auto on = [&](const auto& p, Face s) { return s.sign > 0 ? coord(p, s.axis) : -coord(p, s.axis); };
+
+    bool candidate[4] = {};
+    method::Cond inside{true};
+    for (int i = 0; i < 4; ++i) {
+      const auto a_n = on(f.Ac, kSides[i]);
+      candidate[i] = !less(a_n, one).v;
+      inside = inside && less(a_n, one);
+    }
+    const auto in = m.boolean("inside", inside);
+    std::optional<Num> best;
+    const double tiny = kAlongSide * std::hypot(method::value(f.uc.x), method::value(f.uc.y));
+    for (int i = 0; i < 4; ++i) {
+      const Face s = kSides[i];
+      const auto u_n = m.note(kStepUn[i], on(f.uc, s));
+      const bool in_play = in ? method::value(u_n) > tiny : candidate[i];
+      if (!in_play || (!in && !(method::value(u_n) < -tiny))) continue;
+      const auto t = m.note(kStepT[i], (one - on(f.Ac, s)) / u_n);
+      const auto J = m.note(kStepJ[i], f.Ac + t * f.uc);
+      const bool on_side = static_cast<bool>(!less(t, zero) && !less(one, method::magnitude(coord(J, 1 - s.axis))));
+      if (on_side && (!best || less(t, *best))) best = t;
+    }
+    // whether it hits is read from A_c and u_c
+    const method::Deps deps = in.deps | method::deps_of(f.Ac.x) | method::deps_of(f.Ac.y) |
+                              method::deps_of(f.uc.x) | method::deps_of(f.uc.y);
+    const auto hit = m.boolean("hit", method::Cond{best.has_value(), deps});
+    if (!hit) return;
+    const auto t = m.number("t", m.round("t", best ? *best : zero));
+    const auto Ic = m.note("Ic", f.Ac + t * f.uc);
+    // the side I_c lies on: its larger coordinate, in absolute value
+    const bool on_x = static_cast<bool>(!less(method::magnitude(Ic.x), method::magnitude(Ic.y)));
+    const auto sign = [&](const auto& c) { return less(c, zero) ? -one : one; };
+    const auto no = Ic.x - Ic.x;  // carries I_c's dependencies into N_c, at no cost to its value
+    const typename M::Vec Nc{m.either(no + (on_x ? sign(Ic.x) : zero), on_x ? sign(Ic.x) : zero),
+                             m.either(no + (on_x ? zero : sign(Ic.y)), on_x ? zero : sign(Ic.y))};
+    back_to_world(m, f, t, Ic, Nc);
+  }
+
+  static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), rectangle_of(d))); }
 };
-ExactSide exact_side(const ExactFrame& f, geo::Face face) {
-  ExactSide e;
-  const Ex sign = Ex::integer(face.sign);
-  e.u_n = sign * along(f.uc, face.axis);
-  e.t = (sign - along(f.Ac, face.axis)) / along(f.uc, face.axis);
-  e.at = {f.Ac.x + e.t * f.uc.x, f.Ac.y + e.t * f.uc.y};
-  return e;
-}
-
-Vec2 normal_of(geo::Face face) { return face.axis == 0 ? Vec2{double(face.sign), 0} : Vec2{0, double(face.sign)}; }
-ExVec exact_normal_of(geo::Face face) {
-  const Ex one = Ex::integer(face.sign), zero = Ex::integer(0);
-  return face.axis == 0 ? ExVec{one, zero} : ExVec{zero, one};
-}
-
-// The intermediate the student rounds after the frame change: t.
-constexpr int kStudentSteps = kFrameSteps + 1;
-
-// The course's method in the canonical frame, by hand, through the side the core says is hit:
-// {Ac.x, Ac.y, uc.x, uc.y} and, with a hit, {t, I.x, I.y, N.x, N.y}.
-StudentMethod student_method(const Data& d, std::optional<geo::Face> face, int decimals) {
-  return [d, face, decimals](const Nudge& nudge) {
-    const Rounding r(nudge, decimals);
-    const StudentFrame f = student_frame(d, r);
-    std::vector<double> out{f.Ac.x, f.Ac.y, f.uc.x, f.uc.y};
-    if (!face) return out;
-    const double t = r(kFrameSteps, (face->sign - along(f.Ac, face->axis)) / along(f.uc, face->axis));
-    out.push_back(t);
-    for (double x : student_world(d, f, t, normal_of(*face))) out.push_back(x);
-    return out;
-  };
-}
-
-std::vector<double> tolerances(const Data& d, const geo::RayRectangle& r, int decimals) {
-  return derive_abs_tolerances(student_method(d, r.canonical.face, decimals),
-                               r.hit ? kStudentSteps : kFrameSteps, decimals);
-}
 
 std::string side_name(geo::Face face) { return std::string(geo::face_name(face)); }
 
-class RayRectangleKind final : public ExerciseKind {
+class RayRectangleKind final : public MethodKind<RayRectangle> {
  public:
-  std::string_view name() const override { return "ray_rectangle"; }
   std::vector<std::pair<std::string, double>> default_branches() const override {
     return {{"hit", 2}, {"miss", 1}, {"inside", 1}};
   }
   std::map<std::string, double> default_constraints() const override { return common_constraints(); }
-  std::vector<std::string> fields() const override { return transformed::fields(); }
-  std::vector<SheetField> sheet_fields() const override {
-    return {{"Ac", render::AnswerField::Kind::point, {}},       {"uc", render::AnswerField::Kind::point, {}},
-            {"inside", render::AnswerField::Kind::boolean, {}}, {"hit", render::AnswerField::Kind::boolean, {}},
-            {"t", render::AnswerField::Kind::number, {}},       {"I", render::AnswerField::Kind::point, {}},
-            {"N", render::AnswerField::Kind::point, {}}};
-  }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}, {"Ac", 1, {}}, {"uc", 1, "Ac"}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Limits lim = limits(ctx, *this);
@@ -128,10 +168,10 @@ class RayRectangleKind final : public ExerciseKind {
       if (!d) return std::nullopt;
       const auto r = geo::intersect(world_ray(*d), rectangle_of(*d));
       if (!clear(r, ctx.branch, lim)) return std::nullopt;
-      if (!well_conditioned(tolerances(*d, r, ctx.decimals), lim)) return std::nullopt;
+      if (!well_conditioned<RayRectangle>(*d, ctx.decimals, lim)) return std::nullopt;
       return d;
     });
-    if (auto taken = already_taken(ctx, instance_text(d, Shape::rectangle))) return *std::move(taken);
+    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
     return build(d, ctx);
   }
 
@@ -165,33 +205,10 @@ class RayRectangleKind final : public ExerciseKind {
     const auto r = geo::intersect(world_ray(d), rectangle_of(d));
     const Solved s = solved_of(r);
 
-    // exact forms, each checked against the core's double
-    const ExactFrame f = exact_frame(d);
-    cross_check(f.Ac, geo::to_vec(s.canonical_ray.origin), "A_c");
-    cross_check(f.uc, s.canonical_ray.direction, "u_c");
-    ExactWorld w;
-    if (s.hit) {
-      const geo::Face face = *r.canonical.face;
-      const ExactSide e = exact_side(f, face);
-      w = exact_world(d, f, e.t, exact_normal_of(face));
-      cross_check(w.t, s.hit->t, "t");
-      cross_check(e.at, geo::to_vec(s.canonical_hit->I), "I_c");
-      cross_check(w.I, geo::to_vec(s.hit->I), "I");
-      cross_check(w.N, s.hit->N, "N");
-    }
-
-    ExerciseInstance inst;
-    inst.n = ctx.n;
-    inst.kind = std::string(name());
-    inst.branch = ctx.branch;
-    inst.instance = instance_text(d, Shape::rectangle);
-    inst.solution = solve_instance(inst.instance);
-    inst.fingerprint = fingerprint(inst.instance);
-
-    const auto tol = tolerances(d, r, ctx.decimals);
-    Questions q(ctx);
-    ask(q, s, tol, f, w);
-    inst.questions = q.take_questions();
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = solve(d, ctx);
+    const Questions& q = key.questions;
+    inst.questions = key.questions.take_questions();
 
     const TextVars data = data_vars(ctx, d, Shape::rectangle);
     inst.sheet = begin_sheet_section(ctx, "ray_rectangle.title");
@@ -201,54 +218,62 @@ class RayRectangleKind final : public ExerciseKind {
 
     inst.key = begin_key_section(ctx, "ray_rectangle.title");
     inst.key.add(render::Paragraph{ctx.texts.format("ray_rectangle.statement", data)});
-    frame_steps(inst.key, ctx, d, Shape::rectangle, s, f);
-    square_steps(inst.key, ctx, r, f, w);
-    if (s.hit) world_steps(inst.key, ctx, d, Shape::rectangle, s, w);
+    frame_steps(inst.key, ctx, d, Shape::rectangle, key);
+    square_steps(inst.key, ctx, r, key);
+    if (s.hit) world_steps(inst.key, ctx, key);
     inst.key.add(render::Figure{key_scene(ctx, d, Shape::rectangle, s, canonical(r)), 0.95});
     add_lines(inst.key, q);
     return inst;
   }
 
-  static void square_steps(render::Section& key, const ExerciseContext& ctx, const geo::RayRectangle& r,
-                           const ExactFrame& f, const ExactWorld& w) {
+  // The canonical square's steps, side by side as the core decides them, with the values of the
+  // key's method.
+  static void square_steps(render::Section& sec, const ExerciseContext& ctx, const geo::RayRectangle& r,
+                           const KeySolution& key) {
+    auto value = [&](std::string_view id) { return equals_value(ctx, key.value(id), key.exact(id)); };
     if (r.inside) {
-      step(key, ctx, "inside.yes");
+      step(sec, ctx, "inside.yes");
     } else {
       std::string faces;
       r.canonical.faces.for_each([&](geo::Face face) {
         faces += fmt::format("{}{}", faces.empty() ? "" : ", ", side_name(face));
       });
-      step(key, ctx, "inside.no", {{"faces", faces}});
+      step(sec, ctx, "inside.no", {{"faces", faces}});
     }
-    for (const SideTest& side : side_tests(r)) {
-      const bool is_hit = r.canonical.face && *r.canonical.face == side.face;
-      const ExactSide e = exact_side(f, side.face);
-      const std::string face = side_name(side.face);
-      if (!side.t) {
-        step(key, ctx, "side.away", {{"face", face}, {"u_n", equals_value(ctx, side.u_n, e.u_n.get())}});
-        continue;
+    // the sides the method looked at, in the key's order (axis by axis): from outside the
+    // candidates, from inside those the ray heads to; a side it heads into has its crossing
+    auto show = [&](Face side) {
+      const int i = index_of(side);
+      const std::string face = side_name(side);
+      if (!key.run.step(kStepT[i])) {
+        if (!r.inside) step(sec, ctx, "side.away", {{"face", face}, {"u_n", value(kStepUn[i])}});
+        return;
       }
-      // the side hit shows the core's t and point; the others the method's own
-      const double t = is_hit ? r.hit->t : *side.t;
-      const Point2 at = is_hit ? r.canonical.hit->I : side.at;
+      const Point2 J = key.point(kStepJ[i]);
       const TextVars vars{{"face", face},
-                          {"u_n", equals_value(ctx, side.u_n, e.u_n.get())},
-                          {"t", equals_value(ctx, t, e.t.get())},
-                          {"at", shown_point(ctx, at, e.at.x.get(), e.at.y.get())}};
+                          {"u_n", value(kStepUn[i])},
+                          {"t", value(kStepT[i])},
+                          {"at", shown_point(ctx, J, key.exact_x(kStepJ[i]), key.exact_y(kStepJ[i]))}};
       if (r.inside)
-        step(key, ctx, "side.exit", vars);
+        step(sec, ctx, "side.exit", vars);
       else
-        step(key, ctx, side.on_side ? "side.on" : "side.off", vars);
+        step(sec, ctx, std::abs(along(J, 1 - side.axis)) <= 1 ? "side.on" : "side.off", vars);
+    };
+    if (r.inside) {
+      for (int axis : {0, 1})
+        for (int sign : {+1, -1}) show({axis, sign});
+    } else {
+      r.canonical.faces.for_each(show);
     }
     if (!r.hit) {
-      step(key, ctx, "no_hit");
+      step(sec, ctx, "no_hit");
       return;
     }
     const geo::Face face = *r.canonical.face;
-    step(key, ctx, r.inside ? "leaves" : "enters",
+    step(sec, ctx, r.inside ? "leaves" : "enters",
          {{"face", side_name(face)},
-          {"t", equals_value(ctx, r.hit->t, w.t.get())},
-          {"Nc", shown_point(ctx, geo::to_point(r.canonical.hit->N), w.Nc.x.get(), w.Nc.y.get())}});
+          {"t", value("t")},
+          {"Nc", shown_point(ctx, key.point("Nc"), key.exact_x("Nc"), key.exact_y("Nc"))}});
   }
 
   // The canonical frame: the square with its candidate sides highlighted (and their supporting
@@ -277,10 +302,7 @@ class RayRectangleKind final : public ExerciseKind {
 
 }  // namespace
 
-std::vector<double> transformed::rectangle_student_answers(const Data& d) {
-  const auto r = geo::intersect(world_ray(d), rectangle_of(d));
-  return student_method(d, r.canonical.face, 2)(Nudge{});
-}
+KeySolution transformed::rectangle_key(const Data& d, const ExerciseContext& ctx) { return MethodKind<RayRectangle>::solve(d, ctx); }
 
 const ExerciseKind& ray_rectangle_kind() {
   static const RayRectangleKind kind;

@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "exercises/kind_method.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/ray_square.h"
 
 namespace epure::kinds {

@@ -1,16 +1,26 @@
-#include "exercises/kinds/registry.h"
+// The one list of the exercise kinds, in the course's order. Each kind is one file beside this
+// one (its schema, branches, questions, method, mistakes and diagrams) that defines its accessor;
+// nothing else names a kind.
+#include "exercises/exercise.h"
+
+namespace epure::kinds {
+
+const ExerciseKind& vectors_kind();
+const ExerciseKind& projection_kind();
+const ExerciseKind& segments_kind();
+const ExerciseKind& ray_circle_kind();
+const ExerciseKind& ray_square_kind();
+const ExerciseKind& ray_ellipse_kind();
+const ExerciseKind& ray_rectangle_kind();
+
+}  // namespace epure::kinds
 
 namespace epure {
 
 std::vector<const ExerciseKind*> all_kinds() {
-  // the course's order
   return {
-      &kinds::vectors_kind(),
-      &kinds::projection_kind(),
-      &kinds::segments_kind(),
-      &kinds::ray_circle_kind(),
-      &kinds::ray_square_kind(),
-      &kinds::ray_ellipse_kind(),
+      &kinds::vectors_kind(),    &kinds::projection_kind(),  &kinds::segments_kind(),
+      &kinds::ray_circle_kind(), &kinds::ray_square_kind(),  &kinds::ray_ellipse_kind(),
       &kinds::ray_rectangle_kind(),
   };
 }

@@ -13,7 +13,6 @@
 #include <stdexcept>
 
 #include "exercises/kind_method.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/segments.h"
 
 namespace epure::kinds {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace epure::kinds::transformed {
 
@@ -12,8 +13,8 @@ using geo::Vec2;
 
 namespace {
 
-std::string prefix(Shape shape) { return shape == Shape::ellipse ? "ray_ellipse" : "ray_rectangle"; }
-std::string key(Shape shape, std::string_view rest) { return fmt::format("{}.{}", prefix(shape), rest); }
+// A text of the kind: the spec's kind names the templates' prefix.
+std::string key(const ExerciseContext& ctx, std::string_view rest) { return fmt::format("{}.{}", ctx.spec.kind, rest); }
 // The names of the two sizes, as the statement and the diagram call them.
 std::pair<std::string, std::string> size_names(Shape shape) {
   return shape == Shape::ellipse ? std::pair<std::string, std::string>{"a", "b"}
@@ -39,39 +40,7 @@ Vec2 half_extent(Shape shape, double sx, double sy, double angle_deg) {
   return {sx * std::abs(c) + sy * std::abs(s), sx * std::abs(s) + sy * std::abs(c)};
 }
 
-template <class F>
-Ex lift(F&& f) {
-  try {
-    return Ex(f());
-  } catch (const std::domain_error&) {  // different radicands, division by zero
-  } catch (const exact::ExactOverflow&) {
-  }
-  return {};
-}
-
-exact::Surd divide(const exact::Surd& x, const exact::Surd& y) {
-  if (y.is_rational()) return x / y.a();
-  // (p + q√c)/(r + s√c) = (p + q√c)(r − s√c)/(r² − s²c); r² − s²c ≠ 0 since √c is irrational
-  const exact::Surd conjugate(y.a(), -y.b(), y.c());
-  return (x * conjugate) / (y.a() * y.a() - y.b() * y.b() * exact::Rational(y.c()));
-}
-
-// v rotated by −θ, given cos θ and sin θ: (c·x + s·y, −s·x + c·y).
-ExVec rotate_back(const ExVec& v, const ExVec& cs) {
-  return {cs.x * v.x + cs.y * v.y, cs.x * v.y - cs.y * v.x};
-}
-
 }  // namespace
-
-std::string instance_text(const Data& d, Shape shape) {
-  return InstanceWriter(prefix(shape))
-      .point("A", d.A)
-      .vec("u", d.u)
-      .point("C", d.C)
-      .pair(shape == Shape::ellipse ? "radii" : "half", d.sx, d.sy)
-      .number("angle", d.angle_deg)
-      .finish();
-}
 
 geo::Ray2 world_ray(const Data& d) { return geo::Ray2::unit(d.A, d.u); }
 
@@ -142,150 +111,29 @@ std::optional<Data> draw_data(Rng& rng, Difficulty level, Shape shape, bool insi
   return d;
 }
 
-// ---- exact forms -------------------------------------------------------------------------------
+// ---- the method's shared parts ----------------------------------------------------------------
 
-Ex Ex::datum(double x) {
-  if (auto r = rational_of(x)) return Ex(*r);
-  return {};
-}
-
-Ex operator+(const Ex& x, const Ex& y) {
-  if (!x.v_ || !y.v_) return {};
-  return lift([&] { return *x.v_ + *y.v_; });
-}
-Ex operator-(const Ex& x, const Ex& y) {
-  if (!x.v_ || !y.v_) return {};
-  return lift([&] { return *x.v_ - *y.v_; });
-}
-Ex operator*(const Ex& x, const Ex& y) {
-  if (!x.v_ || !y.v_) return {};
-  return lift([&] { return *x.v_ * *y.v_; });
-}
-Ex operator/(const Ex& x, const Ex& y) {
-  if (!x.v_ || !y.v_) return {};
-  return lift([&] { return divide(*x.v_, *y.v_); });
-}
-Ex operator-(const Ex& x) {
-  if (!x.v_) return {};
-  return lift([&] { return -*x.v_; });
-}
-Ex sqrt(const Ex& x) {
-  if (!x.is_rational() || x.v_->a().sign() < 0) return {};
-  return lift([&] { return exact::Surd::sqrt(x.v_->a()); });
-}
-
-Ex dot(const ExVec& p, const ExVec& q) { return p.x * q.x + p.y * q.y; }
-
-ExVec exact_cos_sin(double degrees) {
+ExactCosSin exact_cos_sin(double degrees) {
   const auto r = rational_of(degrees);
   if (!r || !r->is_integer()) return {};
   const std::int64_t turn = ((r->num() % 360) + 360) % 360;
   const exact::Rational half(1, 2);
-  ExVec cs;
+  exact::Surd c, s;
   switch (turn % 90) {
-    case 0: cs = {Ex::integer(1), Ex::integer(0)}; break;
-    case 30: cs = {Ex(exact::Surd(0, half, 3)), Ex(half)}; break;
-    case 45: cs = {Ex(exact::Surd(0, half, 2)), Ex(exact::Surd(0, half, 2))}; break;
-    case 60: cs = {Ex(half), Ex(exact::Surd(0, half, 3))}; break;
+    case 0: c = exact::Surd(exact::Rational(1)), s = exact::Surd(exact::Rational(0)); break;
+    case 30: c = exact::Surd(0, half, 3), s = exact::Surd(half); break;
+    case 45: c = exact::Surd(0, half, 2), s = exact::Surd(0, half, 2); break;
+    case 60: c = exact::Surd(half), s = exact::Surd(0, half, 3); break;
     default: return {};
   }
-  for (std::int64_t q = 0; q < turn / 90; ++q) cs = {-cs.y, cs.x};  // a quarter turn more
-  return cs;
-}
-
-ExactFrame exact_frame(const Data& d) {
-  ExactFrame f;
-  const ExVec u{Ex::datum(d.u.x), Ex::datum(d.u.y)};
-  f.norm_u = sqrt(dot(u, u));
-  f.u_hat = {u.x / f.norm_u, u.y / f.norm_u};
-  f.cos_sin = exact_cos_sin(d.angle_deg);
-  f.CA = {Ex::datum(d.A.x) - Ex::datum(d.C.x), Ex::datum(d.A.y) - Ex::datum(d.C.y)};
-  const Ex sx = Ex::datum(d.sx), sy = Ex::datum(d.sy);
-  f.CA_rotated = rotate_back(f.CA, f.cos_sin);
-  f.Ac = {f.CA_rotated.x / sx, f.CA_rotated.y / sy};
-  f.u_rotated = rotate_back(f.u_hat, f.cos_sin);
-  f.uc = {f.u_rotated.x / sx, f.u_rotated.y / sy};
-  return f;
-}
-
-ExactWorld exact_world(const Data& d, const ExactFrame& f, const Ex& t, const ExVec& Nc) {
-  ExactWorld w;
-  w.t = t;
-  w.Nc = Nc;
-  w.I = {Ex::datum(d.A.x) + t * f.u_hat.x, Ex::datum(d.A.y) + t * f.u_hat.y};
-  // (M⁻¹)ᵀ = rotate(θ)·scale(1/sx, 1/sy)
-  const ExVec scaled{Nc.x / Ex::datum(d.sx), Nc.y / Ex::datum(d.sy)};
-  const Ex& c = f.cos_sin.x;
-  const Ex& s = f.cos_sin.y;
-  w.n = {c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y};
-  const Ex length = sqrt(dot(w.n, w.n));
-  w.N = {w.n.x / length, w.n.y / length};
-  return w;
-}
-
-void cross_check(const Ex& e, double core, const char* what) {
-  if (!e.has_value()) return;
-  const double v = e.get()->value();
-  if (!(std::abs(v - core) <= 1e-9 * std::max(1.0, std::abs(core))))
-    throw std::logic_error(fmt::format("exact {} = {} disagrees with the core's {}", what, v, core));
-}
-void cross_check(const ExVec& e, Vec2 core, const char* what) {
-  cross_check(e.x, core.x, what);
-  cross_check(e.y, core.y, what);
+  for (std::int64_t q = 0; q < turn / 90; ++q) c = std::exchange(s, c), c = -c;  // a quarter turn more: (−s, c)
+  return {c, s};
 }
 
 bool well_conditioned(const std::vector<double>& tolerances, const Limits& lim) {
   for (double t : tolerances)
     if (!(t <= lim.max_tolerance)) return false;
   return true;
-}
-
-// ---- the student's method ----------------------------------------------------------------------
-
-Rounding::Rounding(const Nudge& nudge, int decimals) : nudge_(nudge), scale_(std::pow(10.0, decimals)) {}
-
-double Rounding::operator()(int k, double value) const {
-  const double scaled = value * scale_;
-  const bool short_enough = std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
-  return short_enough ? value : nudge_.at(k, value);
-}
-
-StudentFrame student_frame(const Data& d, const Rounding& r) {
-  StudentFrame f;
-  const Vec2 u_hat = d.u / geo::norm(d.u);  // drawn data: never zero
-  f.u_hat = {r(0, u_hat.x), r(1, u_hat.y)};
-  const auto cs = geo::cos_sin_degrees(d.angle_deg);
-  f.cos = r(2, cs.cos);
-  f.sin = r(3, cs.sin);
-  const Vec2 CA = d.A - d.C;
-  f.Ac = {r(4, (f.cos * CA.x + f.sin * CA.y) / d.sx), r(5, (f.cos * CA.y - f.sin * CA.x) / d.sy)};
-  f.uc = {r(6, (f.cos * f.u_hat.x + f.sin * f.u_hat.y) / d.sx),
-          r(7, (f.cos * f.u_hat.y - f.sin * f.u_hat.x) / d.sy)};
-  return f;
-}
-
-std::vector<double> student_world(const Data& d, const StudentFrame& f, double t, Vec2 Nc) {
-  const Point2 I = d.A + t * f.u_hat;
-  const Vec2 scaled{Nc.x / d.sx, Nc.y / d.sy};
-  const Vec2 n{f.cos * scaled.x - f.sin * scaled.y, f.sin * scaled.x + f.cos * scaled.y};
-  const Vec2 N = n / geo::norm(n);  // a non-zero normal through an invertible map
-  return {I.x, I.y, N.x, N.y};
-}
-
-// ---- questions ---------------------------------------------------------------------------------
-
-std::vector<std::string> fields() { return {"Ac", "uc", "inside", "hit", "t", "I", "N"}; }
-
-void ask(Questions& q, const Solved& s, const std::vector<double>& tol, const ExactFrame& f,
-         const ExactWorld& w) {
-  q.point("Ac", s.canonical_ray.origin, tol[0], tol[1], f.Ac.x.get(), f.Ac.y.get());
-  q.vector("uc", s.canonical_ray.direction, tol[2], tol[3], f.uc.x.get(), f.uc.y.get());
-  q.boolean("inside", s.inside);
-  q.boolean("hit", s.hit.has_value());
-  if (!s.hit) return;
-  q.number("t", s.hit->t, tol[4], w.t.get());
-  q.point("I", s.hit->I, tol[5], tol[6], w.I.x.get(), w.I.y.get());
-  q.vector("N", s.hit->N, tol[7], tol[8], w.N.x.get(), w.N.y.get());
 }
 
 // ---- texts -------------------------------------------------------------------------------------
@@ -309,7 +157,7 @@ std::string inverse_text(const ExerciseContext& ctx, const Data& d, Shape shape)
   const auto& N = ctx.numbers;
   const auto [a, b] = size_names(shape);
   // 0 − x rather than −x: no "−0"
-  return ctx.texts.format(key(shape, "inverse"),
+  return ctx.texts.format(key(ctx, "inverse"),
                           {{"inv_" + a, reciprocal(N, d.sx)},
                            {"inv_" + b, reciprocal(N, d.sy)},
                            {"minus_angle", N.datum(0.0 - d.angle_deg)},
@@ -318,50 +166,38 @@ std::string inverse_text(const ExerciseContext& ctx, const Data& d, Shape shape)
 }  // namespace
 
 std::string link_text(const ExerciseContext& ctx, const Data& d, Shape shape) {
-  return ctx.texts.format(key(shape, "link"), {{"inverse", inverse_text(ctx, d, shape)}});
+  return ctx.texts.format(key(ctx, "link"), {{"inverse", inverse_text(ctx, d, shape)}});
 }
 
 void step(render::Section& s, const ExerciseContext& ctx, std::string_view name, const TextVars& vars) {
-  // the kind is the spec's: ray_ellipse or ray_rectangle
+  // the kind is the spec's: its texts are `<kind>.step.<name>`
   s.add(render::Paragraph{ctx.texts.format(fmt::format("{}.step.{}", ctx.spec.kind, name), vars)});
 }
 
-void frame_steps(render::Section& s, const ExerciseContext& ctx, const Data& d, Shape shape,
-                 const Solved& solved, const ExactFrame& f) {
+void frame_steps(render::Section& s, const ExerciseContext& ctx, const Data& d, Shape shape, const KeySolution& key) {
   const auto& N = ctx.numbers;
   step(s, ctx, "transform", {{"inverse", inverse_text(ctx, d, shape)}});
-  const Vec2 u_hat = *geo::normalized(d.u);
   step(s, ctx, "unit",
-       {{"norm_u", equals_value(ctx, geo::norm(d.u), f.norm_u.get())},
-        {"u_hat", shown_point(ctx, geo::to_point(u_hat), f.u_hat.x.get(), f.u_hat.y.get())}});
-  const auto cs = geo::cos_sin_degrees(d.angle_deg);
+       {{"norm_u", equals_value(ctx, key.value("norm_u"), key.exact("norm_u"))},
+        {"u_hat", shown_point(ctx, key.point("u_hat"), key.exact_x("u_hat"), key.exact_y("u_hat"))}});
   step(s, ctx, "cos_sin",
        {{"angle", N.datum(d.angle_deg)},
-        {"cos", equals_value(ctx, cs.cos, f.cos_sin.x.get())},
-        {"sin", equals_value(ctx, cs.sin, f.cos_sin.y.get())}});
-  const auto back = geo::Transform2::rotate_degrees(0.0 - d.angle_deg);
+        {"cos", equals_value(ctx, key.value("cos"), key.exact("cos"))},
+        {"sin", equals_value(ctx, key.value("sin"), key.exact("sin"))}});
   const Vec2 CA = d.A - d.C;
-  const Vec2 CA_rotated = back.apply(CA);
   step(s, ctx, "Ac",
        {{"CA", N.point(CA.x, CA.y)},
-        {"rotated", shown_point(ctx, geo::to_point(CA_rotated), f.CA_rotated.x.get(), f.CA_rotated.y.get())},
-        {"Ac", shown_point(ctx, solved.canonical_ray.origin, f.Ac.x.get(), f.Ac.y.get())}});
-  const Vec2 u_rotated = back.apply(u_hat);
+        {"rotated", shown_point(ctx, key.point("CA_rotated"), key.exact_x("CA_rotated"), key.exact_y("CA_rotated"))},
+        {"Ac", shown_point(ctx, key.point("Ac"), key.exact_x("Ac"), key.exact_y("Ac"))}});
   step(s, ctx, "uc",
-       {{"rotated", shown_point(ctx, geo::to_point(u_rotated), f.u_rotated.x.get(), f.u_rotated.y.get())},
-        {"uc", shown_point(ctx, geo::to_point(solved.canonical_ray.direction), f.uc.x.get(), f.uc.y.get())}});
+       {{"rotated", shown_point(ctx, key.point("u_rotated"), key.exact_x("u_rotated"), key.exact_y("u_rotated"))},
+        {"uc", shown_point(ctx, key.point("uc"), key.exact_x("uc"), key.exact_y("uc"))}});
 }
 
-void world_steps(render::Section& s, const ExerciseContext& ctx, const Data&, Shape,
-                 const Solved& solved, const ExactWorld& w) {
-  const geo::Hit2& hit = *solved.hit;
-  const Vec2 Nc = solved.canonical_hit->N;
-  const Vec2 n = solved.to_world.apply_normal(Nc);
-  step(s, ctx, "I", {{"I", shown_point(ctx, hit.I, w.I.x.get(), w.I.y.get())}});
-  step(s, ctx, "N",
-       {{"Nc", shown_point(ctx, geo::to_point(Nc), w.Nc.x.get(), w.Nc.y.get())},
-        {"n", shown_point(ctx, geo::to_point(n), w.n.x.get(), w.n.y.get())},
-        {"N", shown_point(ctx, geo::to_point(hit.N), w.N.x.get(), w.N.y.get())}});
+void world_steps(render::Section& s, const ExerciseContext& ctx, const KeySolution& key) {
+  auto point = [&](std::string_view id) { return shown_point(ctx, key.point(id), key.exact_x(id), key.exact_y(id)); };
+  step(s, ctx, "I", {{"I", point("I")}});
+  step(s, ctx, "N", {{"Nc", point("Nc")}, {"n", point("n")}, {"N", point("N")}});
 }
 
 // ---- diagrams ----------------------------------------------------------------------------------
@@ -436,8 +272,8 @@ void add_canonical_hit(render::Panel& panel, const geo::Hit2& hit) {
 
 render::Scene question_scene(const ExerciseContext& ctx, const Data& d, Shape shape, const Solved& s) {
   render::Scene scene;
-  scene.title = ctx.texts.get(key(shape, "title"));
-  scene.description = ctx.texts.get(key(shape, "figure.question"));
+  scene.title = ctx.texts.get(key(ctx, "title"));
+  scene.description = ctx.texts.get(key(ctx, "figure.question"));
   scene.panels.push_back(world_panel(d, shape, s));
   return scene;
 }
@@ -445,12 +281,12 @@ render::Scene question_scene(const ExerciseContext& ctx, const Data& d, Shape sh
 render::Scene key_scene(const ExerciseContext& ctx, const Data& d, Shape shape, const Solved& s,
                         render::Panel canonical) {
   render::Scene scene;
-  scene.title = ctx.texts.get(key(shape, "title"));
-  scene.description = ctx.texts.get(key(shape, "figure.key"));
+  scene.title = ctx.texts.get(key(ctx, "title"));
+  scene.description = ctx.texts.get(key(ctx, "figure.key"));
   render::Panel world = world_panel(d, shape, s);
   if (s.hit) add_world_hit(world, *s.hit);
-  world.caption = ctx.texts.get(key(shape, "panel.world"));
-  canonical.caption = ctx.texts.get(key(shape, "panel.canonical"));
+  world.caption = ctx.texts.get(key(ctx, "panel.world"));
+  canonical.caption = ctx.texts.get(key(ctx, "panel.canonical"));
   scene.panels.push_back(std::move(world));
   scene.panels.push_back(std::move(canonical));
   scene.links.push_back(link_text(ctx, d, shape));

@@ -1,19 +1,22 @@
 #pragma once
-// What ray_ellipse and ray_rectangle share, the course's open questions answered by
-// transformations. The figure is a canonical one (the unit circle, the square [-1,1]²) placed by
-// T = translate(C) ∘ rotate(θ) ∘ scale(sx, sy), with (sx, sy) the radii (a, b) or the half-sizes
-// (w, h). The student carries the ray into the canonical frame with T⁻¹ (A_c = T⁻¹(A), u_c = T⁻¹
-// applied to û as a vector, not renormalised, so t names the same point in both frames), solves
-// the course's canonical problem there, and brings the hit back: I = A + t·û and the normal by
-// the inverse transpose. Each kind file says what is canonical-specific; this file holds the
-// drawing of the data, the exact forms of the frame change, the student's frame change (for the
-// tolerances), the questions, the shared worked steps and the shared parts of the diagrams.
+// What the two transformed kinds share (the ellipse and the rectangle), the course's open
+// questions answered by transformations. The figure is a canonical one (the unit circle, the
+// square [-1,1]²) placed by T = translate(C) ∘ rotate(θ) ∘ scale(sx, sy), with (sx, sy) the radii
+// (a, b) or the half-sizes (w, h). The student carries the ray into the canonical frame with T⁻¹
+// (A_c = T⁻¹(A), u_c = T⁻¹ applied to û as a vector, not renormalised, so t names the same point
+// in both frames), solves the course's canonical problem there, and brings the hit back: I = A +
+// t·û and the normal by the inverse transpose. Each kind file holds its schema, its questions and
+// its method's canonical part (kind_method.h); this file holds the data and their drawing, the
+// method's frame change and way back (written once for both, with their named mistakes), the
+// shared worked steps and the shared parts of the diagrams. The kind's name (and the prefix of its
+// texts) is the spec's: nothing here names a kind.
 #include <map>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
-#include "exercises/kind_support.h"
+#include "exercises/kind_method.h"
 #include "geometry/ray_transformed.h"
 
 namespace epure::kinds::transformed {
@@ -28,8 +31,27 @@ struct Data {
   double angle_deg = 0;   // counter-clockwise rotation of the sx-axis
 };
 
-// The solve input the data make (kind "ray_ellipse" with radii, "ray_rectangle" with half).
-std::string instance_text(const Data& d, Shape shape);
+// The solve input's fields: A, u, C, the sizes as one pair named `sizes` ("radii" or "half"),
+// the angle. The data keep the sizes as two numbers, so a read fills them from the pair.
+template <class V, class D>
+void schema(V& v, D& d, std::string_view sizes) {
+  v("A", d.A);
+  v("u", d.u);
+  v("C", d.C);
+  Pair p{d.sx, d.sy};
+  v(sizes, p);
+  if constexpr (!std::is_const_v<D>) {
+    d.sx = p.a;
+    d.sy = p.b;
+  }
+  v("angle", d.angle_deg);
+}
+
+// The questions both kinds ask, in the sheet's order; t, I, N only with a hit.
+inline constexpr method::QuestionDecl kQuestions[] = {
+    {"Ac", method::AnswerType::point},    {"uc", method::AnswerType::point}, {"inside", method::AnswerType::boolean},
+    {"hit", method::AnswerType::boolean}, {"t", method::AnswerType::number}, {"I", method::AnswerType::point},
+    {"N", method::AnswerType::point}};
 
 // The core's answer, whichever the canonical figure: what the shared parts need.
 struct Solved {
@@ -44,6 +66,97 @@ Solved solved_of(const Result& r) {
   return {r.to_world, r.canonical_ray, r.inside, r.hit, r.canonical.hit};
 }
 geo::Ray2 world_ray(const Data& d);  // (A, û): t is a length
+
+// The core's answers to kQuestions.
+template <class Result>
+CoreAnswers core_answers(const Result& r) {
+  CoreAnswers a;
+  a.point("Ac", r.canonical_ray.origin).vec("uc", r.canonical_ray.direction);
+  a.boolean("inside", r.inside).boolean("hit", r.hit.has_value());
+  if (r.hit) a.number("t", r.hit->t).point("I", r.hit->I).vec("N", r.hit->N);
+  return a;
+}
+
+// ---- the method's shared parts ---------------------------------------------------------------
+
+// cos θ and sin θ exactly, for θ a whole multiple of 30° or 45°; none otherwise.
+struct ExactCosSin {
+  std::optional<exact::Surd> cos, sin;
+};
+ExactCosSin exact_cos_sin(double degrees);
+
+// A value the student reads from a table (cos 30° = √3/2), not one computed from the data: its
+// exact form is given along with it under the exact evaluator.
+template <class M>
+typename M::Number table_value(const M& m, double x, const std::optional<exact::Surd>& e) {
+  if constexpr (std::is_same_v<typename M::Number, method::Exact>) return method::Exact{x, e};
+  else return m.in(x);
+}
+
+// What the frame change leaves the canonical part and the way back.
+template <class M>
+struct Frame {
+  typename M::Vec A, uh;
+  typename M::Number sx, sy, cos, sin;
+  typename M::Vec Ac, uc;
+};
+
+// The frame change by hand, the answers A_c and u_c: û = u/‖u‖, cos θ and sin θ, then
+// A_c = S⁻¹·R(−θ)·(A − C) and u_c = S⁻¹·R(−θ)·û, not renormalised. The student rounds û, cos θ,
+// sin θ, A_c and u_c. Mistakes: the rotation the wrong way, the translation forgotten, scale and
+// rotation undone in the wrong order, u used without normalising it, the direction translated
+// like a point, u_c renormalised.
+template <class M>
+Frame<M> frame_change(M& m, const Data& d) {
+  using Vec = typename M::Vec;
+  Frame<M> f;
+  f.A = m.in(d.A);
+  const auto C = m.in(d.C), u = m.in(d.u);
+  f.sx = m.in(d.sx);
+  f.sy = m.in(d.sy);
+  const auto length = m.note("norm_u", sqrt(dot(u, u)));
+  f.uh = m.round("u_hat", m.mistake("direction_not_unit", u / length, u));
+  const auto cs = geo::cos_sin_degrees(d.angle_deg);
+  const ExactCosSin ecs = exact_cos_sin(d.angle_deg);
+  f.cos = m.round("cos", table_value(m, cs.cos, ecs.cos));
+  f.sin = m.round("sin", table_value(m, cs.sin, ecs.sin));
+  // R(−θ)·v = (c·x + s·y, c·y − s·x); with the wrong sign it is R(θ)
+  const auto sin = m.mistake("rotation_sign", f.sin, -f.sin);
+  auto back = [&](const Vec& v) -> Vec { return {f.cos * v.x + sin * v.y, f.cos * v.y - sin * v.x}; };
+  auto unscale = [&](const Vec& v) -> Vec { return {v.x / f.sx, v.y / f.sy}; };
+  // T⁻¹ applied to A as a vector: the translation forgotten
+  const auto CA = m.mistake("translation_forgotten", f.A - C, f.A);
+  const auto CA_rotated = m.note("CA_rotated", back(CA));
+  f.Ac = m.point("Ac", m.round("Ac", m.mistake("transform_order", unscale(CA_rotated), back(unscale(CA)))));
+  // T⁻¹ applied to û as a point: the direction translated
+  const auto u_rotated = m.note("u_rotated", back(m.mistake("direction_translated", f.uh, f.uh - C)));
+  const auto uc = unscale(u_rotated);
+  f.uc = m.point("uc", m.round("uc", m.mistake("uc_renormalised", uc, uc / norm(uc))));
+  return f;
+}
+
+// Back to the world, the answers I and N: I = A + t·û (t is a length along û in both frames)
+// and N = normalise(R(θ)·S⁻¹·N_c), the inverse transpose, with the student's rounded û, cos θ
+// and sin θ. Mistakes: the answers left in the canonical frame (I_c, N_c), the normal pointing
+// inward, not normalised, or carried by T = R(θ)·S instead of the inverse transpose.
+template <class M>
+void back_to_world(M& m, const Frame<M>& f, const typename M::Number& t, const typename M::Vec& Ic,
+                   const typename M::Vec& Nc) {
+  using Vec = typename M::Vec;
+  m.point("I", m.mistake("not_back_to_world", f.A + t * f.uh, Ic));
+  auto rotate = [&](const Vec& v) -> Vec { return {f.cos * v.x - f.sin * v.y, f.sin * v.x + f.cos * v.y}; };
+  m.note("Nc", Nc);
+  const auto n = m.note("n", rotate({Nc.x / f.sx, Nc.y / f.sy}));
+  const auto N = n / norm(n);
+  const auto by_T = rotate({Nc.x * f.sx, Nc.y * f.sy});
+  const auto wrong_transform = by_T / norm(by_T);
+  m.point("N", m.mistake("normal_inward",
+                         m.mistake("normal_not_unit",
+                                   m.mistake("normal_wrong_transform", m.mistake("not_back_to_world", N, Nc),
+                                             wrong_transform),
+                                   n),
+                         -N));
+}
 
 // ---- constraints -------------------------------------------------------------------------------
 
@@ -72,102 +185,15 @@ Limits limits(const ExerciseContext& ctx, const ExerciseKind& kind);
 // Empty when this attempt fails those checks; the branch is checked by the caller.
 std::optional<Data> draw_data(Rng& rng, Difficulty level, Shape shape, bool inside, const Limits& lim);
 
-// ---- exact forms -------------------------------------------------------------------------------
-
-// An exact value, or none when the instance has no form we keep (an angle whose cosine is not a
-// quadratic surd, two different radicands, a nested root, 64-bit overflow): the key then gives
-// the decimal value alone. Operations on a missing value give a missing value.
-class Ex {
- public:
-  Ex() = default;
-  Ex(exact::Surd s) : v_(s) {}
-  Ex(exact::Rational r) : v_(exact::Surd(r)) {}
-  static Ex integer(std::int64_t n) { return Ex(exact::Rational(n)); }
-  static Ex datum(double x);  // the rational a datum denotes (rational_of)
-
-  bool has_value() const { return v_.has_value(); }
-  const std::optional<exact::Surd>& get() const { return v_; }
-  bool is_rational() const { return v_ && v_->is_rational(); }
-
-  friend Ex operator+(const Ex& x, const Ex& y);
-  friend Ex operator-(const Ex& x, const Ex& y);
-  friend Ex operator*(const Ex& x, const Ex& y);
-  friend Ex operator/(const Ex& x, const Ex& y);
-  friend Ex operator-(const Ex& x);
-  // √x when x is rational (a square root of a surd is not kept).
-  friend Ex sqrt(const Ex& x);
-
- private:
-  std::optional<exact::Surd> v_;
-};
-
-struct ExVec {
-  Ex x, y;
-};
-Ex dot(const ExVec& p, const ExVec& q);
-
-// cos θ and sin θ for θ a whole multiple of 30° or 45°; missing otherwise.
-ExVec exact_cos_sin(double degrees);
-
-// The frame change, exactly: û, cos θ and sin θ, A − C and its rotation by −θ, A_c, û rotated
-// by −θ and u_c.
-struct ExactFrame {
-  Ex norm_u;
-  ExVec u_hat, cos_sin, CA, CA_rotated, Ac, u_rotated, uc;
-};
-ExactFrame exact_frame(const Data& d);
-
-// Back to the world: I = A + t·û, n = rotate(θ)·scale(1/sx, 1/sy)·N_c, N = n/‖n‖.
-struct ExactWorld {
-  Ex t;
-  ExVec Nc, I, n, N;
-};
-ExactWorld exact_world(const Data& d, const ExactFrame& f, const Ex& t, const ExVec& Nc);
-
-// A sheet is only issued when the exact value and the core's double agree (within 1e-9
-// relative): else std::logic_error, a generator bug caught by the tests.
-void cross_check(const Ex& e, double core, const char* what);
-void cross_check(const ExVec& e, geo::Vec2 core, const char* what);
-
-// Whether every derived tolerance is within the limit.
+// Whether every tolerance the method derives (a Dual run: how far each answer moves when the
+// student rounds as told) is within the limit.
 bool well_conditioned(const std::vector<double>& tolerances, const Limits& lim);
-
-// ---- the student's method (tolerances) ---------------------------------------------------------
-
-// A student rounds a value only when it has more decimals than asked: the nudge applies to
-// intermediate k only then (an exact 0.6 stays 0.6).
-class Rounding {
- public:
-  Rounding(const Nudge& nudge, int decimals);
-  double operator()(int k, double value) const;
-
- private:
-  const Nudge& nudge_;
-  double scale_;  // 10^decimals
-};
-
-// The frame change by hand, rounded where the student rounds: û (intermediates 0, 1), cos θ and
-// sin θ (2, 3), A_c (4, 5), u_c (6, 7). The canonical part goes on from index kFrameSteps.
-struct StudentFrame {
-  geo::Vec2 u_hat;
-  double cos, sin;
-  geo::Point2 Ac;
-  geo::Vec2 uc;
-};
-inline constexpr int kFrameSteps = 8;
-StudentFrame student_frame(const Data& d, const Rounding& r);
-// I = A + t·û and N = normalise(rotate(θ)·scale(1/sx, 1/sy)·N_c), with the student's rounded
-// û, cos θ, sin θ: {I.x, I.y, N.x, N.y}.
-std::vector<double> student_world(const Data& d, const StudentFrame& f, double t, geo::Vec2 Nc);
-
-// ---- questions ---------------------------------------------------------------------------------
-
-// The fields both kinds ask, in order; t, I, N only with a hit.
-std::vector<std::string> fields();
-// Asks A_c, u_c, inside, hit (and t, I, N with a hit). `tol` holds the derived tolerances in the
-// student method's output order: Ac.x, Ac.y, uc.x, uc.y (, t, I.x, I.y, N.x, N.y).
-void ask(Questions& q, const Solved& s, const std::vector<double>& tol, const ExactFrame& f,
-         const ExactWorld& w);
+template <class Kind>
+bool well_conditioned(const Data& d, int decimals, const Limits& lim) {
+  method::Run<method::Dual> dual({Kind::kQuestions, decimals});
+  Kind::method(dual, d);
+  return well_conditioned(method::tolerances(dual), lim);
+}
 
 // ---- texts -------------------------------------------------------------------------------------
 
@@ -177,12 +203,10 @@ TextVars data_vars(const ExerciseContext& ctx, const Data& d, Shape shape);
 std::string link_text(const ExerciseContext& ctx, const Data& d, Shape shape);
 // A worked step's paragraph: the kind's template `step.<name>`.
 void step(render::Section& s, const ExerciseContext& ctx, std::string_view name, const TextVars& vars = {});
-// The frame change: T⁻¹, û, cos θ and sin θ, A_c, u_c.
-void frame_steps(render::Section& s, const ExerciseContext& ctx, const Data& d, Shape shape,
-                 const Solved& solved, const ExactFrame& f);
+// The frame change: T⁻¹, û, cos θ and sin θ, A_c, u_c, with the values of the key's method.
+void frame_steps(render::Section& s, const ExerciseContext& ctx, const Data& d, Shape shape, const KeySolution& key);
 // Back to the world: I, then the normal by the inverse transpose.
-void world_steps(render::Section& s, const ExerciseContext& ctx, const Data& d, Shape shape,
-                 const Solved& solved, const ExactWorld& w);
+void world_steps(render::Section& s, const ExerciseContext& ctx, const KeySolution& key);
 
 // ---- diagrams ----------------------------------------------------------------------------------
 
@@ -203,11 +227,11 @@ render::Scene question_scene(const ExerciseContext& ctx, const Data& d, Shape sh
 render::Scene key_scene(const ExerciseContext& ctx, const Data& d, Shape shape, const Solved& s,
                         render::Panel canonical);
 
-// ---- for the tests -------------------------------------------------------------------------------
+// ---- for the tests ------------------------------------------------------------------------------
 
-// Each kind's hand method with nothing rounded, in the order the tolerances use: {Ac.x, Ac.y,
-// uc.x, uc.y} and with a hit {t, I.x, I.y, N.x, N.y}. It must agree with the core.
-std::vector<double> ellipse_student_answers(const Data& d);
-std::vector<double> rectangle_student_answers(const Data& d);
+// Each kind's key solution of given data, as make() builds it: the method's exact run (worked
+// steps and exact forms), the core's answers and the questions with their tolerances.
+KeySolution ellipse_key(const Data& d, const ExerciseContext& ctx);
+KeySolution rectangle_key(const Data& d, const ExerciseContext& ctx);
 
 }  // namespace epure::kinds::transformed

@@ -15,7 +15,6 @@
 #include <stdexcept>
 
 #include "exercises/kind_method.h"
-#include "exercises/kinds/registry.h"
 #include "geometry/vectors.h"
 
 namespace epure::kinds {
