@@ -30,11 +30,11 @@ struct RayEllipse {
   }
 
   static constexpr auto& kQuestions = transformed::kQuestions;
-  // In the order grading tries them: the far root last, since it moves N too (at the flat
-  // ellipse's far vertex N is −N, the normal inward, which names the answer better).
   // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
   static constexpr double kPoints = 7;
 
+  // In the order grading tries them: the far root last, since it moves N too (at the flat
+  // ellipse's far vertex N is −N, the normal inward, which names the answer better).
   static constexpr std::string_view kMistakes[] = {
       "rotation_sign",     "translation_forgotten", "transform_order",        "uc_renormalised",
       "direction_not_unit", "direction_translated",  "not_back_to_world",      "normal_inward",

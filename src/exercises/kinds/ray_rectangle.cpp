@@ -60,18 +60,11 @@ std::vector<SideTest> side_tests(const geo::RayRectangle& r) {
   return tests;
 }
 
-// The four sides in the contract's order, and the names of the method's steps on each (recorded
-// steps keep views of their names).
-constexpr Face kSides[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
-constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
-constexpr std::string_view kStepT[] = {"t.+x", "t.+y", "t.-x", "t.-y"};
-constexpr std::string_view kStepJ[] = {"J.+x", "J.+y", "J.-x", "J.-y"};
-
-int index_of(Face f) {
-  for (int i = 0; i < 4; ++i)
-    if (kSides[i] == f) return i;
-  return 0;
-}
+using square::index_of;
+using square::kSides;
+using square::kStepJ;
+using square::kStepT;
+using square::kStepUn;
 
 // The ray and the rectangle, written once (method.h): the frame change and the way back are
 // transformed_common's, the canonical part is the course's exercise 4 on the square.

@@ -29,8 +29,12 @@ struct Data {
 constexpr Vec2 kEasyDirections[] = {{1, 0}, {0, 1}, {2, 0}, {0, 3},  {3, 4},
                                     {4, 3}, {6, 8}, {8, 6}, {5, 12}, {12, 5}};
 
-// The four sides in the contract's order.
-constexpr Face kSides[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
+using square::bit_of;
+using square::index_of;
+using square::kSides;
+using square::kStepJ;
+using square::kStepT;
+using square::kStepUn;
 
 double coord(Point2 p, int axis) { return axis == 0 ? p.x : p.y; }
 Vec2 normal_of(Face f) { return f.axis == 0 ? Vec2{double(f.sign), 0} : Vec2{0, double(f.sign)}; }
@@ -72,18 +76,6 @@ std::vector<Side> sides_in_play(const Data& d, const geo::RaySquare& rs) {
 using method::AnswerType;
 constexpr std::string_view kFaceNames[] = {"+x", "+y", "-x", "-y"};
 
-// Step names per side, in kSides' order (recorded steps keep views of their names).
-constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
-constexpr std::string_view kStepT[] = {"t.+x", "t.+y", "t.-x", "t.-y"};
-constexpr std::string_view kStepJ[] = {"J.+x", "J.+y", "J.-x", "J.-y"};
-
-int index_of(Face f) {
-  for (int i = 0; i < 4; ++i)
-    if (kSides[i] == f) return i;
-  return 0;
-}
-
-method::FaceMask bit_of(Face f) { return method::FaceMask(1u << (f.axis + (f.sign > 0 ? 0 : 3))); }
 
 // The course's exercise 4, written once (method.h).
 struct RaySquareMethod {
