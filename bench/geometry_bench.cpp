@@ -504,6 +504,33 @@ void ray_cube_slab(benchmark::State& state) {
 }
 
 // Ours first, its reference next (and the lean course method): the table reads in groups.
+// The exact kernels of `epure solve` (issue 15), on the same batches.
+void project_exact(benchmark::State& state) {
+  run(state, projections(), [](const ProjectionCase& c) { return geo::project_exact(c.A, c.B, c.C); });
+}
+void segments_exact(benchmark::State& state) {
+  run(state, segment_pairs(),
+      [](const SegmentsCase& c) { return geo::intersect_segments_exact(c.A, c.B, c.C, c.D); });
+}
+void ray_circle_exact(benchmark::State& state) {
+  run(state, circles(), [](const CircleCase& c) { return geo::intersect_exact(c.ray, c.circle); });
+}
+void ray_square_exact(benchmark::State& state) {
+  run(state, square_rays(), [](const geo::Ray2& r) { return geo::intersect_canonical_square_exact(r); });
+}
+void ray_ellipse_exact(benchmark::State& state) {
+  run(state, ellipses(), [](const EllipseCase& c) { return geo::intersect_exact(c.ray, c.ellipse); });
+}
+void ray_rectangle_exact(benchmark::State& state) {
+  run(state, rectangles(), [](const RectangleCase& c) { return geo::intersect_exact(c.ray, c.rectangle); });
+}
+void ray_sphere_exact(benchmark::State& state) {
+  run(state, spheres(), [](const SphereCase& c) { return geo::intersect_exact(c.ray, c.sphere); });
+}
+void ray_cube_exact(benchmark::State& state) {
+  run(state, cube_rays(), [](const geo::Ray3& r) { return geo::intersect_canonical_cube_exact(r); });
+}
+
 BENCHMARK(project_course);
 BENCHMARK(project_plain);
 BENCHMARK(segments_course);
@@ -522,6 +549,14 @@ BENCHMARK(ray_sphere_course);
 BENCHMARK(ray_sphere_quadratic);
 BENCHMARK(ray_cube_course);
 BENCHMARK(ray_cube_slab);
+BENCHMARK(project_exact);
+BENCHMARK(segments_exact);
+BENCHMARK(ray_circle_exact);
+BENCHMARK(ray_square_exact);
+BENCHMARK(ray_ellipse_exact);
+BENCHMARK(ray_rectangle_exact);
+BENCHMARK(ray_sphere_exact);
+BENCHMARK(ray_cube_exact);
 
 }  // namespace
 

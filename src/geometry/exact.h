@@ -57,6 +57,8 @@ class CompensatedSum {
     return *this;
   }
   double value() const { return sum_ + error_; }
+  // value() and what its rounding left out: the sum to about ε² of its terms, as hi + lo.
+  TwoTerm two_term() const { return two_sum(sum_, error_); }
 
  private:
   double sum_ = 0, error_ = 0;

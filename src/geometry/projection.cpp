@@ -1,9 +1,12 @@
 #include "geometry/projection.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/predicates.h"
 #include "geometry/tolerance.h"
 
 namespace epure::geo {
@@ -53,6 +56,76 @@ Projection project(Point2 A, Point2 B, Point2 C) {
            A.y + std::fma(p.t, p.AB.y, p.t * times_pow2(AB.lo.y, e))};
   }
   p.position = p.t < 0 ? Position::before : p.t > 1 ? Position::after : Position::between;
+  return p;
+}
+
+Projection project_exact(Point2 A, Point2 B, Point2 C) {
+  Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y});
+  Projection p{};
+  p.AB = B - A;
+  p.AC = C - A;
+  // A segment only when A ≠ B; B − A rounds to zero exactly when they are equal (gradual
+  // underflow keeps every other difference non-zero).
+  if (!(p.AB.x != 0 || p.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
+  // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
+  // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
+  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const Point2 a = times_pow2(A, -e), b = times_pow2(B, -e), c = times_pow2(C, -e);
+  const ExactVec2 AB = exact_difference(b, a), AC = exact_difference(c, a);
+
+  // (AC − t·AB)·AB = 0  =>  t = AB·AC / AB·AB. The position is the sign of AB·AC (t < 0) and of
+  // AB·BC = AB·AC − AB·AB (t > 1), each exact for the given doubles (predicates.h).
+  const Certain ab_dot_ac = certain_dot(AB, AC);
+  const exact::TwoTerm ab_ab = detail::compensated_dot(AB, AB);  // > 0
+  const double ab_dot_ab = ab_ab.hi;
+  // t = AB·AC / AB·AB of the products rounded about once: within 1.5 ulps of t (the quotient
+  // of the double-doubles, predicates.h, would halve that, but change the last bit of answers
+  // that worksheet keys already print)
+  auto ratio = [&](const Certain& n) { return n.value / ab_ab.hi; };
+  p.ab_dot_ac = times_pow2(ab_dot_ac.value, 2 * e);
+  p.ab_dot_ab = times_pow2(ab_dot_ab, 2 * e);
+  // A + t·AB with AB exact: one rounding per coordinate beyond t's own
+  auto along = [&](Point2 from, const ExactVec2& by, double k) {
+    return Point2{from.x + std::fma(k, times_pow2(by.hi.x, e), k * times_pow2(by.lo.x, e)),
+                  from.y + std::fma(k, times_pow2(by.hi.y, e), k * times_pow2(by.lo.y, e))};
+  };
+  if (ab_dot_ac.sign < 0) {
+    p.position = Position::before;
+    // of AB·AC's sign: negative unless the quotient underflows
+    p.t = std::min(ratio(ab_dot_ac), -std::numeric_limits<double>::denorm_min());
+    p.P = along(A, AB, p.t);
+    return p;
+  }
+  if (ab_dot_ac.sign == 0) {
+    p.position = Position::between;
+    p.t = 0;
+    p.P = A;
+    return p;
+  }
+  const double t = ratio(ab_dot_ac);
+  if (t < 0.5) {  // AB·BC < 0 for sure: between, and t from AB·AC keeps its digits near 0
+    p.position = Position::between;
+    p.t = t;
+    p.P = along(A, AB, t);
+    return p;
+  }
+  // Near B and beyond: the sign of AB·BC places t against 1.
+  const Certain ab_dot_bc = certain_dot(AB, exact_difference(c, b));
+  const double beyond = ratio(ab_dot_bc);  // t − 1, to its own digits
+  // t itself from AB·AC (rounded about once), kept on its side of 1 as the position says
+  if (ab_dot_bc.sign > 0) {
+    p.position = Position::after;
+    p.t = std::max(t, std::nextafter(1.0, 2.0));
+  } else {
+    p.position = Position::between;
+    p.t = ab_dot_bc.sign == 0 ? 1.0 : std::min(t, 1.0);
+  }
+  // P = B + (t − 1)·AB within 2^-20 of B: A + t·AB would carry t's rounding (ε·‖AB‖) into a
+  // point that B's own digits place better; elsewhere A + t·AB, as `project` computes it
+  constexpr double kNearB = 0x1p-20;
+  p.P = ab_dot_bc.sign == 0            ? B
+        : std::abs(beyond) < kNearB    ? along(B, AB, beyond)
+                                       : along(A, AB, p.t);
   return p;
 }
 

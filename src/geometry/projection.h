@@ -22,6 +22,17 @@ struct Projection {
 // 0 or 1.
 Projection project(Point2 A, Point2 B, Point2 C);
 
+// The same projection with every decision exact for the given doubles, as `epure solve` states
+// it (README): no snapping. The position is the sign of AB·AC (before) and of AB·BC (after);
+// t = 0 exactly when AB·AC = 0, t = 1 when AB·BC = 0, and t never contradicts the position
+// (t < 0 before, t > 1 after). Degenerate only when A = B exactly.
+//
+// Two semantics, on purpose: `project` reads its data as the decimals a worksheet typed (a t
+// within rounding of an end is that end, C "above B" in decimals is above B), which the
+// worksheets rely on; `project_exact` answers for the doubles themselves, which a calculator
+// owes its user (issue 15). They agree on every figure more than ~1e-14 from a boundary.
+Projection project_exact(Point2 A, Point2 B, Point2 C);
+
 const char* to_string(Position p);
 
 }  // namespace epure::geo

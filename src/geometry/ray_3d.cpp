@@ -9,10 +9,9 @@ RaySphere intersect(const Ray3& ray, const Sphere& sphere) {
   return detail::intersect_ball<RaySphere, Hit3>(ray, sphere.C, sphere.r);
 }
 
-RayCube intersect_canonical_cube(const Ray3& ray) {
-  const Point3 A = ray.origin;
-  const Vec3 u = ray.direction;
-  auto box = detail::intersect_box<3>({A.x, A.y, A.z}, {u.x, u.y, u.z});
+namespace {
+
+RayCube cube_result(const detail::BoxResult<3>& box) {
   RayCube res{box.faces, box.inside, std::nullopt, box.face};
   if (box.t) {
     double n[3] = {0, 0, 0};
@@ -20,6 +19,24 @@ RayCube intersect_canonical_cube(const Ray3& ray) {
     res.hit = Hit3{*box.t, {box.I[0], box.I[1], box.I[2]}, {n[0], n[1], n[2]}};
   }
   return res;
+}
+
+}  // namespace
+
+RayCube intersect_canonical_cube(const Ray3& ray) {
+  const Point3 A = ray.origin;
+  const Vec3 u = ray.direction;
+  return cube_result(detail::intersect_box<3>({A.x, A.y, A.z}, {u.x, u.y, u.z}));
+}
+
+RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere) {
+  return detail::intersect_ball_exact<RaySphere, Hit3>(ray, sphere.C, sphere.r);
+}
+
+RayCube intersect_canonical_cube_exact(const Ray3& ray) {
+  const Point3 A = ray.origin;
+  const Vec3 u = ray.direction;
+  return cube_result(detail::intersect_box_exact<3>({A.x, A.y, A.z}, {u.x, u.y, u.z}));
 }
 
 }  // namespace epure::geo

@@ -36,4 +36,9 @@ struct RayCube {
 RaySphere intersect(const Ray3& ray, const Sphere& sphere);
 RayCube intersect_canonical_cube(const Ray3& ray);
 
+// Exact for the given doubles, as intersect_exact (ray_circle.h) and
+// intersect_canonical_square_exact (ray_square.h); at an edge or a corner, x then y first.
+RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere);
+RayCube intersect_canonical_cube_exact(const Ray3& ray);
+
 }  // namespace epure::geo

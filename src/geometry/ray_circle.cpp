@@ -12,4 +12,12 @@ RayCircle intersect(const Ray2& ray, const Circle& circle) {
 
 RayCircle intersect_canonical_circle(const Ray2& ray) { return intersect(ray, Circle{{0, 0}, 1.0}); }
 
+RayCircle intersect_exact(const Ray2& ray, const Circle& circle) {
+  return detail::intersect_ball_exact<RayCircle, Hit2>(ray, circle.C, circle.r);
+}
+
+RayCircle intersect_canonical_circle_exact(const Ray2& ray) {
+  return intersect_exact(ray, Circle{{0, 0}, 1.0});
+}
+
 }  // namespace epure::geo

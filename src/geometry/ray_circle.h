@@ -42,4 +42,12 @@ RayCircle intersect(const Ray2& ray, const Circle& circle);
 // The course's canonical circle: centre O, radius 1.
 RayCircle intersect_canonical_circle(const Ray2& ray);
 
+// The same with every decision exact for the given doubles (`epure solve`, README): inside is
+// ‖AC‖² < r², behind u·AC < 0 from outside or on the circle, miss ‖u‖²r² < ‖u ∧ AC‖², tangent
+// when equal (PI = 0). No window: a line 1e-15 from tangency gets its true half chord, r² − d²
+// computed without cancellation. At t = 0, I = A and N = (A − C)/r from the exact A − C.
+// `intersect` reads the data as a worksheet's decimals (within rounding of tangency is tangent).
+RayCircle intersect_exact(const Ray2& ray, const Circle& circle);
+RayCircle intersect_canonical_circle_exact(const Ray2& ray);
+
 }  // namespace epure::geo

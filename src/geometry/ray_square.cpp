@@ -10,10 +10,9 @@ std::string_view face_name(Face f) {
   return f.sign > 0 ? plus[f.axis] : minus[f.axis];
 }
 
-RaySquare intersect_canonical_square(const Ray2& ray) {
-  const Point2 A = ray.origin;
-  const Vec2 u = ray.direction;
-  auto box = detail::intersect_box<2>({A.x, A.y}, {u.x, u.y});
+namespace {
+
+RaySquare square_result(const detail::BoxResult<2>& box) {
   RaySquare res{box.faces, box.inside, std::nullopt, box.face};
   if (box.t) {
     Vec2 N{0, 0};
@@ -21,6 +20,20 @@ RaySquare intersect_canonical_square(const Ray2& ray) {
     res.hit = Hit2{*box.t, {box.I[0], box.I[1]}, N};
   }
   return res;
+}
+
+}  // namespace
+
+RaySquare intersect_canonical_square(const Ray2& ray) {
+  const Point2 A = ray.origin;
+  const Vec2 u = ray.direction;
+  return square_result(detail::intersect_box<2>({A.x, A.y}, {u.x, u.y}));
+}
+
+RaySquare intersect_canonical_square_exact(const Ray2& ray) {
+  const Point2 A = ray.origin;
+  const Vec2 u = ray.direction;
+  return square_result(detail::intersect_box_exact<2>({A.x, A.y}, {u.x, u.y}));
 }
 
 }  // namespace epure::geo

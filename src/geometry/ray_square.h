@@ -24,4 +24,10 @@ struct RaySquare {
 // a zero direction.
 RaySquare intersect_canonical_square(const Ray2& ray);
 
+// The same with every decision exact for the given doubles (`epure solve`, README): candidate
+// sides by σ·A_k ≥ 1 (closed outer half-planes), the side hit by exact comparisons of the
+// planes' parameters and of the landing point against the side's ends; at a corner the x side
+// is taken first. The hit point lies on the square (coordinates kept within [-1, 1]).
+RaySquare intersect_canonical_square_exact(const Ray2& ray);
+
 }  // namespace epure::geo

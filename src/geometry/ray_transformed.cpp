@@ -114,24 +114,39 @@ Transform2 to_world(const Rectangle& r) {
   return place(r.C, r.w, r.h, r.angle_deg);
 }
 
-RayEllipse intersect(const Ray2& ray, const Ellipse& ellipse) {
+namespace {
+
+template <class Solve>
+RayEllipse ellipse_by(const Ray2& ray, const Ellipse& ellipse, Solve solve) {
   const Transform2 world = to_world(ellipse);
   const Ray2 canonical_ray = to_canonical(world, ellipse.C, ray);
-  auto res = carry_back(world, ellipse.C, ray, canonical_ray,
-                        intersect_canonical_circle(canonical_ray));
-  refine_from_nearby(res, ellipse.C, std::max(ellipse.a, ellipse.b), ray,
-                     intersect_canonical_circle);
+  auto res = carry_back(world, ellipse.C, ray, canonical_ray, solve(canonical_ray));
+  refine_from_nearby(res, ellipse.C, std::max(ellipse.a, ellipse.b), ray, solve);
   return res;
 }
 
-RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle) {
+template <class Solve>
+RayRectangle rectangle_by(const Ray2& ray, const Rectangle& rectangle, Solve solve) {
   const Transform2 world = to_world(rectangle);
   const Ray2 canonical_ray = to_canonical(world, rectangle.C, ray);
-  auto res = carry_back(world, rectangle.C, ray, canonical_ray,
-                        intersect_canonical_square(canonical_ray));
-  refine_from_nearby(res, rectangle.C, std::max(rectangle.w, rectangle.h), ray,
-                     intersect_canonical_square);
+  auto res = carry_back(world, rectangle.C, ray, canonical_ray, solve(canonical_ray));
+  refine_from_nearby(res, rectangle.C, std::max(rectangle.w, rectangle.h), ray, solve);
   return res;
+}
+
+}  // namespace
+
+RayEllipse intersect(const Ray2& ray, const Ellipse& ellipse) {
+  return ellipse_by(ray, ellipse, intersect_canonical_circle);
+}
+RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle) {
+  return rectangle_by(ray, rectangle, intersect_canonical_square);
+}
+RayEllipse intersect_exact(const Ray2& ray, const Ellipse& ellipse) {
+  return ellipse_by(ray, ellipse, intersect_canonical_circle_exact);
+}
+RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle) {
+  return rectangle_by(ray, rectangle, intersect_canonical_square_exact);
 }
 
 }  // namespace epure::geo

@@ -45,4 +45,12 @@ using RayRectangle = RayTransformed<RaySquare>;
 RayEllipse intersect(const Ray2& ray, const Ellipse& ellipse);
 RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle);
 
+// The same, solved in the canonical frame by the exact canonical kernels: the decisions are
+// exact for the carried ray (A − C and u turned and scaled in doubles). That ray is exact when
+// the angle is a multiple of 90° and the sizes are powers of two; otherwise the carrying rounds
+// (cos and sin of a decimal angle are not exact), and so, within ~1e-15 of a boundary, may the
+// decision (README, `epure solve`).
+RayEllipse intersect_exact(const Ray2& ray, const Ellipse& ellipse);
+RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle);
+
 }  // namespace epure::geo

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/predicates.h"
 #include "geometry/tolerance.h"
 
 namespace epure::geo {
@@ -91,6 +93,119 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
     // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own
     s.I = Point2{A.x + std::fma(t_ab, s.AB.x, t_ab * times_pow2(AB.lo.x, e)),
                  A.y + std::fma(t_ab, s.AB.y, t_ab * times_pow2(AB.lo.y, e))};
+  }
+  return s;
+}
+
+namespace {
+
+// A line parameter t = n / den, rounded about once, and its place against [0, 1], exact: the
+// sign of n against 0, of m = den − n against 1, each times that of den.
+struct Parameter {
+  double t;
+  int end;  // −1 below 0, 0 within [0, 1], +1 above 1
+  bool at_start, at_finish;  // t = 0 or t = 1 exactly
+  double back = 1;  // 1 − t to its own digits, when t ≥ 1/2 (else 1)
+};
+
+// n, the numerator (its sign exact); den the denominator (sign exact, non-zero); m(), the exact
+// complement den − n, computed only when t is near 1 or beyond.
+template <class Complement>
+Parameter parameter(const Certain& n, const Certain& den, Complement m) {
+  Parameter p{};
+  const int sn = n.sign * den.sign;  // the sign of t
+  if (sn == 0) {
+    p.t = 0;
+    p.at_start = true;
+    return p;
+  }
+  const double t = n.value / den.value;  // within 1.5 ulps (as project_exact's t)
+  if (sn < 0) {
+    p.t = std::min(t, -std::numeric_limits<double>::denorm_min());  // < 0, as its sign says
+    p.end = -1;
+    return p;
+  }
+  if (t < 0.5) {  // 0 < t < 1 for sure
+    p.t = t;
+    return p;
+  }
+  // t itself from n / den (rounded about once), its place against 1 from den − n
+  const Certain rest = m();  // den − n: 1 − t = rest / den
+  const int sr = rest.sign * den.sign;
+  p.back = rest.value / den.value;
+  if (sr == 0) {
+    p.t = 1;
+    p.at_finish = true;
+  } else if (sr < 0) {
+    p.t = std::max(t, std::nextafter(1.0, 2.0));  // > 1
+    p.end = 1;
+  } else {
+    p.t = std::min(t, 1.0);
+  }
+  return p;
+}
+
+}  // namespace
+
+SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D) {
+  Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y, D.x, D.y});
+  SegmentIntersection s{};
+  s.AB = B - A;
+  s.CD = D - C;
+  s.AC = C - A;
+  // A segment only when its ends differ; their difference rounds to zero exactly when they are
+  // equal (gradual underflow).
+  if (!(s.AB.x != 0 || s.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
+  if (!(s.CD.x != 0 || s.CD.y != 0)) throw DegenerateFigure("D", "degenerate segment, C = D");
+
+  // The parameters are ratios: computed on the figure brought near unit size by a power of two
+  // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
+  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  auto down = [e](Point2 p) { return times_pow2(p, -e); };
+  const Point2 a = down(A), b = down(B), c = down(C), d = down(D);
+  const ExactVec2 AB = exact_difference(b, a);
+  const ExactVec2 CD = exact_difference(d, c);
+  const ExactVec2 AC = exact_difference(c, a);
+
+  // Cross products of the exact differences, their signs exact (predicates.h).
+  const Certain ab_cross_cd = certain_cross(AB, CD);
+  const Certain ac_cross_cd = certain_cross(AC, CD), ac_cross_ab = certain_cross(AC, AB);
+  s.ab_cross_cd = times_pow2(ab_cross_cd.value, 2 * e);
+  s.ac_cross_cd = times_pow2(ac_cross_cd.value, 2 * e);
+  s.ac_cross_ab = times_pow2(ac_cross_ab.value, 2 * e);
+
+  // parallel: AB∧CD = 0 exactly; the same line when C is on (AB) too (AC∧AB = 0)
+  if (ab_cross_cd.sign == 0) {
+    s.relation = ac_cross_ab.sign == 0 ? SegmentRelation::collinear : SegmentRelation::parallel;
+    return s;
+  }
+
+  // t_ab = AC∧CD / AB∧CD, 1 − t_ab = CB∧CD / AB∧CD (AB − AC = CB);
+  // t_cd = AC∧AB / AB∧CD, 1 − t_cd = AB∧AD / AB∧CD (AB∧CD + AB∧AC = AB∧AD).
+  const Parameter t_ab = parameter(ac_cross_cd, ab_cross_cd,
+                                   [&] { return certain_cross(exact_difference(b, c), CD); });
+  const Parameter t_cd = parameter(ac_cross_ab, ab_cross_cd,
+                                   [&] { return certain_cross(AB, exact_difference(d, a)); });
+  s.t_ab = t_ab.t;
+  s.t_cd = t_cd.t;
+  if (t_ab.end != 0 || t_cd.end != 0) {
+    s.relation = SegmentRelation::outside;
+    return s;
+  }
+  s.relation = SegmentRelation::intersects;
+  // An end that the other segment touches is the intersection itself, to the last bit.
+  if (t_ab.at_start) s.I = A;
+  else if (t_ab.at_finish) s.I = B;
+  else if (t_cd.at_start) s.I = C;
+  else if (t_cd.at_finish) s.I = D;
+  else if (constexpr double kNearB = 0x1p-20; std::abs(t_ab.back) < kNearB) {
+    // within 2^-20 of B (no worksheet's crossing is): B − (1 − t_ab)·AB, where A + t_ab·AB would carry t_ab's rounding
+    s.I = Point2{B.x - std::fma(t_ab.back, s.AB.x, t_ab.back * times_pow2(AB.lo.x, e)),
+                 B.y - std::fma(t_ab.back, s.AB.y, t_ab.back * times_pow2(AB.lo.y, e))};
+  } else {
+    // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own
+    s.I = Point2{A.x + std::fma(t_ab.t, s.AB.x, t_ab.t * times_pow2(AB.lo.x, e)),
+                 A.y + std::fma(t_ab.t, s.AB.y, t_ab.t * times_pow2(AB.lo.y, e))};
   }
   return s;
 }

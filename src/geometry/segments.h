@@ -33,6 +33,15 @@ struct SegmentIntersection {
 // 0 or 1 is reported as exactly that bound (a segment touching the other at an end intersects).
 SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D);
 
+// The same with every decision exact for the given doubles (`epure solve`, README; the two
+// semantics as for project_exact): parallel means AB∧CD = 0 exactly, collinear that and
+// AC∧AB = 0; the place of each parameter against 0 and 1 is the sign of its numerator against
+// its denominator (AC∧CD, CB∧CD for t_ab; AC∧AB, AB∧AD for t_cd). No snapping: a parameter is
+// exactly 0 or 1 only when the lines meet exactly at that end, and it never contradicts the
+// relation (within [0, 1] for `intersects`, beyond for the one that is, for `outside`).
+// Degenerate only when A = B or C = D exactly.
+SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D);
+
 const char* to_string(SegmentRelation r);
 
 }  // namespace epure::geo

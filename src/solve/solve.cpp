@@ -276,7 +276,9 @@ class FlatReader {
 // Reads the figure's fields, with an error that names the field for anything off.
 class Fields {
  public:
-  explicit Fields(std::span<const Field> figure) : figure_(figure) {}
+  Fields(std::span<const Field> figure, Semantics semantics) : figure_(figure), semantics_(semantics) {}
+
+  bool exact() const { return semantics_ == Semantics::exact; }
 
   const Value& get(const char* name) const {
     const Value* v = find(figure_, name);
@@ -328,6 +330,7 @@ class Fields {
     return x;
   }
   std::span<const Field> figure_;
+  Semantics semantics_;
 };
 
 // Every number of a result is checked before it is written: data near the limits of double
@@ -398,12 +401,18 @@ void solve_vectors(const Fields& f, Result& r) {
 }
 
 void solve_projection(const Fields& f, Result& r) {
-  auto p = geo::project(f.point2("A"), f.point2("B"), f.point2("C"));
+  // the fields read in the call itself, as before the exact kernel, so that a line missing two
+  // of them names the same one
+  auto p = f.exact() ? geo::project_exact(f.point2("A"), f.point2("B"), f.point2("C"))
+                     : geo::project(f.point2("A"), f.point2("B"), f.point2("C"));
   r.number("t", p.t).point("P", p.P).string("position", geo::to_string(p.position));
 }
 
 void solve_segments(const Fields& f, Result& r) {
-  auto s = geo::intersect_segments(f.point2("A"), f.point2("B"), f.point2("C"), f.point2("D"));
+  auto s = f.exact() ? geo::intersect_segments_exact(f.point2("A"), f.point2("B"), f.point2("C"),
+                                                    f.point2("D"))
+                     : geo::intersect_segments(f.point2("A"), f.point2("B"), f.point2("C"),
+                                               f.point2("D"));
   r.boolean("intersects", s.intersects());
   if (!s.intersects()) r.string("reason", geo::to_string(s.relation));
   if (s.t_ab) r.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
@@ -433,14 +442,15 @@ void solve_ray_circle(const Fields& f, Result& r) {
   auto C = f.point2("C");
   double radius = f.number("r");
   const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
-  write_round(geo::intersect(ray, geo::Circle{C, radius}), r, length);
+  const geo::Circle circle{C, radius};
+  write_round(f.exact() ? geo::intersect_exact(ray, circle) : geo::intersect(ray, circle), r, length);
 }
 
 void solve_ray_square(const Fields& f, Result& r) {
   auto A = f.point2("A");
   auto u = f.vec2("u");
   const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
-  auto s = geo::intersect_canonical_square(ray);
+  auto s = f.exact() ? geo::intersect_canonical_square_exact(ray) : geo::intersect_canonical_square(ray);
   r.faces(s.faces).boolean("inside", s.inside).hit(s.hit, length);
 }
 
@@ -451,7 +461,8 @@ void solve_ray_ellipse(const Fields& f, Result& r) {
   auto radii = f.numbers<2>("radii");
   double angle = f.number("angle");
   const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
-  auto e = geo::intersect(ray, geo::Ellipse{C, radii[0], radii[1], angle});
+  const geo::Ellipse ellipse{C, radii[0], radii[1], angle};
+  auto e = f.exact() ? geo::intersect_exact(ray, ellipse) : geo::intersect(ray, ellipse);
   r.boolean("inside", e.inside).hit(e.hit, length);
 }
 
@@ -462,7 +473,8 @@ void solve_ray_rectangle(const Fields& f, Result& r) {
   auto half = f.numbers<2>("half");
   double angle = f.number("angle");
   const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
-  auto e = geo::intersect(ray, geo::Rectangle{C, half[0], half[1], angle});
+  const geo::Rectangle rectangle{C, half[0], half[1], angle};
+  auto e = f.exact() ? geo::intersect_exact(ray, rectangle) : geo::intersect(ray, rectangle);
   r.boolean("inside", e.inside).hit(e.hit, length);
 }
 
@@ -472,14 +484,15 @@ void solve_ray_sphere(const Fields& f, Result& r) {
   auto C = f.point3("C");
   double radius = f.number("r");
   const auto [ray, length] = raw_ray<geo::Ray3>(A, u);
-  write_round(geo::intersect(ray, geo::Sphere{C, radius}), r, length);
+  const geo::Sphere sphere{C, radius};
+  write_round(f.exact() ? geo::intersect_exact(ray, sphere) : geo::intersect(ray, sphere), r, length);
 }
 
 void solve_ray_cube(const Fields& f, Result& r) {
   auto A = f.point3("A");
   auto u = f.vec3("u");
   const auto [ray, length] = raw_ray<geo::Ray3>(A, u);
-  auto c = geo::intersect_canonical_cube(ray);
+  auto c = f.exact() ? geo::intersect_canonical_cube_exact(ray) : geo::intersect_canonical_cube(ray);
   r.faces(c.faces).boolean("inside", c.inside).hit(c.hit, length);
 }
 
@@ -498,8 +511,8 @@ Solver solver_for(std::string_view kind) {
   return nullptr;
 }
 
-void solve(std::span<const Field> figure, fmt::memory_buffer& out) {
-  Fields fields(figure);
+void solve(std::span<const Field> figure, fmt::memory_buffer& out, Semantics semantics) {
+  Fields fields(figure, semantics);
   const Value& kind = fields.get("kind");
   if (kind.type != Type::string)
     fail("kind", fmt::format("expected a string, got {}", type_name(kind.type)));
@@ -523,22 +536,26 @@ void solve(std::span<const Field> figure, fmt::memory_buffer& out) {
 
 }  // namespace
 
-void solve_figure(const json& figure, fmt::memory_buffer& out) {
+void solve_figure(const json& figure, fmt::memory_buffer& out, Semantics semantics) {
   if (!figure.is_object()) throw InputError("line: expected a JSON object");
   // Views into `figure`, which outlives them.
-  solve(fields_of(figure), out);
+  solve(fields_of(figure), out, semantics);
 }
 
 std::string solve_line(std::string_view line, fmt::memory_buffer& out) {
+  return solve_line(line, out, Semantics::worksheet);
+}
+
+std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics semantics) {
   std::string message;
   const std::size_t start = out.size();
   try {
     FlatReader reader(line);
     if (auto fields = reader.read()) {
-      solve(*fields, out);
+      solve(*fields, out, semantics);
     } else {
       json figure = json::parse(line.begin(), line.end());
-      solve_figure(figure, out);
+      solve_figure(figure, out, semantics);
     }
     return {};
   } catch (const json::parse_error& e) {

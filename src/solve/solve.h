@@ -17,13 +17,28 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How the numbers of a line are read.
+enum class Semantics {
+  // As the doubles they are, every decision exact (README, "epure solve"; issue 15): what the
+  // calculator owes its user.
+  exact,
+  // As the decimals a worksheet typed: a figure within the data's rounding of a boundary is on
+  // it (segments parallel as decimals are parallel, a t within rounding of an end is that end).
+  // The semantics the worksheets are drawn and their keys solved with (the generator's
+  // instances "parallel as decimals" are parallel in their keys).
+  worksheet,
+};
+
 // Solves one figure and appends its result object to `out`. Throws InputError (never anything
 // else for bad data) when the figure is not a valid solve input.
-void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out);
+void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out,
+                  Semantics semantics = Semantics::worksheet);
 
 // One line of JSON Lines: parses, solves and appends the result object, or {"error": "..."}.
-// Never throws. Returns the error message, empty when the line was solved.
+// Never throws. Returns the error message, empty when the line was solved. `epure solve` asks
+// for Semantics::exact; without it, a line is solved as a worksheet's (the answer keys' call).
 std::string solve_line(std::string_view line, fmt::memory_buffer& out);
+std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics semantics);
 
 // The kinds the contract knows, in the contract's order.
 inline constexpr std::string_view kKinds[] = {"vectors",     "projection",    "segments",

@@ -228,3 +228,73 @@ TEST_CASE("geometry/projection: random figures against quadruple precision") {
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("geometry/projection_exact: no snapping, the doubles as they are") {
+  SUBCASE("1. issue 15: C 1e-15 before A is before, t < 0") {
+    const Projection p = project_exact({0, 0}, {1, 0}, {-1e-15, 5});
+    CHECK(p.position == Position::before);
+    CHECK(p.t < 0);
+    CHECK(p.t == doctest::Approx(-1e-15).epsilon(kEps));
+  }
+  SUBCASE("2. C above B as decimals, not as doubles: decided as the doubles lie") {
+    // AB = (0.3, 0.1) and BC = (−0.1, 0.3) are perpendicular as decimals, not as doubles: the
+    // sign of AB·BC of the doubles (exact in quadruple precision) places t
+    const Point2 A{0.1, 0.2}, B{0.4, 0.3}, C{0.3, 0.6};
+    const Projection p = project_exact(A, B, C);
+    const Real ab_bc = T::dot(T::real(B) - T::real(A), T::real(C) - T::real(B));
+    REQUIRE(ab_bc != 0);
+    CHECK(p.position == (ab_bc > 0 ? Position::after : Position::between));
+    CHECK(!exactly(p.t, 1));
+    CHECK(p.t == doctest::Approx(1).epsilon(8 * kEps));
+    // the worksheet semantics snaps it onto B
+    CHECK(exactly(project(A, B, C).t, 1));
+  }
+  SUBCASE("3. the exact ends: t exactly 0 at A's foot, 1 at B's, P the end itself") {
+    const Projection a = project_exact({1, 2}, {5, 2}, {1, 7});
+    CHECK(exactly(a.t, 0));
+    CHECK(exactly(a.P.x, 1));
+    const Projection b = project_exact({1, 2}, {5, 2}, {5, -7});
+    CHECK(exactly(b.t, 1));
+    CHECK(exactly(b.P.x, 5));
+    CHECK(b.position == Position::between);
+  }
+  SUBCASE("4. A = B exactly is refused; an ulp apart is a segment") {
+    CHECK_THROWS_AS(project_exact({1, 1}, {1, 1}, {0, 0}), DegenerateFigure);
+    CHECK(project_exact({1, 1}, {1, std::nextafter(1.0, 2.0)}, {0, 0}).position == Position::before);
+  }
+}
+
+TEST_CASE("geometry/projection_exact: at 1, 2 and 3 ulps from an end, the position is the exact one") {
+  // C above A or B exactly (a binary grid, far from the origin or not), then one coordinate of C
+  // moved by k ulps: AB·AC (or AB·BC) becomes AB_x·δ, whose sign is known.
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const double unit = std::ldexp(1.0, static_cast<int>(rng.integer(-10, 4)));
+    const double far = std::ldexp(1.0, static_cast<int>(rng.integer(0, 40)));
+    auto grid = [&](double extent) { return unit * std::round(rng.uniform(-extent, extent)); };
+    const Point2 A{grid(far), grid(far)};
+    Vec2 AB{unit * static_cast<double>(rng.integer(-32, 32)), unit * static_cast<double>(rng.integer(-32, 32))};
+    if (AB.x == 0) AB.x = unit;
+    const Point2 B = A + AB;
+    const bool at_b = rng.chance(0.5);
+    Point2 C = (at_b ? B : A) + static_cast<double>(rng.integer(-4, 4)) * perp(AB);
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    const double x0 = C.x;
+    if (x0 == 0) continue;  // a zero moved by an ulp is subnormal: outside the contract
+    for (int i = 0; i < std::abs(k); ++i) C.x = std::nextafter(C.x, k > 0 ? INFINITY : -INFINITY);
+    const double delta = C.x - x0;  // exact: neighbours
+    const double s = AB.x * delta;  // AB·AC at A, AB·BC at B
+    const Projection p = project_exact(A, B, C);
+    if (!at_b) {
+      CHECK(p.position == (s < 0 ? Position::before : Position::between));
+      CHECK((s < 0 ? p.t < 0 : p.t >= 0));
+      if (k == 0) CHECK(exactly(p.t, 0));
+    } else {
+      CHECK(p.position == (s > 0 ? Position::after : Position::between));
+      CHECK((s > 0 ? p.t > 1 : p.t <= 1));
+      if (k == 0) CHECK(exactly(p.t, 1));
+    }
+  }
+}

@@ -484,3 +484,77 @@ TEST_CASE("geometry/ray_3d: the cube's 48 symmetries permute the answer") {
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("geometry/ray_3d exact: at 1, 2 and 3 ulps from a boundary, the branch is the exact one") {
+  // The sphere: A on it at a Pythagorean point (1, 2, 2)·k of radius 3k, r moved by k ulps (inside
+  // when r grew); a tangent line through that point, r moved (a chord when r grew, a miss when it
+  // shrank). The cube: A on a face moved by k ulps (a candidate on or beyond, inside within);
+  // from beyond an edge of the cube straight at it, u_x moved (the y or the x face hit, x first
+  // on the edge itself).
+  static constexpr double kTriples[][4] = {{1, 2, 2, 3}, {2, 3, 6, 7}, {1, 4, 8, 9}, {2, 6, 9, 11}};
+  for (std::uint64_t seed = 0; seed < 2000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    auto nudge = [k](double x) {
+      for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? INFINITY : -INFINITY);
+      return x;
+    };
+    const double unit = std::ldexp(1.0, static_cast<int>(rng.integer(-8, 4)));
+    if (seed % 4 < 2) {
+      const auto& tr = kTriples[rng.integer(0, 3)];
+      const double far = std::ldexp(1.0, static_cast<int>(rng.integer(0, 30)));
+      auto grid = [&] { return unit * std::round(rng.uniform(-far, far)); };
+      const Point3 C{grid(), grid(), grid()};
+      const Vec3 CP{unit * tr[0] * T::sign(rng), unit * tr[1] * T::sign(rng), unit * tr[2] * T::sign(rng)};
+      const double r = nudge(unit * tr[3]);
+      if (seed % 4 == 0) {
+        const RaySphere s = intersect_exact(Ray3{C + CP, -1.0 * CP}, {C, r});
+        CHECK(s.inside == (k > 0));
+        REQUIRE(s.hit.has_value());
+        if (k == 0) CHECK(exactly(s.hit->t, 0));
+      } else {
+        // a tangent at P: perpendicular to CP, integer coordinates (CP × e_x or CP × e_y)
+        const Vec3 e = std::abs(CP.x) < std::abs(CP.y) ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+        const Vec3 tangent = cross(CP, e);
+        const double back = static_cast<double>(rng.integer(1, 1024));
+        const RaySphere s = intersect_exact(Ray3{C + CP + (-back) * tangent, tangent}, {C, r});
+        CHECK(s.hit.has_value() == (k >= 0));
+        if (k == 0) CHECK(exactly(*s.half_chord, 0));
+        if (k < 0) CHECK(s.reason == NoHit::miss);
+      }
+    } else if (seed % 4 == 2) {
+      const int axis = static_cast<int>(rng.integer(0, 2));
+      const double sign = T::sign(rng);
+      double a[3] = {unit / 64 * static_cast<double>(rng.integer(-3, 3)),
+                     unit / 64 * static_cast<double>(rng.integer(-3, 3)),
+                     unit / 64 * static_cast<double>(rng.integer(-3, 3))};
+      a[axis] = nudge(sign);
+      double u[3] = {0, 0, 0};
+      u[axis] = -sign;
+      const RayCube c = intersect_canonical_cube_exact(Ray3{{a[0], a[1], a[2]}, {u[0], u[1], u[2]}});
+      const bool beyond = sign * a[axis] >= 1;
+      CHECK(c.faces.contains({axis, static_cast<int>(sign)}) == beyond);
+      CHECK(c.inside == !beyond);
+      REQUIRE(c.hit.has_value());
+      if (sign * a[axis] == 1) CHECK(exactly(c.hit->t, 0));
+    } else {
+      // beyond the edge x = sx, y = sy (z = 0), straight at it
+      const double sx = T::sign(rng), sy = T::sign(rng);
+      const double step = unit / 16;
+      const double m = static_cast<double>(rng.integer(1, 64)), n = static_cast<double>(rng.integer(1, 64));
+      const Point3 A{sx * (1 + m * step), sy * (1 + n * step), 0};
+      Vec3 u{-sx * m * step, -sy * n * step, 0};
+      u = std::ldexp(1.0, static_cast<int>(rng.integer(-20, 20))) * u;
+      u.x = nudge(u.x);
+      const RayCube c = intersect_canonical_cube_exact(Ray3{A, u});
+      const bool x_faster = k * -sx > 0;  // |u_x| grew: x = sx reached first, |y| still > 1
+      REQUIRE(c.hit.has_value());
+      CHECK(c.face->axis == (k != 0 && x_faster ? 1 : 0));
+      CHECK(std::abs(c.hit->I.x) <= 1);
+      CHECK(std::abs(c.hit->I.y) <= 1);
+      CHECK(std::abs(c.hit->I.z) <= 1);
+    }
+  }
+}

@@ -492,3 +492,100 @@ TEST_CASE(
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("geometry/ray_circle_exact: issue 15's lines, decided exactly") {
+  SUBCASE("0. an exact tangent is tangent with its direction as given; rounded, as it lies") {
+    const RayCircle c = intersect_exact(Ray2{{-8, -19}, {3, 4}}, {{0, 0}, 5});
+    REQUIRE(c.hit.has_value());
+    CHECK(exactly(*c.half_chord, 0));
+    CHECK(c.hit->t * 5 == doctest::Approx(20).epsilon(4 * kEps));
+    check_point(c.hit->I, 4, -3, 4 * kEps);
+    check_vec(c.hit->N, 0.8, -0.6, 4 * kEps);
+    // (3,4)/5 is not a double: rounded to unit length the line is no longer tangent, and it is
+    // decided as it lies: a miss, or a chord of its true half length (~1e-7)
+    const RayCircle rounded = intersect_exact(Ray2::unit({-8, -19}, {3, 4}), {{0, 0}, 5});
+    if (rounded.hit) {
+      CHECK(rounded.hit->t == doctest::Approx(20).epsilon(1e-6));
+      CHECK(*rounded.half_chord > 0);
+      CHECK(*rounded.half_chord < 1e-6);
+    } else {
+      CHECK(rounded.reason == NoHit::miss);
+    }
+  }
+  SUBCASE("1. 1e-15 from tangency: the true chord, not a tangent; or a miss") {
+    const RayCircle c = intersect_exact(Ray2{{-5, 1}, {1, 0}}, {{0, 0}, 1.000000000000001});
+    REQUIRE(c.hit.has_value());
+    CHECK(c.hit->t == doctest::Approx(4.999999952878391).epsilon(4 * kEps));
+    const RayCircle m = intersect_exact(Ray2{{-5, 1}, {1, 0}}, {{0, 0}, 0.999999999999999});
+    CHECK(m.reason == NoHit::miss);
+  }
+  SUBCASE("2. A inside by an ulp is inside") {
+    const RayCircle c = intersect_exact(Ray2{{0, 2.9999999999999996}, {1, 0}}, {{0, 0}, 3});
+    CHECK(c.inside);
+  }
+  SUBCASE("3. t_proj of a hit from outside is never negative") {
+    const RayCircle c = intersect_exact(Ray2{{3, -6}, {-8.470329472543003e-22, 1.9073486328125e-06}},
+                                  {{5, -6}, 2});
+    CHECK((c.reason == NoHit::behind) == (c.t_proj < 0));
+  }
+  SUBCASE("4. at t = 0, N = (A − C)/r to the last digits") {
+    const RayCircle c = intersect_exact(Ray2{{-15, -13}, {-1.4305114518720075e-05, 7.62939453125e-06}},
+                                  {{-7, 2}, 17});
+    REQUIRE(c.hit.has_value());
+    CHECK(exactly(c.hit->t, 0));
+    check_vec(c.hit->N, -8.0 / 17, -15.0 / 17, 2 * kEps);
+  }
+}
+
+TEST_CASE("geometry/ray_circle_exact: at 1, 2 and 3 ulps from a boundary, the branch is the exact one") {
+  // A Pythagorean point P of a circle on a binary grid (far from the origin or not): A = P moved
+  // by k ulps of r (inside when r grew), or a tangent line through P with r moved by k ulps (a
+  // chord when r grew, a miss when it shrank), or A outside with u ⊥ AC (t_proj = 0) moved.
+  static constexpr double kTriples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {20, 21, 29}};
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const auto& tr = kTriples[rng.integer(0, 3)];
+    const double unit = std::ldexp(1.0, static_cast<int>(rng.integer(-8, 4)));
+    const double far = std::ldexp(1.0, static_cast<int>(rng.integer(0, 30)));
+    const Point2 C{unit * std::round(rng.uniform(-far, far)), unit * std::round(rng.uniform(-far, far))};
+    const Vec2 CP{unit * tr[0] * T::sign(rng), unit * tr[1] * T::sign(rng)};
+    const double R = unit * tr[2];
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    double r = R;
+    for (int i = 0; i < std::abs(k); ++i) r = std::nextafter(r, k > 0 ? INFINITY : -INFINITY);
+    const Vec2 tangent = T::sign(rng) * perp(CP);
+    const Vec2 scale_u = std::ldexp(1.0, static_cast<int>(rng.integer(-20, 20))) * tangent;
+    switch (seed % 3) {
+      case 0: {  // A on the circle of radius R, heading in: inside / hit at 0 / hit from outside
+        const RayCircle c = intersect_exact(Ray2{C + CP, -1.0 * CP}, {C, r});
+        CHECK(c.inside == (k > 0));
+        REQUIRE(c.hit.has_value());
+        if (k == 0) CHECK(exactly(c.hit->t, 0));
+        else CHECK(c.hit->t > 0);
+        break;
+      }
+      case 1: {  // tangent at P, from a few steps back along it
+        const double back = static_cast<double>(rng.integer(1, 1024));
+        const RayCircle c = intersect_exact(Ray2{C + CP - back * tangent, scale_u}, {C, r});
+        CHECK(c.hit.has_value() == (k >= 0));
+        if (k == 0) CHECK(exactly(*c.half_chord, 0));
+        if (k > 0) CHECK(*c.half_chord > 0);
+        if (k < 0) CHECK(c.reason == NoHit::miss);
+        break;
+      }
+      default: {  // from 2·CP, u ⊥ AC moved by k ulps in one coordinate: behind or not
+        Vec2 u = scale_u;
+        const double u0 = u.x;
+        for (int i = 0; i < std::abs(k); ++i) u.x = std::nextafter(u.x, k > 0 ? INFINITY : -INFINITY);
+        const Vec2 AC = -2.0 * CP;
+        const double toward = (u.x - u0) * AC.x;  // u·AC: exact by construction (sign)
+        const RayCircle c = intersect_exact(Ray2{C + 2.0 * CP, u}, {C, R});
+        CHECK((c.reason == NoHit::behind) == (toward < 0));
+        CHECK((c.t_proj < 0) == (toward < 0));
+        if (toward >= 0) CHECK(c.reason == NoHit::miss);
+      }
+    }
+  }
+}

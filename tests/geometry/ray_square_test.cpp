@@ -323,3 +323,70 @@ TEST_CASE("geometry/ray_square: the square's symmetries permute the answer exact
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("geometry/ray_square_exact: issue 15's lines, decided exactly") {
+  SUBCASE("1. a hit near a corner lies on the square") {
+    const RaySquare s = intersect_canonical_square_exact(Ray2{{0, -5}, {-0.0009765625000000002, 0.00390625}});
+    if (s.hit) {
+      CHECK(std::abs(s.hit->I.x) <= 1);
+      CHECK(std::abs(s.hit->I.y) <= 1);
+    }
+    // exactly: the line reaches y = −1 at x = −1 − 2^-50·…: just past the corner, a miss of −y,
+    // and x = −1 is reached at y < −1: no hit at all
+    CHECK_FALSE(s.hit.has_value());
+  }
+  SUBCASE("2. an origin inside by an ulp is inside, and exits") {
+    const RaySquare s = intersect_canonical_square_exact(Ray2{{-0.9999999999999999, 0}, {0, 1}});
+    CHECK(s.inside);
+    CHECK(s.faces.empty());
+    check_hit(s, 1, -0.9999999999999999, 1, {1, +1});
+  }
+}
+
+TEST_CASE("geometry/ray_square_exact: at 1, 2 and 3 ulps from a side or a corner, the exact branch") {
+  // A on a side (x = ±1 or y = ±1) moved by k ulps: a candidate (closed half-plane) when it is on
+  // or beyond, inside when it is within. A ray from outside through a corner exactly, its
+  // direction moved by k ulps in x: it enters through −x/+x or ±y accordingly (x first at the
+  // corner itself).
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    auto nudge = [k](double x) {
+      for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? INFINITY : -INFINITY);
+      return x;
+    };
+    const double unit = std::ldexp(1.0, -static_cast<int>(rng.integer(2, 6)));
+    if (seed % 2 == 0) {
+      const int axis = static_cast<int>(rng.integer(0, 1));
+      const double sign = T::sign(rng);
+      double a[2] = {unit * static_cast<double>(rng.integer(-3, 3)), unit * static_cast<double>(rng.integer(-3, 3))};
+      a[axis] = nudge(sign);
+      const RaySquare s = intersect_canonical_square_exact(Ray2{{a[0], a[1]}, {-sign * (axis == 0), -sign * (axis == 1)}});
+      const bool beyond = sign * a[axis] >= 1;  // exact comparison of doubles
+      CHECK(s.faces.contains({axis, static_cast<int>(sign)}) == beyond);
+      CHECK(s.inside == !beyond);
+      REQUIRE(s.hit.has_value());  // heading in (or, from inside, across)
+      if (sign * a[axis] == 1) CHECK(exactly(s.hit->t, 0));
+    } else {
+      // from beyond the corner (sx, sy), straight at it
+      const double sx = T::sign(rng), sy = T::sign(rng);
+      const double m = static_cast<double>(rng.integer(1, 64)), n = static_cast<double>(rng.integer(1, 64));
+      const Point2 A{sx * (1 + m * unit), sy * (1 + n * unit)};
+      Vec2 u{-sx * m * unit, -sy * n * unit};  // A + u = (sx, sy), the corner
+      u = std::ldexp(1.0, static_cast<int>(rng.integer(-20, 20))) * u;
+      u.x = nudge(u.x);
+      const RaySquare s = intersect_canonical_square_exact(Ray2{A, u});
+      // u_x has the sign of −sx: |u_x| grew when k did too. Then x = sx is reached first, with
+      // |y| still > 1 (the x side missed), and the y side holds the landing point; when |u_x|
+      // shrank, y = sy is reached with |x| > 1 and the x side is hit.
+      const bool x_faster = k * -sx > 0;
+      REQUIRE(s.hit.has_value());
+      if (k == 0) CHECK(s.face->axis == 0);
+      else CHECK(s.face->axis == (x_faster ? 1 : 0));
+      CHECK(std::abs(s.hit->I.x) <= 1);
+      CHECK(std::abs(s.hit->I.y) <= 1);
+    }
+  }
+}

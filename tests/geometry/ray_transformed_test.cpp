@@ -571,3 +571,45 @@ TEST_CASE(
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("ray_transformed exact: quarter turns and sizes powers of two decide exactly, 0-3 ulps") {
+  // The carried ray is exact there (A − C on a binary grid, a quarter turn, a division by a
+  // power of two): A on the ellipse or the rectangle at the end of an axis, moved by k ulps
+  // along it, heading to the centre. Inside exactly when the move went in; on it, a hit at t = 0.
+  for (std::uint64_t seed = 0; seed < 2000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    const double angle = 90.0 * static_cast<double>(rng.integer(-4, 4));
+    const double a = std::ldexp(1.0, static_cast<int>(rng.integer(-4, 4)));
+    const double b = std::ldexp(1.0, static_cast<int>(rng.integer(-4, 4)));
+    const double unit = std::ldexp(1.0, -6);
+    const double far = std::ldexp(1.0, static_cast<int>(rng.integer(0, 20)));
+    const Point2 C{unit * std::round(rng.uniform(-far, far)), unit * std::round(rng.uniform(-far, far))};
+    const bool along_a = rng.chance(0.5);
+    const double size = along_a ? a : b, side = T::sign(rng);
+    // the local axis (a's or b's) in the world, a quarter turn of the x axis
+    const int quarter = ((static_cast<int>(angle / 90) % 4) + 4 + (along_a ? 0 : 1)) % 4;
+    const Vec2 axis = quarter == 0 ? Vec2{1, 0} : quarter == 1 ? Vec2{0, 1} : quarter == 2 ? Vec2{-1, 0} : Vec2{0, -1};
+    Point2 A = C + (side * size) * axis;
+    double& moved = axis.x != 0 ? A.x : A.y;
+    const double centre = axis.x != 0 ? C.x : C.y;
+    if (moved == 0) continue;  // a zero moved by an ulp is subnormal: outside the contract
+    for (int i = 0; i < std::abs(k); ++i) moved = std::nextafter(moved, k > 0 ? INFINITY : -INFINITY);
+    const double offset = std::abs(moved - centre);  // exact: grid points
+    const bool inside = offset < size;
+    const Vec2 u = C - A;
+    if (rng.chance(0.5)) {
+      const RayEllipse e = intersect_exact(Ray2{A, u}, Ellipse{C, a, b, angle});
+      CHECK(e.inside == inside);
+      REQUIRE(e.hit.has_value());
+      if (offset == size) CHECK(exactly(e.hit->t, 0));
+    } else {
+      const RayRectangle r = intersect_exact(Ray2{A, u}, Rectangle{C, a, b, angle});
+      CHECK(r.inside == inside);
+      REQUIRE(r.hit.has_value());
+      if (offset == size) CHECK(exactly(r.hit->t, 0));
+    }
+  }
+}

@@ -365,3 +365,91 @@ TEST_CASE("geometry/segments: invariant under translating, rotating and scaling 
 }
 
 TEST_SUITE_END();
+
+TEST_CASE("geometry/segments_exact: issue 15's lines, decided exactly") {
+  SUBCASE("1. near the parallel cut-off: outside, t_ab = 1, t_cd = −1 (no snapping window)") {
+    const SegmentIntersection s = intersect_segments_exact({0, 0}, {1, 0}, {2, 1e-14}, {3, 2e-14});
+    CHECK(s.relation == SegmentRelation::outside);
+    CHECK(*s.t_ab == doctest::Approx(1).epsilon(4 * kEps));
+    CHECK(*s.t_cd == doctest::Approx(-1).epsilon(4 * kEps));
+  }
+  SUBCASE("2. I = D = (4.5, 5), on both segments") {
+    const SegmentIntersection s =
+        intersect_segments_exact({7, 5}, {4, 5}, {7.5, 4.999999999999943}, {4.5, 5});
+    CHECK(s.intersects());
+    check_point(*s.I, {4.5, 5});
+  }
+  SUBCASE("3. 1e-14 off the line is not collinear: they meet at C") {
+    const SegmentIntersection s = intersect_segments_exact({0, 0}, {4, 0}, {1, 0}, {3, 1e-14});
+    CHECK(s.intersects());
+    CHECK(exactly(*s.t_cd, 0));
+    check_point(*s.I, {1, 0});
+  }
+}
+
+TEST_CASE("geometry/segments_exact: at 1, 2 and 3 ulps from a boundary, the relation is the exact one") {
+  // On a binary grid (far from the origin or not): CD's end C on [AB] (at an end or inside),
+  // or CD exactly parallel to AB, then one coordinate of C or D moved by k ulps. The exact
+  // relation follows from the sign of the cross product that the move changes.
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    Rng rng(seed);
+    CAPTURE(seed);
+    const double unit = std::ldexp(1.0, static_cast<int>(rng.integer(-10, 4)));
+    const double far = std::ldexp(1.0, static_cast<int>(rng.integer(0, 40)));
+    auto grid = [&](double extent) { return unit * std::round(rng.uniform(-extent, extent)); };
+    auto small = [&] { return unit * static_cast<double>(rng.integer(-16, 16)); };
+    const Point2 A{grid(far), grid(far)};
+    Vec2 AB{small(), small()};
+    if (AB.y == 0) AB.y = unit;
+    const Point2 B = A + AB;
+    const int k = static_cast<int>(rng.integer(-3, 3));
+    CAPTURE(k);
+    auto nudge = [k](double x) {
+      for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? INFINITY : -INFINITY);
+      return x;
+    };
+    if (rng.chance(0.5)) {
+      // C on [AB] at s ∈ {0, 1/2, 1}, D off the line; C.x moved by δ: AC∧AB = δ·AB_y
+      const double at = static_cast<double>(rng.integer(0, 2)) / 2;
+      const Point2 C0 = A + at * AB;
+      Vec2 CD{small(), small()};
+      if (cross(AB, CD) == 0) CD = perp(AB);
+      if (C0.x == 0) continue;  // a zero moved by an ulp is subnormal: outside the contract
+      const Point2 C{nudge(C0.x), C0.y}, D = C0 + CD;
+      // the exact relation, in quadruple precision: exact here (grid data and ulp moves need
+      // at most 107 bits per cross product)
+      CAPTURE(A.x);
+      CAPTURE(A.y);
+      CAPTURE(B.x);
+      CAPTURE(B.y);
+      CAPTURE(C.x);
+      CAPTURE(C.y);
+      CAPTURE(D.x);
+      CAPTURE(D.y);
+      const Expected e = reference(A, B, C, D);
+      const bool inside = e.t_ab >= 0 && e.t_ab <= 1 && e.t_cd >= 0 && e.t_cd <= 1;
+      const SegmentIntersection s = intersect_segments_exact(A, B, C, D);
+      CHECK(s.relation == (inside ? SegmentRelation::intersects : SegmentRelation::outside));
+      if (k == 0) CHECK(exactly(*s.t_cd, 0));
+      if (s.intersects()) {
+        CHECK(*s.t_ab >= 0);
+        CHECK(*s.t_ab <= 1);
+      } else {
+        CHECK((*s.t_ab < 0 || *s.t_ab > 1 || *s.t_cd < 0 || *s.t_cd > 1));
+      }
+    } else {
+      // CD parallel to AB (or on its line), D.x moved by δ: AB∧CD = −AB_y·δ
+      const bool same_line = rng.chance(0.5);
+      const Point2 C = same_line ? A + static_cast<double>(rng.integer(-2, 3)) * AB
+                                 : A + perp(AB) + static_cast<double>(rng.integer(-2, 3)) * AB;
+      const Point2 D0 = C + static_cast<double>(rng.chance(0.5) ? 1 : -2) * AB;
+      if (D0.x == 0) continue;
+      const Point2 D{nudge(D0.x), D0.y};
+      const SegmentIntersection s = intersect_segments_exact(A, B, C, D);
+      if (k == 0)
+        CHECK(s.relation == (same_line ? SegmentRelation::collinear : SegmentRelation::parallel));
+      else
+        CHECK((s.relation == SegmentRelation::outside || s.relation == SegmentRelation::intersects));
+    }
+  }
+}

@@ -616,10 +616,212 @@ def rectangle(g):
             "angle": angle}, True
 
 
+# ---- at 1, 2 and 3 ulps from a decision boundary ---------------------------------------------
+#
+# Each figure starts exactly on a boundary (on a binary grid, where the doubles are the values
+# meant: C at the foot of A, an end of one segment on the other, parallel segments, A on the
+# circle, a tangent line, a line perpendicular to AC, A on a side of the square, a ray through a
+# corner), then one of its numbers moves by 0, ±1, ±2 or ±3 ulps. The exact branch is whatever
+# that made it, and none is filtered: epure's decisions must be the exact ones however close.
+
+def nudged(x, k):
+    """x moved by k ulps (k < 0: down)."""
+    for _ in range(abs(k)):
+        x = math.nextafter(x, math.inf if k > 0 else -math.inf)
+    return x
+
+
+def nudge_one(g, v):
+    """A copy of the list v with one non-zero coordinate moved by up to 3 ulps. (A zero moved
+    by an ulp is a subnormal: products with it underflow, which the contract leaves out.)"""
+    v = list(v)
+    nonzero = [i for i, x in enumerate(v) if x != 0] or list(range(len(v)))
+    i = g.rng.choice(nonzero)
+    if v[i] == 0:
+        return v
+    v[i] = nudged(v[i], g.rng.choice((-3, -2, -1, 0, 1, 2, 3)))
+    return v
+
+
+def grid_point(g, dim, unit, off):
+    return plus(off, [unit * g.rng.randint(-64, 64) for _ in range(dim)])
+
+
+def boundary_projection(g):
+    unit = g.grid(g.magnitude())
+    off = g.grid_offset(2, unit)
+    A = grid_point(g, 2, unit, off)
+    AB = [unit * g.rng.randint(-32, 32) for _ in range(2)]
+    if AB == [0, 0]:
+        AB = [unit, 0.0]
+    B = plus(A, AB)
+    C = plus(g.rng.choice((A, B)), perp(AB), g.rng.randint(-4, 4))
+    fig = {"kind": "projection", "A": A, "B": B, "C": C}
+    key = g.rng.choice(("A", "B", "C", "C"))
+    fig[key] = nudge_one(g, fig[key])
+    return fig, True
+
+
+def boundary_segments(g):
+    unit = g.grid(g.magnitude())
+    off = g.grid_offset(2, unit)
+    A = grid_point(g, 2, unit, off)
+    AB = [unit * g.rng.randint(-32, 32) for _ in range(2)]
+    if AB == [0, 0]:
+        AB = [0.0, unit]
+    B = plus(A, AB)
+    case = g.rng.choice(("touch", "touch", "parallel", "collinear", "end"))
+    if case == "touch":  # an end of CD on [AB], at an end of AB or inside
+        C = plus(A, AB, g.rng.choice((0.0, 1.0, 0.5, 0.25)))
+        D = plus(C, [unit * g.rng.randint(-16, 16) for _ in range(2)])
+        if AB[0] * (D[1] - C[1]) == AB[1] * (D[0] - C[0]):
+            D = plus(C, perp(AB))
+    elif case == "parallel":
+        C = plus(plus(A, AB, g.rng.randint(-3, 3)), perp(AB), g.rng.choice((-1, 1)))
+        D = plus(C, AB, g.rng.choice((-2.0, 1.0, 0.5)))
+    elif case == "collinear":
+        C = plus(A, AB, g.rng.choice((-2.0, 0.5, 1.0, 1.5)))
+        D = plus(C, AB, g.rng.choice((-1.0, 1.0, 2.0)))
+    else:  # CD starts at an end of AB
+        C = g.rng.choice((A, B))
+        D = plus(C, perp(AB), g.rng.choice((-1.0, 1.0, 0.5)))
+    if g.rng.random() < 0.5:
+        C, D = D, C
+    fig = {"kind": "segments", "A": A, "B": B, "C": C, "D": D}
+    key = g.rng.choice("ABCD")
+    fig[key] = nudge_one(g, fig[key])
+    return fig, True
+
+
+def boundary_ball(g, dim):
+    kind = "ray_circle" if dim == 2 else "ray_sphere"
+    unit = g.grid(g.magnitude()) * 8
+    C = plus(g.grid_offset(dim, unit), [unit * g.rng.randint(-64, 64) for _ in range(dim)])
+    triple = g.rng.choice(PYTHAGOREAN_2D if dim == 2 else PYTHAGOREAN_3D)
+    k = unit * 2.0 ** g.rng.randint(-2, 2)
+    CA = [k * c for c in signed_permutation(g, triple[:dim])]
+    r = k * triple[dim]
+    P = plus(C, CA)  # on the sphere
+    # a tangent direction at P, exact: perpendicular to CA with integer coordinates
+    if dim == 2:
+        tangent = [-CA[1], CA[0]]
+    else:
+        other = [1.0, 0.0, 0.0] if abs(CA[0]) < abs(CA[1]) or abs(CA[0]) < abs(CA[2]) else \
+            [0.0, 1.0, 0.0]
+        tangent = cross_int(CA, other)
+    tangent = [c * g.rng.choice((1, -1)) for c in tangent]
+    how = g.rng.choice(("on", "tangent", "tangent", "perpendicular"))
+    if how == "on":  # A on the sphere, heading in, out or along
+        A = P
+        u = g.rng.choice(([-c for c in CA], CA, tangent, plus(tangent, CA, -0.5)))
+    elif how == "tangent":  # a tangent line, A some steps back along it
+        A = plus(P, tangent, -float(g.rng.choice((1, 2, 4, 1024))))
+        u = tangent
+    else:  # outside, u ⊥ AC (t_proj = 0)
+        A = plus(C, CA, 2.0)
+        u = tangent
+    fig = {"kind": kind, "A": A, "u": [c * 2.0 ** g.rng.randint(-20, 20) for c in u], "C": C,
+           "r": r}
+    key = g.rng.choice(("A", "u", "C", "r", "r"))
+    if key == "r":
+        fig["r"] = nudged(r, g.rng.choice((-3, -2, -1, 0, 1, 2, 3)))
+    else:
+        fig[key] = nudge_one(g, fig[key])
+    return fig, True
+
+
+def boundary_box(g, dim):
+    kind = "ray_square" if dim == 2 else "ray_cube"
+    unit = 2.0 ** -g.rng.randint(2, 6)
+    far = g.rng.choice((4, 16, 2**20, 2**30))
+    how = g.rng.choice(("side", "corner", "corner", "inside_corner"))
+    A = [unit * g.rng.randint(-far, far) for _ in range(dim)]
+    if how == "side":  # A on a side, heading anywhere
+        i = g.rng.randrange(dim)
+        A = [unit * g.rng.randint(-int(1 / unit), int(1 / unit)) for _ in range(dim)]
+        A[i] = g.rng.choice((-1.0, 1.0))
+        u = [unit * g.rng.randint(-8, 8) for _ in range(dim)]
+        if all(c == 0 for c in u):
+            u[i] = -A[i]
+    elif how == "corner":  # from outside through a corner (or an edge's point in 3D)
+        corner = [g.rng.choice((-1.0, 1.0)) for _ in range(dim)]
+        A = [c + unit * g.rng.randint(1, far) * c for c in corner]
+        if dim == 3 and g.rng.random() < 0.5:
+            corner[2] = unit * g.rng.randint(-int(1 / unit), int(1 / unit))
+        u = [c - a for a, c in zip(A, corner)]
+    else:  # from inside towards a corner
+        corner = [g.rng.choice((-1.0, 1.0)) for _ in range(dim)]
+        A = [unit * g.rng.randint(-int(1 / unit) + 1, int(1 / unit) - 1) for _ in range(dim)]
+        u = [c - a for a, c in zip(A, corner)]
+        if all(c == 0 for c in u):
+            u = corner
+    fig = {"kind": kind, "A": A, "u": [c * 2.0 ** g.rng.randint(-20, 20) for c in u]}
+    key = g.rng.choice(("A", "u"))
+    fig[key] = nudge_one(g, fig[key])
+    return fig, True
+
+
+def boundary_transformed(g):
+    """Ellipse or rectangle centred at the origin, radii or half-sizes powers of two and the
+    angle a multiple of 90°: the ray carried into the canonical frame is exact, and so are the
+    decisions; A starts on the figure (or heads at a corner) and moves by up to 3 ulps."""
+    angle = float(g.rng.choice((0, 90, 180, 270, -90, 360)))
+    sizes = [2.0 ** g.rng.randint(-3, 3), 2.0 ** g.rng.randint(-3, 3)]
+    c, s = {0: (1, 0), 90: (0, 1), 180: (-1, 0), 270: (0, -1)}[int(angle) % 360]
+    world = lambda v: [c * v[0] - s * v[1], s * v[0] + c * v[1]]
+    if g.rng.random() < 0.5:
+        local = g.rng.choice(([1.0, 0.0], [0.0, -1.0], [-1.0, 0.0], [0.6, 0.8]))
+        local_u = g.rng.choice(([-1.0, 0.25], [1.0, 0.5], [0.0, 1.0], [-0.75, -1.0]))
+        P = world([local[0] * sizes[0], local[1] * sizes[1]])
+        u = world(local_u)
+        fig = {"kind": "ray_ellipse", "A": P, "u": u, "C": [0.0, 0.0], "radii": sizes,
+               "angle": angle}
+    else:
+        corner = [g.rng.choice((-1.0, 1.0)), g.rng.choice((-1.0, 1.0))]
+        local_A = g.rng.choice(([corner[0] * 3, corner[1] * 2], [corner[0], 0.5],
+                                [0.25, corner[1]]))
+        P = world([local_A[0] * sizes[0], local_A[1] * sizes[1]])
+        Q = world([corner[0] * sizes[0], corner[1] * sizes[1]])
+        u = [q - p for p, q in zip(P, Q)]
+        if all(x == 0 for x in u):
+            u = [1.0, 0.0]
+        fig = {"kind": "ray_rectangle", "A": P, "u": u, "C": [0.0, 0.0], "half": sizes,
+               "angle": angle}
+    key = g.rng.choice(("A", "u"))
+    fig[key] = nudge_one(g, fig[key])
+    return fig, True
+
+
+def issue_examples(g):
+    """The lines of issue 15 that epure once got wrong."""
+    return json.loads(g.rng.choice(ISSUE_15)), True
+
+
+ISSUE_15 = (
+    '{"kind":"segments","A":[0,0],"B":[1,0],"C":[2,1e-14],"D":[3,2e-14]}',
+    '{"kind":"segments","A":[7,5],"B":[4,5],"C":[7.5,4.999999999999943],"D":[4.5,5]}',
+    '{"kind":"ray_circle","A":[-5,1],"u":[1,0],"C":[0,0],"r":1.000000000000001}',
+    '{"kind":"ray_circle","A":[-5,1],"u":[1,0],"C":[0,0],"r":0.999999999999999}',
+    '{"kind":"ray_circle","A":[3,-6],"u":[-8.470329472543003e-22,1.9073486328125e-06],'
+    '"C":[5,-6],"r":2}',
+    '{"kind":"ray_square","A":[0,-5],"u":[-0.0009765625000000002,0.00390625]}',
+    '{"kind":"projection","A":[0,0],"B":[1,0],"C":[-1e-15,5]}',
+    '{"kind":"segments","A":[0,0],"B":[4,0],"C":[1,0],"D":[3,1e-14]}',
+    '{"kind":"ray_circle","A":[0,2.9999999999999996],"u":[1,0],"C":[0,0],"r":3}',
+    '{"kind":"ray_square","A":[-0.9999999999999999,0],"u":[0,1]}',
+    '{"kind":"ray_circle","A":[-15,-13],"u":[-1.4305114518720075e-05,7.62939453125e-06],'
+    '"C":[-7,2],"r":17}',
+)
+
+
 FIGURES = (
     (1, vectors), (1, projection), (2, segments), (2, lambda g: ball(g, 2)),
     (2, lambda g: box(g, 2)), (2, ellipse), (2, rectangle), (2, lambda g: ball(g, 3)),
     (2, lambda g: box(g, 3)),
+    # at 1, 2 and 3 ulps from a boundary: as many again, unfiltered
+    (2, boundary_projection), (3, boundary_segments), (3, lambda g: boundary_ball(g, 2)),
+    (3, lambda g: boundary_box(g, 2)), (2, lambda g: boundary_ball(g, 3)),
+    (2, lambda g: boundary_box(g, 3)), (2, boundary_transformed), (0.3, issue_examples),
 )
 
 

@@ -1,14 +1,28 @@
 #!/usr/bin/env python3
 """Compare `epure solve` output with expected JSON Lines, by the contract's acceptance rules.
 
-usage: compare_jsonl.py ACTUAL EXPECTED [--input INPUT]
+usage: compare_jsonl.py ACTUAL EXPECTED [--input INPUT] [--ulps N] [--stats]
 Booleans, strings and the set of `faces` match exactly; a number agrees within
 max(1e-9, 1e-9*|expected|) and must not print more significant digits than the shortest
 round-trip text of its double; the field sets must be equal; an expected error line needs a
 non-empty "error" string. Prints one line per mismatch, then for each line that disagrees its
 input (with --input: the solve input, whose blank lines have no output), expected and actual
 text; exit 1 if any.
+
+--ulps N (needs --input) also bounds every number by N ulps of the figure's scale, the
+contract's accuracy (README, "epure solve"): S is the largest absolute coordinate, radius or
+half-size of the line (1 at least for the canonical square and cube); a point, t, t_proj and the
+half chord are within N·ulp(max(S, |value|)); a line parameter t_ab, t_cd or the projection's t
+within N·ulp(max(S, |t|·‖AB‖)) as the length it gives along its segment; d2 within
+N·ulp(max(S, √d2))·2·max(S, √d2); N within N·max(ulp(1), ulp(S)/size) (N·size is a length,
+size the radius or the smallest radius or half-size); cos and sin within N·ulp(1); dot, cross within N ulps of
+the sum of the magnitudes of their products; norms within N·ulp of themselves; angle_deg within
+N·ulp(180). Ellipses and rectangles whose carried ray is rounded (an angle not a multiple of
+90°, a size not a power of two, or A − C inexact) are measured, not bounded, decisions included
+(the contract states why): they are counted apart. --stats prints the largest error in ulps
+per kind and field.
 """
+import math
 import json
 import re
 import sys
@@ -66,8 +80,104 @@ def same(actual, expected, path, problems):
                 same(actual[k], expected[k], f"{path}.{k}", problems)
 
 
+def ulp(x):
+    return math.ulp(abs(x)) if x != 0 else math.ulp(0.0)
+
+
+def figure_scale(fig):
+    kind = fig.get("kind")
+    values = []
+    for key in ("A", "B", "C", "D", "r", "radii", "half"):
+        v = fig.get(key)
+        if v is None:
+            continue
+        values.extend(v if isinstance(v, list) else [v])
+    if kind in ("ray_square", "ray_cube"):
+        values.append(1.0)
+    return max([abs(float(x)) for x in values] + [0.0])
+
+
+def is_power_of_two(x):
+    x = abs(float(x))
+    return x > 0 and math.frexp(x)[0] == 0.5
+
+
+def bounded(fig):
+    """Whether the contract makes this line's decisions exact and bounds its values in ulps:
+    every kind but an ellipse or a rectangle whose ray, carried into the canonical frame, is
+    rounded (an angle not a multiple of 90°, a size not a power of two, A − C inexact)."""
+    if fig.get("kind") in ("ray_ellipse", "ray_rectangle"):
+        try:
+            sizes = fig.get("radii") or fig.get("half")
+            A, C = fig["A"], fig["C"]
+            exact_offset = all(float(a) - float(c) + float(c) == float(a) and
+                               float(a) - (float(a) - float(c)) == float(c)
+                               for a, c in zip(A, C))
+            return (float(fig.get("angle", 0)) % 90 == 0 and all(map(is_power_of_two, sizes))
+                    and exact_offset)
+        except (TypeError, ValueError, KeyError):
+            return True
+    return True
+
+
+def ulp_errors(fig, actual, expected):
+    """(field, error in ulps of its bound) for every number of a result."""
+    kind = fig["kind"]
+    S = figure_scale(fig)
+    out = []
+
+    def add(name, a, e, unit):
+        if isinstance(a, (int, float)) and not isinstance(a, bool):
+            out.append((name, abs(a - e) / unit if unit > 0 else (0.0 if a == e else math.inf)))
+
+    for key, e in expected.items():
+        if key not in actual or isinstance(e, (bool, str)):
+            continue
+        a = actual[key]
+        if kind == "vectors":
+            u, v = fig["u"], fig["v"]
+            if key in ("dot", "cross"):
+                terms = abs(u[0] * v[0]) + abs(u[1] * v[1]) if key == "dot" else \
+                    abs(u[0] * v[1]) + abs(u[1] * v[0])
+                add(key, a, e, ulp(terms))
+            elif key in ("norm_u", "norm_v"):
+                add(key, a, e, ulp(e))
+            elif key == "angle_deg":
+                add(key, a, e, ulp(180.0))
+            else:
+                add(key, a, e, ulp(1.0))
+        elif key in ("t_ab", "t_cd") or (kind == "projection" and key == "t"):
+            P, Q = ("A", "B") if key != "t_cd" else ("C", "D")
+            length = math.hypot(fig[Q][0] - fig[P][0], fig[Q][1] - fig[P][1])
+            add(key, a * length, e * length, ulp(max(S, abs(e) * length)))
+        elif key == "d2":
+            size = max(S, math.sqrt(abs(e)))
+            add(key, a, e, ulp(size) * 2 * size)
+        elif key == "N":
+            # N·size is a length: within the bound of a point, over the figure's size
+            size = fig.get("r") or min(fig.get("radii") or fig.get("half") or [1.0])
+            for i, (x, y) in enumerate(zip(a, e)):
+                add(f"N[{i}]", x, y, max(ulp(1.0), ulp(S) / float(size)))
+        elif isinstance(e, list):
+            for i, (x, y) in enumerate(zip(a, e)):
+                if isinstance(y, str) or isinstance(x, str):
+                    continue
+                add(f"{key}[{i}]", x, y, ulp(max(S, abs(y))))
+        else:
+            add(key, a, e, ulp(max(S, abs(e))))
+    return out
+
+
 def main():
     args = sys.argv[1:]
+    ulps = None
+    stats = '--stats' in args
+    if stats:
+        args.remove('--stats')
+    if '--ulps' in args:
+        i = args.index('--ulps')
+        ulps = float(args[i + 1])
+        del args[i:i + 2]
     inputs = None
     if '--input' in args:
         i = args.index('--input')
@@ -79,6 +189,8 @@ def main():
     actual_lines = open(args[0], encoding='utf-8').read().splitlines()
     expected_lines = open(args[1], encoding='utf-8').read().splitlines()
     problems = []
+    worst = {}
+    carried = {}  # lines of a rounded carried ray (not bounded) that differ, by kind
     if len(actual_lines) != len(expected_lines):
         problems.append(f"{len(actual_lines)} lines, expected {len(expected_lines)}")
     for n, (a, e) in enumerate(zip(actual_lines, expected_lines), start=1):
@@ -88,7 +200,35 @@ def main():
             problems.append(f"line {n}: not JSON ({err}): {a}")
             continue
         check_number_spelling(a, f"line {n}", problems)
-        same(actual, json.loads(e), f"line {n}", problems)
+        expected = json.loads(e)
+        fig = None
+        if inputs is not None and n <= len(inputs):
+            try:
+                fig = json.loads(inputs[n - 1])
+            except ValueError:
+                fig = None
+        if ulps is not None and isinstance(fig, dict) and not bounded(fig):
+            mine = []
+            same(actual, expected, f"line {n}", mine)
+            if mine:
+                carried[fig.get("kind")] = carried.get(fig.get("kind"), 0) + 1
+            elif 'error' not in expected:
+                for name, err in ulp_errors(fig, actual, expected):
+                    key = (f"{fig['kind']} (carried)", name.split('[')[0])
+                    worst[key] = max(worst.get(key, 0.0), err)
+            continue
+        same(actual, expected, f"line {n}", problems)
+        if ulps is not None and inputs is not None and n <= len(inputs) and \
+                isinstance(actual, dict) and 'error' not in expected and 'error' not in actual:
+            if not isinstance(fig, dict):
+                continue
+            kind = fig.get("kind")
+            for name, err in ulp_errors(fig, actual, expected):
+                key = (kind if bounded(fig) else f"{kind} (any angle)", name.split('[')[0])
+                worst[key] = max(worst.get(key, 0.0), err)
+                if bounded(fig) and err > ulps:
+                    problems.append(f"line {n}: {name} off by {err:.1f} ulps of its bound "
+                                    f"(> {ulps:g})")
     for p in problems:
         print(p)
     bad = sorted({int(m.group(1)) for m in (re.match(r'line (\d+)\b', p) for p in problems) if m})
@@ -98,6 +238,12 @@ def main():
             print(f"  input:    {inputs[n - 1]}")
         print(f"  expected: {expected_lines[n - 1]}")
         print(f"  actual:   {actual_lines[n - 1]}")
+    for kind, count in sorted(carried.items()):
+        print(f"measured, not bounded: {count} {kind} lines with a rounded carried ray differ "
+              f"from the exact figure")
+    if stats:
+        for (kind, name), err in sorted(worst.items()):
+            print(f"ulps: {kind:28} {name:10} {err:.2f}")
     print(f"{len(expected_lines) - len(bad)} of {len(expected_lines)} lines agree, "
           f"{len(bad)} disagree ({len(problems)} problems)")
     return 1 if problems else 0

@@ -1,0 +1,151 @@
+#pragma once
+// Filtered exact predicates: the sign of each polynomial of the data that decides a branch
+// (before / between / after, parallel, inside, behind, tangent, on a side), exact for the given
+// doubles, and its value to about an ulp.
+//
+// Each predicate first evaluates its polynomial in compensated arithmetic (about ε² of its
+// terms off) and checks the result against a bound on that error, the floating-point filter of
+// Shewchuk's predicates: beyond the bound the sign is certain, and the common case costs a few
+// more flops than the plain formula. Within it (the data on or within ~1e-30 of a boundary) the
+// polynomial is evaluated again as an exact expansion (expansion.h), whose sign is the true one.
+// A `Certain` carries both: `sign` exact, `value` of that same sign (zero exactly when the
+// polynomial is zero), so that a quotient computed from it never contradicts the branch.
+//
+// The data are expected near unit size (the kernels scale them by powers of two first): the
+// filter bounds are relative, and the fma products exact, only away from underflow.
+#include <cmath>
+
+#include "geometry/exact_vec.h"
+#include "geometry/tolerance.h"
+
+namespace epure::geo {
+
+struct Certain {
+  int sign;         // −1, 0 or +1, exact
+  double value;     // within about an ulp of the exact value, of its sign
+  double lo = 0;    // value + lo is within about ε² of the terms (a double-double)
+};
+
+// n / d of two double-doubles, rounded about once (within about half an ulp plus ε² of the
+// terms): the correction term makes it n.value / d.value itself whenever both are exact
+// doubles, and keeps t's last digits near 1, where a plain quotient of the rounded values is
+// 1.5 ulps off.
+inline double quotient(const Certain& n, double d_hi, double d_lo) {
+  const double q = n.value / d_hi;
+  const double remainder = std::fma(-q, d_hi, n.value) + (n.lo - q * d_lo);  // n − q·d
+  return q + remainder / d_hi;
+}
+
+inline int sign_of(double x) { return (x > 0) - (x < 0); }
+
+namespace detail {
+// The compensated evaluations below are off by at most a small multiple of ε²·T, T the sum of
+// the magnitudes of the products they add (Ogita, Rump and Oishi's Dot2 bound, with the
+// plainly computed low-order products counted in): 64·ε²·T covers that with margin.
+inline constexpr double kCompensatedFilter = 64 * kEpsilon * kEpsilon;
+// A plain sum of two products of exact two-term values, off by at most a few ε of its terms:
+// 8·ε·T covers it.
+inline constexpr double kPlainFilter = 8 * kEpsilon;
+
+// dot and cross of exact_vec.h, as hi + lo (their hi is those functions' result, bit for bit).
+inline exact::TwoTerm compensated_dot(const ExactVec2& u, const ExactVec2& v) {
+  exact::CompensatedSum s;
+  s.add_product(u.hi.x, v.hi.x).add_product(u.hi.y, v.hi.y);
+  s.add((u.hi.x * v.lo.x + u.lo.x * v.hi.x) + (u.hi.y * v.lo.y + u.lo.y * v.hi.y) +
+        (u.lo.x * v.lo.x + u.lo.y * v.lo.y));
+  return s.two_term();
+}
+inline exact::TwoTerm compensated_cross(const ExactVec2& u, const ExactVec2& v) {
+  exact::CompensatedSum s;
+  s.add_product(u.hi.x, v.hi.y).add_product(-u.hi.y, v.hi.x);
+  s.add((u.hi.x * v.lo.y + u.lo.x * v.hi.y) - (u.hi.y * v.lo.x + u.lo.y * v.hi.x) +
+        (u.lo.x * v.lo.y - u.lo.y * v.lo.x));
+  return s.two_term();
+}
+inline exact::TwoTerm compensated_dot(const ExactVec3& u, const ExactVec3& v) {
+  exact::CompensatedSum s;
+  s.add_product(u.hi.x, v.hi.x).add_product(u.hi.y, v.hi.y).add_product(u.hi.z, v.hi.z);
+  s.add((u.hi.x * v.lo.x + u.lo.x * v.hi.x) + (u.hi.y * v.lo.y + u.lo.y * v.hi.y) +
+        (u.hi.z * v.lo.z + u.lo.z * v.hi.z) +
+        (u.lo.x * v.lo.x + u.lo.y * v.lo.y + u.lo.z * v.lo.z));
+  return s.two_term();
+}
+
+// The slow paths, exact (out of line: they are rare, and keep the fast path small).
+Certain exact_dot(const ExactVec2& u, const ExactVec2& v);
+Certain exact_cross(const ExactVec2& u, const ExactVec2& v);
+Certain exact_dot(const ExactVec3& u, const ExactVec3& v);
+Certain exact_excess(const ExactVec2& v, double r);
+Certain exact_excess(const ExactVec3& v, double r);
+Certain exact_discriminant(Vec2 u, const ExactVec2& v, double r);
+Certain exact_discriminant(Vec3 u, const ExactVec3& v, double r);
+Certain exact_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, double y2);
+}  // namespace detail
+
+// u·v of exact vectors.
+inline Certain certain_dot(const ExactVec2& u, const ExactVec2& v) {
+  const exact::TwoTerm value = detail::compensated_dot(u, v);
+  const double terms = std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y);
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_dot(u, v);
+}
+inline Certain certain_dot(const ExactVec3& u, const ExactVec3& v) {
+  const exact::TwoTerm value = detail::compensated_dot(u, v);
+  const double terms =
+      std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y) + std::abs(u.hi.z * v.hi.z);
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_dot(u, v);
+}
+
+// u∧v of exact vectors.
+inline Certain certain_cross(const ExactVec2& u, const ExactVec2& v) {
+  const exact::TwoTerm value = detail::compensated_cross(u, v);
+  const double terms = std::abs(u.hi.x * v.hi.y) + std::abs(u.hi.y * v.hi.x);
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_cross(u, v);
+}
+
+// ‖v‖² − r² of an exact vector: the sign says outside (+), on (0) or inside (−) the circle.
+inline Certain certain_excess(const ExactVec2& v, double r) {
+  exact::CompensatedSum s;
+  s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(-r, r);
+  s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y) + (v.lo.x * v.lo.x + v.lo.y * v.lo.y));
+  const exact::TwoTerm value = s.two_term();
+  const double terms = v.hi.x * v.hi.x + v.hi.y * v.hi.y + r * r;
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_excess(v, r);
+}
+inline Certain certain_excess(const ExactVec3& v, double r) {
+  exact::CompensatedSum s;
+  s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(v.hi.z, v.hi.z);
+  s.add_product(-r, r);
+  s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y + v.hi.z * v.lo.z) +
+        (v.lo.x * v.lo.x + v.lo.y * v.lo.y + v.lo.z * v.lo.z));
+  const exact::TwoTerm value = s.two_term();
+  const double terms = v.hi.x * v.hi.x + v.hi.y * v.hi.y + v.hi.z * v.hi.z + r * r;
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_excess(v, r);
+}
+
+// x1·y1 + x2·y2 for exact two-term x and double y.
+inline Certain certain_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, double y2) {
+  const double value = (x1.hi * y1 + x2.hi * y2) + (x1.lo * y1 + x2.lo * y2);
+  const double terms = std::abs(x1.hi * y1) + std::abs(x2.hi * y2);
+  if (std::abs(value) > detail::kPlainFilter * terms) return {sign_of(value), value};
+  return detail::exact_sum_of_products(x1, y1, x2, y2);
+}
+
+// ‖u‖²·r² − ‖u × v‖² (u∧v in 2D): ‖u‖² (r² − d²), d the distance from the line through the
+// origin along u to the point v. Its sign says miss (−), tangent (0) or chord (+); its value
+// keeps its digits near tangency, where r² − d² computed from d would be made of rounding.
+// Double-double evaluation, with the exact expansion within 2^-40 of the terms (a chord of
+// less than 1e-6 of the radius): there a double-double no longer gives √(r² − d²) to an ulp.
+Certain certain_discriminant(Vec2 u, const ExactVec2& v, double r);
+Certain certain_discriminant(Vec3 u, const ExactVec3& v, double r);
+
+}  // namespace epure::geo
