@@ -98,11 +98,14 @@ TEST_CASE("spread_points: many weights and totals, every share a quarter and the
       x ^= x >> 31, x *= 0xBF58476D1CE4E5B9ULL, x ^= x >> 29;
       const double w = static_cast<double>(1 + x % 4) / 2;
       if (x % 3 == 0) {
-        const std::string g = "P" + std::to_string(i);
+        std::string g = "P";
+        g += std::to_string(i);
         qs.push_back(question(g + ".x", w / 2, g));
         qs.push_back(question(g + ".y", w / 2, g));
       } else {
-        qs.push_back(question("q" + std::to_string(i), w));
+        std::string name = "q";
+        name += std::to_string(i);
+        qs.push_back(question(name, w));
       }
     }
     const double total = static_cast<double>(seed % 41) * epure::kPointStep;

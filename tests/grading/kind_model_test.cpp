@@ -41,7 +41,10 @@ std::string cell_of(const Expected& e) {
   const auto& faces = std::get<std::vector<std::string>>(e);
   if (faces.empty()) return "none";
   std::string s;
-  for (const auto& f : faces) s += (s.empty() ? "" : " ") + f;
+  for (const auto& f : faces) {
+    if (!s.empty()) s += ' ';
+    s += f;
+  }
   return s;
 }
 
@@ -49,7 +52,10 @@ std::string faces_cell(method::FaceMask bits) {
   static constexpr const char* kNames[] = {"+x", "+y", "+z", "-x", "-y", "-z"};
   std::string s;
   for (int i = 0; i < 6; ++i)
-    if (bits & (1u << i)) s += (s.empty() ? "" : " ") + std::string(kNames[i]);
+    if (bits & (1u << i)) {
+      if (!s.empty()) s += ' ';
+      s += kNames[i];
+    }
   return s.empty() ? "none" : s;
 }
 
