@@ -60,7 +60,9 @@ std::vector<double> hand(const Data& d) {
 
 // The key's solution of the data, at the standard level in English.
 epure::kinds::KeySolution key_of(const Data& d) {
-  const auto ctx = epure::test::context_for(epure::test::spec_for("ray_rectangle", epure::Difficulty::standard), "en", "hit");
+  // the context (and the spec it names) outlive every call: a key's questions keep a view of it
+  static const auto spec = epure::test::spec_for("ray_rectangle", epure::Difficulty::standard);
+  static const auto ctx = epure::test::context_for(spec, "en", "hit");
   return tf::rectangle_key(d, ctx);
 }
 std::string machine(const std::optional<epure::exact::Surd>& e) {
