@@ -82,6 +82,8 @@ struct ExerciseContext {
   // a kind with a small pool then draws from wider ranges. Sheets drawn before that point are
   // the same as without it.
   int widening = 0;
+  // What the sheet calls it: "Exercise 2", or the spec's heading ("Preamble"). Empty: "Exercise n".
+  std::string label{};
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet

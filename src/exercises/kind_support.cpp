@@ -182,6 +182,20 @@ void Questions::boolean(std::string_view field, bool value) {
   lines_.push_back({id(field), prompt(field), ctx_.texts.get(value ? "common.yes" : "common.no")});
 }
 
+std::string face_label(std::string_view name) {
+  // The contract's "-x" is printed with the minus sign, as in the statement's "x = −1 (−x)".
+  if (!name.empty() && name.front() == '-') return fmt::format("\u2212{}", name.substr(1));
+  return std::string(name);
+}
+
+std::vector<std::string> face_options(const ExerciseContext& ctx, const std::vector<std::string>& names) {
+  std::vector<std::string> shown;
+  for (const auto& n : names) shown.push_back(face_label(n));
+  // A candidate set may be empty (A inside): the student needs a box to say so.
+  shown.push_back(ctx.texts.get("common.none"));
+  return shown;
+}
+
 void Questions::choice(std::string_view field, std::string_view value,
                        const std::vector<std::string>& choices) {
   Question q;
@@ -204,9 +218,9 @@ void Questions::faces(std::string_view field, const std::vector<std::string>& va
   q.tolerance = exact_rule();
   q.points = points_for(field);
   questions_.push_back(q);
-  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, all});
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, face_options(ctx_, all), true});
   std::string shown;
-  for (const auto& f : value) shown += fmt::format("{}{}", shown.empty() ? "" : ", ", f);
+  for (const auto& f : value) shown += fmt::format("{}{}", shown.empty() ? "" : ", ", face_label(f));
   if (shown.empty()) shown = ctx_.texts.get("common.none");
   lines_.push_back({id(field), prompt(field), shown});
 }
@@ -233,22 +247,23 @@ render::Box view_around(const std::vector<render::P2>& points, double margin, do
           std::ceil(y1 / step) * step};
 }
 
-render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key) {
+namespace {
+render::Section begin_section(const ExerciseContext& ctx, std::string_view title_key) {
+  const std::string label = !ctx.label.empty()
+                                ? ctx.label
+                                : ctx.texts.format("common.exercise_label", {{"n", std::to_string(ctx.n)}});
   render::Section s;
-  s.add(render::Heading{ctx.texts.format("common.exercise_heading",
-                                         {{"n", std::to_string(ctx.n)},
-                                          {"title", ctx.texts.get(title_key)}}),
-                        1});
+  s.add(render::Heading{ctx.texts.format("common.exercise_heading", {{"label", label}, {"title", ctx.texts.get(title_key)}}), 1});
   return s;
+}
+}  // namespace
+
+render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key) {
+  return begin_section(ctx, title_key);
 }
 
 render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key) {
-  render::Section s;
-  s.add(render::Heading{ctx.texts.format("common.exercise_heading",
-                                         {{"n", std::to_string(ctx.n)},
-                                          {"title", ctx.texts.get(title_key)}}),
-                        1});
-  return s;
+  return begin_section(ctx, title_key);
 }
 
 void add_fields(render::Section& s, const Questions& q) {
@@ -265,10 +280,13 @@ void add_fields(render::Section& s, const Questions& q) {
       for (const auto& c : f.choices) shown.push_back(ctx.texts.get(fmt::format("choice.{}", c)));
     else if (f.kind == Kind::boolean)
       shown = {ctx.texts.get("common.yes"), ctx.texts.get("common.no")};
+    else if (f.kind == Kind::faces)
+      shown = face_options(ctx, f.choices);
     else
       shown = f.choices;
     s.add(render::AnswerField{fmt::format("{}.{}", ctx.n, f.field),
-                              ctx.texts.get(fmt::format("{}.q.{}", ctx.spec.kind, f.field)), f.kind, shown});
+                              ctx.texts.get(fmt::format("{}.q.{}", ctx.spec.kind, f.field)), f.kind, shown,
+                              f.kind == Kind::faces});
   }
 }
 

@@ -119,6 +119,11 @@ render::Section begin_key_section(const ExerciseContext& ctx, std::string_view t
 // Adds the answer fields (sheet: the kind's sheet_fields() when it has them, the same for every
 // branch) or the answer lines (key: what this instance asks).
 void add_fields(render::Section& s, const Questions& q);
+
+// A side or face as printed ("−x" with U+2212), and the tick options of a candidate-sides field:
+// every name, then "none".
+std::string face_label(std::string_view name);
+std::vector<std::string> face_options(const ExerciseContext& ctx, const std::vector<std::string>& names);
 void add_lines(render::Section& s, const Questions& q);
 
 // A constraint's value: the spec's override or the kind's default.

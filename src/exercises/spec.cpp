@@ -84,6 +84,30 @@ class Reader {
     return value;
   }
 
+  // The same for a value of its own: the string in `language` (or the first given), every
+  // language into `by_language`.
+  std::string localized(const toml::table& t, std::string_view prefix, std::string_view key,
+                        std::string_view language, std::map<std::string, std::string>& by_language) const {
+    const toml::node* node = t.get(key);
+    if (!node) return {};
+    const std::string name = qualified(prefix, key);
+    if (node->is_string()) return node->as_string()->get();
+    const auto* table = node->as_table();
+    if (!table || table->empty())
+      fail(*node, name, "expected a string, or a table of strings by language ({ en = \"…\", fr = \"…\" })");
+    std::string value;
+    for (const auto& [lang, v] : *table) {
+      const std::string lname = qualified(name, lang.str());
+      bool known = false;
+      for (const auto& l : builtin_languages()) known = known || l == lang.str();
+      if (!known) fail(v, lname, "unknown language (languages: en, fr)");
+      if (!v.is_string()) fail(v, lname, "expected a string");
+      by_language[std::string(lang.str())] = v.as_string()->get();
+      if (lang.str() == language || value.empty()) value = v.as_string()->get();
+    }
+    return value;
+  }
+
   double number(const toml::node& node, std::string_view key) const {
     if (auto i = node.as_integer()) return static_cast<double>(i->get());
     if (auto f = node.as_floating_point()) {
@@ -102,9 +126,10 @@ class Reader {
 };
 
 ExerciseSpec read_exercise(const Reader& r, const toml::table& t, std::string_view prefix,
-                           Difficulty default_difficulty, const toml::node& where) {
-  r.only(t, prefix, {"kind", "difficulty", "branches", "points", "questions", "constraints"});
+                           Difficulty default_difficulty, std::string_view language, const toml::node& where) {
+  r.only(t, prefix, {"kind", "heading", "difficulty", "branches", "points", "questions", "constraints"});
   ExerciseSpec e;
+  e.heading = r.localized(t, prefix, "heading", language, e.heading_by_language);
   e.kind = r.string(t, prefix, "kind", "");
   if (e.kind.empty()) r.fail(where, Reader::qualified(prefix, "kind"), "missing");
   const ExerciseKind* kind = find_kind(e.kind);
@@ -262,7 +287,7 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
     const auto* t = node.as_table();
     const std::string prefix = fmt::format("exercise[{}]", i + 1);
     if (!t) r.fail(node, prefix, "expected a table");
-    spec.exercises.push_back(read_exercise(r, *t, prefix, difficulty, node));
+    spec.exercises.push_back(read_exercise(r, *t, prefix, difficulty, spec.language, node));
   }
   return spec;
 }
@@ -274,6 +299,18 @@ SpecWords WorksheetSpec::words_in(std::string_view lang) const {
   for (auto field : {&SpecWords::title, &SpecWords::course, &SpecWords::author, &SpecWords::subject})
     if (!(it->second.*field).empty()) words.*field = it->second.*field;
   return words;
+}
+
+std::string ExerciseSpec::heading_in(std::string_view language) const {
+  const auto it = heading_by_language.find(std::string(language));
+  return it != heading_by_language.end() ? it->second : heading;
+}
+
+int exercise_number(const WorksheetSpec& spec, std::size_t slot) {
+  int n = 1;
+  for (std::size_t i = 0; i < slot && i < spec.exercises.size(); ++i)
+    if (spec.exercises[i].heading.empty()) ++n;
+  return n;
 }
 
 WorksheetSpec builtin_spec() {

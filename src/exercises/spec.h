@@ -33,6 +33,12 @@ struct ExerciseSpec {
   // What the exercise is worth, shared by the questions its branch asks in proportion to their
   // weights (exercises/points.h); unset: the kind's default_points().
   std::optional<double> points;
+  // What the sheet calls it instead of "Exercise n" ("Preamble", "Open question 1"), in the
+  // spec's language and per language as given; empty: numbered. Exercises without a heading of
+  // their own are numbered 1, 2, … in order, as the course numbers its exercises.
+  std::string heading;
+  std::map<std::string, std::string> heading_by_language;
+  std::string heading_in(std::string_view language) const;
 };
 
 // The spec's own words, printed on every page and in the PDF's metadata.
@@ -70,6 +76,10 @@ class SpecError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The number the sheet gives the exercise in `slot` when it has no heading of its own: 1 + the
+// unheaded exercises before it.
+int exercise_number(const WorksheetSpec& spec, std::size_t slot);
 
 // Throws SpecError "<source>:<line>:<column>: key '<key>': <why>".
 WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_name);

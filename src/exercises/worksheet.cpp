@@ -33,8 +33,18 @@ WorksheetSet::WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOpti
 
 ExerciseContext WorksheetSet::context(int slot, int n, const std::string& branch) const {
   const auto& texts = Texts::builtin(language_);
-  return ExerciseContext{n, spec_.exercises[slot], texts, NumberStyle::for_language(language_),
-                         spec_.decimals, branch};
+  ExerciseContext ctx{n, spec_.exercises[slot], texts, NumberStyle::for_language(language_),
+                      spec_.decimals, branch};
+  ctx.label = exercise_label(spec_, static_cast<std::size_t>(slot), texts);
+  return ctx;
+}
+
+std::string exercise_label(const WorksheetSpec& spec, std::size_t slot, const Texts& texts) {
+  if (slot < spec.exercises.size()) {
+    std::string own = spec.exercises[slot].heading_in(texts.language());
+    if (!own.empty()) return own;
+  }
+  return texts.format("common.exercise_label", {{"n", std::to_string(exercise_number(spec, slot))}});
 }
 
 ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch,

@@ -18,6 +18,13 @@
 #include "render/document.h"
 
 namespace epure {
+class Texts;
+// What the sheet calls the exercise in `slot`: the spec's heading for it in the texts' language,
+// else "Exercise n" with n counted over the exercises that have no heading (spec.h).
+std::string exercise_label(const WorksheetSpec& spec, std::size_t slot, const Texts& texts);
+}  // namespace epure
+
+namespace epure {
 
 struct Sheet {
   SheetId id;

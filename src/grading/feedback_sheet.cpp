@@ -120,7 +120,12 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
     render::Section section;
     const std::string title_key = ex.kind + ".title";
     const std::string title = T.has(title_key) ? T.get(title_key) : ex.kind;
-    section.add(render::Heading{T.format("common.exercise_heading", {{"n", std::to_string(ex.n)}, {"title", title}}), 1});
+    // The sheet's own heading ("Preamble", "Exercise 1"), from the spec the key carries.
+    const WorksheetSpec* spec = diagrams ? diagrams->spec() : nullptr;
+    const std::string label = spec && e < spec->exercises.size() && spec->exercises[e].kind == ex.kind
+                                  ? exercise_label(*spec, e, T)
+                                  : T.format("common.exercise_label", {{"n", std::to_string(ex.n)}});
+    section.add(render::Heading{T.format("common.exercise_heading", {{"label", label}, {"title", title}}), 1});
     if (diagrams) {
       if (auto scene = diagrams->scene(*s.sheet, e)) {
         overlay_answers(*scene, ex, marks, text);

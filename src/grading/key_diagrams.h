@@ -22,6 +22,8 @@ class KeyDiagrams {
 
   bool available() const { return spec_.has_value(); }
   const std::string& why_not() const { return why_not_; }
+  // The spec the set was drawn from, when the key carries one that reads (headings come from it).
+  const WorksheetSpec* spec() const { return spec_ ? &*spec_ : nullptr; }
 
   // The key's figure of exercise `e` of `sheet`, or nothing when it cannot be redrawn.
   std::optional<render::Scene> scene(const SheetKey& sheet, std::size_t e);

@@ -26,6 +26,8 @@ struct AnswerField {
   RichText prompt;          // "t_{ab} ="
   enum class Kind { number, point, point3, choice, faces, boolean } kind = Kind::number;
   std::vector<std::string> choices;  // for `choice` and `faces`: the options to tick
+  // The last choice says something else than the others ("none" after the sides): a row of its own.
+  bool last_choice_apart = false;
 };
 
 // In a key: a question and its expected answer.

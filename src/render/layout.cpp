@@ -506,7 +506,23 @@ class Builder {
         }
         glyph(")", x + kBoxGap);
       }
-    } else {
+    }
+
+    // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
+    // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
+    // ticks: it reads better, and takes less height, on lines of its own above them.
+    auto prompt_lines = wrap_rich_text(f.prompt, size, field_column_ - kPromptGap);
+    bool prompt_above = false;
+    if (ticks && prompt_lines.size() > 2) {
+      auto wide = wrap_rich_text(f.prompt, size, limit - left_);
+      if (wide.size() < prompt_lines.size()) {
+        prompt_lines = std::move(wide);
+        prompt_above = true;
+      }
+    }
+    const double ticks_top = prompt_above ? static_cast<double>(prompt_lines.size()) * body_line_ : 0;
+
+    if (ticks) {
       std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
       if (f.kind == K::boolean) {
         options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
@@ -514,7 +530,8 @@ class Builder {
         for (const auto& c : f.choices) options.emplace_back(c, c);
       }
       // The options on as few rows as fit, in aligned columns: six faces become two rows of
-      // three rather than five and a lonely one.
+      // three rather than five and a lonely one. A last choice set apart ("none" after the
+      // sides) gets a row of its own.
       std::vector<std::vector<TextRun>> labels;
       std::vector<double> widths;
       for (const auto& o : options) {
@@ -522,38 +539,43 @@ class Builder {
         widths.push_back(s_.tick_size + kTickGap + text_width(labels.back(), size));
       }
       const std::size_t n = options.size();
-      std::size_t per_row = n;
+      const std::size_t grid = f.last_choice_apart && n > 1 ? n - 1 : n;
+      std::size_t per_row = grid;
       std::vector<double> columns;
-      for (std::size_t rows = 1; rows <= n; ++rows) {
-        per_row = (n + rows - 1) / rows;
+      for (std::size_t rows = 1; rows <= grid; ++rows) {
+        per_row = (grid + rows - 1) / rows;
         columns.assign(per_row, 0);
-        for (std::size_t i = 0; i < n; ++i) columns[i % per_row] = std::max(columns[i % per_row], widths[i]);
+        for (std::size_t i = 0; i < grid; ++i) columns[i % per_row] = std::max(columns[i % per_row], widths[i]);
         double total = kOptionGap * static_cast<double>(per_row - 1);
         for (double c : columns) total += c;
         if (x0 + total <= limit + kFitSlack) break;
       }
+      const std::size_t grid_rows = grid == 0 ? 1 : (grid + per_row - 1) / per_row;
       for (std::size_t i = 0; i < n; ++i) {
         double x = x0;
-        for (std::size_t c = 0; c < i % per_row; ++c) x += columns[c] + kOptionGap;
-        const double top = static_cast<double>(i / per_row) * s_.tick_row_height;
+        std::size_t row = grid_rows;  // the option after the grid
+        if (i < grid) {
+          for (std::size_t c = 0; c < i % per_row; ++c) x += columns[c] + kOptionGap;
+          row = i / per_row;
+        }
+        const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
         const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
         a.content.boxes.push_back({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
                                    std::move(options[i].second)});
         a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
       }
-      const std::size_t rows = n == 0 ? 1 : (n + per_row - 1) / per_row;
-      body_h = static_cast<double>(rows) * s_.tick_row_height;
+      const std::size_t rows = grid_rows + (grid < n ? 1 : 0);
+      body_h = ticks_top + static_cast<double>(rows) * s_.tick_row_height;
     }
 
-    // The prompt, right of nothing and left of the boxes; wrapped if wider than its column.
     double prompt_h = 0;
-    double y = baseline;
-    for (auto& runs : wrap_rich_text(f.prompt, size, field_column_ - kPromptGap)) {
+    double y = prompt_above ? size * kBaseline : baseline;
+    for (auto& runs : prompt_lines) {
       a.content.text(std::move(runs), left_, y, size);
       prompt_h = y + size * (s_.line_height - kBaseline);
       y += body_line_;
     }
-    if (id_w > 0) a.content.text_right(std::move(id), right_, baseline, s_.id_size, Ink::muted);
+    if (id_w > 0) a.content.text_right(std::move(id), right_, prompt_above ? size * kBaseline : baseline, s_.id_size, Ink::muted);
     a.height = std::max(body_h, prompt_h);
     push(std::move(a));
   }

@@ -99,12 +99,53 @@ double advance_sum(std::string_view text, Face face) {
   return em;
 }
 
-// The words of one line of `rich` (no '\n' in it): split at spaces outside markup groups.
-std::vector<std::string_view> words(std::string_view rich) {
-  std::vector<std::string_view> out;
+// The words of one line of `rich` (no '\n' in it): split at spaces outside markup groups. A
+// word that must not start a line (see glued_to_previous) says so.
+struct Word {
+  std::string_view text;
+  bool glued = false;  // the space before it is not a place to break the line
+};
+
+// Tokens that bind the words either side of them: a line never ends or starts at "=" in
+// "I = A + t·û", nor splits "∘" from a map's factors.
+bool binding_token(std::string_view w) {
+  static constexpr std::string_view kBinding[] = {"=", "≠", "≈", "≤", "≥", "<", ">", "+", "−", "·", "×", "/", "∘", "→", "↦"};
+  for (auto t : kBinding)
+    if (w == t) return true;
+  return false;
+}
+
+// French punctuation that follows its word even after a space ("cercle ?"), and quotes that
+// hold their word ("« aucun »").
+bool sticks_to_previous(std::string_view w) {
+  static constexpr std::string_view kAfter[] = {"?", "!", ":", ";", "»"};
+  for (auto t : kAfter)
+    if (w.substr(0, t.size()) == t) return true;
+  return false;
+}
+
+// A short bracketed group ("(−2 ; 4)", "[−1 ; 1]", "échelle(a ; b)") is one formula: its spaces
+// are not breaks. A long one is prose in parentheses, which may wrap.
+constexpr std::size_t kShortGroup = 32;  // bytes, brackets included
+
+std::vector<Word> words(std::string_view rich) {
+  std::vector<Word> out;
   std::size_t start = 0;
+  bool glue_next = false;
+  std::size_t group_end = npos;  // the closing bracket of the short group we are in
   const auto flush = [&](std::size_t end) {
-    if (end > start) out.push_back(rich.substr(start, end - start));
+    if (end > start) {
+      out.push_back({rich.substr(start, end - start), glue_next});
+    }
+  };
+  const auto short_group_end = [&](std::size_t open) -> std::size_t {
+    const char close = rich[open] == '(' ? ')' : ']';
+    int depth = 0;
+    for (std::size_t j = open; j < rich.size() && j - open < kShortGroup; ++j) {
+      if (rich[j] == rich[open]) ++depth;
+      else if (rich[j] == close && --depth == 0) return j;
+    }
+    return npos;
   };
   for (std::size_t j = 0; j < rich.size(); ++j) {
     const char c = rich[j];
@@ -113,12 +154,23 @@ std::vector<std::string_view> words(std::string_view rich) {
     } else if (c == '{') {
       const std::size_t close = closing_brace(rich, j);
       if (close != npos) j = close;
+    } else if ((c == '(' || c == '[') && group_end == npos) {
+      group_end = short_group_end(j);
+    } else if (j == group_end) {
+      group_end = npos;
     } else if (c == ' ') {
       flush(j);
+      glue_next = group_end != npos;
       start = j + 1;
     }
   }
   flush(rich.size());
+  // The binding tokens and the punctuation glue across the spaces around them.
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    if (binding_token(out[i].text) || binding_token(out[i - 1].text) || sticks_to_previous(out[i].text) ||
+        out[i - 1].text == "«")
+      out[i].glued = true;
+  }
   return out;
 }
 
@@ -237,8 +289,7 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
     std::string line;
     double line_width = 0;
     bool any = false;
-    for (std::string_view w : words(piece)) {
-      const double ww = word_width(w, font_size, face);
+    const auto place = [&](std::string_view w, double ww) {
       if (any && line_width + space + ww > max_width) {
         finish(line);
         line.clear();
@@ -252,6 +303,35 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
       line += w;
       line_width += ww;
       any = true;
+    };
+    // Glued words move to the next line together, as one chunk; a chunk wider than a whole line
+    // falls back to breaking at its own spaces.
+    const std::vector<Word> ws = words(piece);
+    for (std::size_t i = 0; i < ws.size();) {
+      std::size_t j = i + 1;
+      while (j < ws.size() && ws[j].glued) ++j;
+      double chunk = 0;
+      std::vector<double> widths;
+      for (std::size_t k = i; k < j; ++k) {
+        widths.push_back(word_width(ws[k].text, font_size, face));
+        chunk += widths.back() + (k > i ? space : 0);
+      }
+      if (j - i > 1 && chunk <= max_width && any && line_width + space + chunk > max_width) {
+        finish(line);
+        line.clear();
+        line_width = 0;
+        any = false;
+      }
+      for (std::size_t k = i; k < j; ++k) {
+        if (chunk <= max_width && k > i) {  // within a chunk that fits a line: never a break
+          line += ' ';
+          line += ws[k].text;
+          line_width += space + widths[k - i];
+        } else {
+          place(ws[k].text, widths[k - i]);
+        }
+      }
+      i = j;
     }
     finish(line);  // an empty piece (two '\n' in a row) gives an empty line
     if (nl == npos) break;

@@ -343,7 +343,7 @@ TEST_CASE("ray_square: the key walks the candidate sides in the course's order")
     for (const auto& block : inst.key.blocks)
       if (auto* p = std::get_if<render::Paragraph>(&block))
         for (const auto& f : faces)
-          if (p->text.rfind("Side " + f + ":", 0) == 0) ++side_steps;
+          if (p->text.rfind("Side " + kinds::face_label(f) + ":", 0) == 0) ++side_steps;
     CHECK(side_steps == static_cast<int>(faces.size()));  // one paragraph per candidate side
   }
 }

@@ -86,6 +86,42 @@ kind = "projection"
   }
 }
 
+TEST_CASE("an exercise may have a heading of its own; the others are numbered in order") {
+  const auto spec = parse_spec(R"(
+language = "fr"
+[[exercise]]
+kind = "vectors"
+heading = { en = "Preamble", fr = "Préambule" }
+[[exercise]]
+kind = "projection"
+[[exercise]]
+kind = "segments"
+heading = "Bonus"
+[[exercise]]
+kind = "ray_circle"
+)", "h.toml");
+  CHECK(spec.exercises[0].heading == "Préambule");
+  CHECK(spec.exercises[0].heading_in("en") == "Preamble");
+  CHECK(spec.exercises[2].heading_in("en") == "Bonus");  // one string: every language
+  CHECK(spec.exercises[1].heading.empty());
+  CHECK(epure::exercise_number(spec, 1) == 1);
+  CHECK(epure::exercise_number(spec, 3) == 2);
+  SUBCASE("the built-in course numbers as the course does: preamble, exercises 1 to 4, open questions") {
+    const auto course = epure::builtin_spec();
+    REQUIRE(course.exercises.size() == 7);
+    CHECK(course.exercises[0].heading_in("fr") == "Préambule");
+    CHECK(epure::exercise_number(course, 1) == 1);
+    CHECK(epure::exercise_number(course, 4) == 4);
+    CHECK(course.exercises[5].heading_in("fr") == "Exercice 3, question 3");
+  }
+  SUBCASE("a heading of another language or type is an error naming the key") {
+    const auto e = error_of("[[exercise]]\nkind = \"projection\"\nheading = { de = \"x\" }\n");
+    CHECK(e.find("my.toml:3:") == 0);
+    CHECK(e.find("'exercise[1].heading.de'") != std::string::npos);
+    CHECK(error_of("[[exercise]]\nkind = \"projection\"\nheading = 3\n").find("'exercise[1].heading'") != std::string::npos);
+  }
+}
+
 TEST_CASE("every mistake names the file, the line and the key") {
   SUBCASE("1. not TOML") { CHECK(error_of("title = \n").find("my.toml:1:") == 0); }
   SUBCASE("2. unknown top-level key") {

@@ -476,6 +476,53 @@ TEST_CASE("layout: answer fields are sized to what they hold") {
   check_inside(page, style);
 }
 
+TEST_CASE("layout: a question asked as a question stands above its ticks; \"none\" has a row of its own") {
+  const LayoutStyle style;
+  Document doc = sample(0);
+  Section s;
+  using K = AnswerField::Kind;
+  // Point fields keep the prompt column narrow, as on a ray's sheet.
+  s.add(AnswerField{"1.I", "I =", K::point, {}});
+  const std::string question =
+      "Is A, the origin of the ray drawn on the figure with its direction u, inside the ellipse whose centre C and "
+      "semi-axes a and b are given above?";
+  s.add(AnswerField{"1.inside", question, K::boolean, {}});
+  AnswerField faces{"1.faces", "Sides:", K::faces, {"+x", "+y", "−x", "−y", "none"}};
+  faces.last_choice_apart = true;
+  s.add(faces);
+  doc.sections.push_back(s);
+  const auto pages = layout_document(doc, style);
+  REQUIRE(pages.size() == 1);
+  const auto& page = pages[0];
+  std::vector<PlacedBox> inside, sides;
+  for (const auto& b : page.boxes) {
+    if (b.question_id == "1.inside") inside.push_back(b);
+    if (b.question_id == "1.faces") sides.push_back(b);
+  }
+  REQUIRE(inside.size() == 2);
+  REQUIRE(sides.size() == 5);
+
+  SUBCASE("1. the long prompt is on fewer lines than its column would give, above both ticks") {
+    std::vector<const PlacedText*> lines;
+    for (const auto& t : page.texts) {
+      const std::string j = joined(t);
+      if (!j.empty() && question.find(j) != std::string::npos && j.size() > 3) lines.push_back(&t);
+    }
+    REQUIRE(!lines.empty());
+    CHECK(lines.size() <= 2);
+    for (const auto* l : lines)
+      for (const auto& b : inside) CHECK(l->baseline.y < b.rect.y);
+    CHECK(inside[0].rect.y == doctest::Approx(inside[1].rect.y).epsilon(1e-12));  // yes and no on one row
+  }
+  SUBCASE("2. the sides in a grid, \"none\" alone on the row below, at the grid's first column") {
+    const auto& none = sides.back();
+    CHECK(none.value == "none");
+    for (std::size_t i = 0; i + 1 < sides.size(); ++i) CHECK(sides[i].rect.y < none.rect.y);
+    CHECK(none.rect.x == doctest::Approx(sides[0].rect.x).epsilon(1e-12));
+  }
+  check_inside(page, style);
+}
+
 TEST_CASE("layout: a key's answer lines are a two-column table") {
   Document doc = sample(0);
   doc.student_fields = false;

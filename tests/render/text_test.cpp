@@ -116,6 +116,49 @@ TEST_CASE("font metrics cover the characters of the course's texts") {
   CHECK(v.descent > 0);
 }
 
+TEST_CASE("wrap_rich_text: no break inside a formula nor before French punctuation") {
+  const double size = 10;
+  // Every width from the widest glued run to the whole text: a break lands anywhere it may. (A
+  // narrower line breaks a run at its own spaces: subcase 4.)
+  const auto every_wrap = [&](const std::string& text, const std::string& widest_run, auto check) {
+    for (double width = text_width(widest_run, size) + 0.5; width < text_width(text, size) + 10; width += 3) {
+      CAPTURE(width);
+      const auto lines = wrap_rich_text(text, size, width);
+      for (std::size_t i = 0; i < lines.size(); ++i) check(joined(lines[i]), i, lines.size());
+    }
+  };
+  SUBCASE("1. a line never starts or ends at '=', '+', '−' or '∘'") {
+    const std::string text = "donc I = A + t·û et T = translation(C) ∘ rotation(θ) ∘ échelle(a ; b), puis t = 2 − 1 enfin";
+    every_wrap(text, "T = translation(C) ∘ rotation(θ) ∘ échelle(a ; b),", [](const std::string& line, std::size_t, std::size_t) {
+      for (const std::string op : {"=", "+", "−", "∘"}) {
+        CHECK(line.rfind(op + " ", 0) != 0);
+        CHECK((line.size() < op.size() + 1 || line.compare(line.size() - op.size() - 1, std::string::npos, " " + op) != 0));
+      }
+    });
+  }
+  SUBCASE("2. a short bracketed group stays on one line, prose in parentheses may wrap") {
+    every_wrap("le point (−2,5 ; 4) et le carré [−1 ; 1] sont donnés ici", "(−2,5 ; 4)", [](const std::string& line, std::size_t, std::size_t) {
+      CHECK((line.find("(−2,5") == std::string::npos || line.find("(−2,5 ; 4)") != std::string::npos));
+      CHECK((line.find("[−1") == std::string::npos || line.find("[−1 ; 1]") != std::string::npos));
+    });
+    const auto long_group = wrap_rich_text("a (b c d e f g h i j k l m n o p q r s t u v w x y z) z", size, 40);
+    CHECK(long_group.size() > 2);
+  }
+  SUBCASE("3. '?', ':', ';' and '»' never start a line; '«' never ends one") {
+    every_wrap("A est-il à l’intérieur ? Cochez « aucun » : il n’y en a pas ; voilà !", text_width("l’intérieur ?", size) > text_width("« aucun » :", size) ? "l’intérieur ?" : "« aucun » :",
+               [](const std::string& line, std::size_t, std::size_t) {
+                 for (const std::string p : {"?", ":", ";", "»", "!"}) CHECK(line.rfind(p, 0) != 0);
+                 CHECK((line.size() < 3 || line.compare(line.size() - 3, 3, " «") != 0));
+               });
+  }
+  SUBCASE("4. a glued run wider than the line still wraps, at its own spaces") {
+    const auto lines = wrap_rich_text("x = a + b + c + d + e + f + g + h", size, 25);
+    CHECK(lines.size() > 2);
+    for (const auto& l : lines)
+      if (text_width(l, size) > 25) CHECK(joined(l).find(' ') == std::string::npos);
+  }
+}
+
 TEST_CASE("wrap_rich_text: greedy, at spaces, never inside a group") {
   const double size = 10;
   SUBCASE("1. every line fits, and the words come back in order") {

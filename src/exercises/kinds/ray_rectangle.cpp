@@ -141,7 +141,7 @@ struct RayRectangle {
   static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), rectangle_of(d))); }
 };
 
-std::string side_name(geo::Face face) { return std::string(geo::face_name(face)); }
+std::string side_name(geo::Face face) { return face_label(geo::face_name(face)); }
 
 class RayRectangleKind final : public MethodKind<RayRectangle> {
  public:

@@ -279,7 +279,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
     const Questions& q = key.questions;
     inst.questions = key.questions.take_questions();
     std::vector<std::string> faces;
-    rs.faces.for_each([&](Face f) { faces.emplace_back(geo::face_name(f)); });
+    rs.faces.for_each([&](Face f) { faces.emplace_back(face_label(geo::face_name(f))); });
     std::optional<Surd> t_exact, ix_exact, iy_exact;
     if (rs.hit) t_exact = key.exact("t"), ix_exact = key.exact_x("I"), iy_exact = key.exact_y("I");
     auto side_exact = [&](std::string_view id) -> std::optional<Surd> {
@@ -305,7 +305,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
       const char* where = rs.faces.contains({k, +1}) ? "plus" : rs.faces.contains({k, -1}) ? "minus" : "none";
       step(fmt::format("axis.{}", where), {{"c", axis_name(k)},
                                            {"v", N.datum(a)},
-                                           {"face", std::string(geo::face_name({k, a > 0 ? +1 : -1}))}});
+                                           {"face", face_label(geo::face_name({k, a > 0 ? +1 : -1}))}});
     }
     if (rs.inside) {
       step("no_candidate");
@@ -328,7 +328,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
       // the side hit shows the core's values; the others their exact values (or the formula's)
       const double t = hit_here ? rs.hit->t : s.t.value_or(0);
       const Point2 J = hit_here ? rs.hit->I : s.J.value_or(Point2{});
-      const TextVars vars = {{"face", std::string(geo::face_name(s.face))},
+      const TextVars vars = {{"face", face_label(geo::face_name(s.face))},
                              {"n", N.point(n.x, n.y)},
                              {"un", step_value(ctx, s.u_n, ex.u_n)},
                              {"t", step_value(ctx, t, ex.t)},
@@ -352,7 +352,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
                                                       : std::nullopt)}});
     }
     if (rs.hit) {
-      const TextVars vars = {{"face", std::string(geo::face_name(*rs.face))},
+      const TextVars vars = {{"face", face_label(geo::face_name(*rs.face))},
                              {"t", step_value(ctx, rs.hit->t, t_exact)},
                              {"I", step_point(ctx, rs.hit->I, ix_exact, iy_exact)},
                              {"N", N.point(rs.hit->N.x, rs.hit->N.y)}};
