@@ -240,6 +240,10 @@ def main(argv):
                     if part['type'] != 'numerical':
                         fail(qwhere, f'a number asked as {part["type"]}')
                         continue
+                    # qtype_multianswer_validate_question: every answer of a number a number
+                    if any('value' not in a for a in alts):
+                        fail(qwhere, 'an answer that is not a number (the import refuses the question)')
+                        continue
                     right = alts[0]
                     if right['fraction'] != 1.0 or 'value' not in right:
                         fail(qwhere, 'the first answer is not the right value')
