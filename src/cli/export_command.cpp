@@ -37,8 +37,8 @@ int run_export(const ExportOptions& o, bool moodle) {
   output::write_file_atomically(out, moodle ? exporting::moodle_xml(set) : exporting::qti_package(set));
   std::size_t questions = 0;
   for (const auto& slot : set.exercises) questions += slot.variants.size();
-  fmt::print("{}: {} questions ({} exercises, {} variants each at most) into {}\n", command, questions,
-             set.exercises.size(), set.exercises.empty() ? 0 : set.exercises.front().variants.size(), out.string());
+  fmt::print("{}: {} questions ({} exercises, one question per sheet in each) into {}\n", command, questions,
+             set.exercises.size(), out.string());
   return 0;
 }
 

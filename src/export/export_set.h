@@ -88,7 +88,6 @@ struct ExerciseSlot {
 struct ExportSet {
   std::filesystem::path key_path;
   std::string title;
-  std::string course;
   std::string language;
   std::vector<ExerciseSlot> exercises;
 };

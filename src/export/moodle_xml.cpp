@@ -102,7 +102,7 @@ std::string moodle_fraction(double percent) {
   for (std::string_view g : kGrades) {
     const double v = std::stod(std::string(g));
     for (double sign : {1.0, -1.0})
-      if (std::abs(percent - sign * v) < 1e-4) return (sign < 0 && v != 0 ? "-" : "") + std::string(g);
+      if (std::abs(percent - sign * v) < 1e-4) return fmt::format("{}{}", sign < 0 && v != 0 ? "-" : "", g);
   }
   throw ExportError(fmt::format("{}% is not one of Moodle's grades", percent));
 }
@@ -190,7 +190,7 @@ std::string moodle_xml(const ExportSet& set) {
               const int weight = static_cast<int>(std::lround(p.points * scale));
               parts.push_back(cloze_part(p, weight));
             }
-            if (b.point) html += "(" + fmt::format("{}", fmt::join(parts, comma ? " ; " : ", ")) + ")";
+            if (b.point) html += fmt::format("({})", fmt::join(parts, comma ? " ; " : ", "));
             else html += fmt::format("{}", fmt::join(parts, " "));
             html += "</p>\n";
             break;
@@ -206,7 +206,7 @@ std::string moodle_xml(const ExportSet& set) {
                            base64(im.bytes));
       out += "    </questiontext>\n";
       out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";
-      out += "    <penalty>0</penalty>\n";
+      out += "    <penalty>0.3333333</penalty>\n";  // Moodle's default, for a quiz with several tries
       out += "    <hidden>0</hidden>\n";
       out += fmt::format("    <idnumber>{}-{}</idnumber>\n", v.sheet_id, slot.n);
       out += "  </question>\n";

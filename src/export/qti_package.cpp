@@ -128,7 +128,7 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
         std::vector<std::string> inner;
         for (int i : b.parts) inner.push_back(interaction(v.parts[static_cast<std::size_t>(i)], static_cast<std::size_t>(i)));
         x += "    <p>" + b.html + " ";
-        if (b.point) x += "(" + fmt::format("{}", fmt::join(inner, separator)) + ")";
+        if (b.point) x += fmt::format("({})", fmt::join(inner, separator));
         else x += fmt::format("{}", fmt::join(inner, " "));
         x += "</p>\n";
         break;
