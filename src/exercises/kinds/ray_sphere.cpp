@@ -253,6 +253,8 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     space::add_drop(panel, cam, p3(d.C));
     panel.add(render::Circle{cam.project(p3(d.C)), d.r, Role::data});
     if (key) render::add_segment(panel, cam, p3(rs.P), p3(d.C), Role::construction, ball);
+    // behind: the ray's line back to P, which lies before A
+    if (key && rs.t_proj < 0) render::add_segment(panel, cam, p3(rs.P), p3(d.A), Role::construction, ball);
     render::add_segment(panel, cam, p3(d.A), p3(end), Role::data, ball);
     panel.add(render::Arrow{cam.project(p3(d.A)), cam.project(p3(d.A + uh)), Role::construction});
     panel.add(render::PointMark{cam.project(p3(d.C)), Role::data, render::Label{"C", cam.project(p3(d.C))}});
