@@ -37,7 +37,7 @@ VectorPair compare_vectors(Vec2 u, Vec2 v) {
   return r;
 }
 
-VectorPair3 compare_vectors(Vec3 u, Vec3 v) {
+VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v) {
   const double norm_u = norm(u), norm_v = norm(v);
   if (!(norm_u > 0)) throw DegenerateFigure("u", "zero vector has no direction");
   if (!(norm_v > 0)) throw DegenerateFigure("v", "zero vector has no direction");

@@ -32,7 +32,7 @@ struct VectorPair3 {
 inline constexpr double kCollinearSin = 1e-12;
 
 // Throws DegenerateFigure("u" or "v") for a zero vector.
-VectorPair3 compare_vectors(Vec3 u, Vec3 v);
+VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v);
 
 // atan2(sin, cos) in degrees, folded into (−180, 180] (atan2(−0, −1) is −180: we say 180).
 double angle_degrees(double cos, double sin);

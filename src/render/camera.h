@@ -52,6 +52,12 @@ class Camera {
   P3 right_, up_, toward_;
 };
 
+// How close to a solid's surface a point counts as on it (not hidden), in the panel's units: far
+// below what a drawing shows, far above the rounding of the coordinates.
+inline constexpr double kSurfaceGap = 1e-9;
+// A view direction's component below this is parallel to a box's slab.
+inline constexpr double kParallelSlab = 1e-15;
+
 // A solid that hides what lies behind it.
 struct Ball {
   P3 c;
@@ -63,7 +69,7 @@ struct AlignedBox {
 
 // Whether p is hidden by the solid: inside it, or behind it (the line of sight from p towards
 // the viewer enters it). Points on the surface itself (within `eps`) are not hidden.
-inline bool hides(const Ball& b, const Camera& cam, P3 p, double eps = 1e-9) {
+inline bool hides(const Ball& b, const Camera& cam, P3 p, double eps = kSurfaceGap) {
   const P3 cp = p - b.c;
   const double c2 = dot3(cp, cp) - b.r * b.r;
   if (c2 < -eps) return true;
@@ -74,12 +80,12 @@ inline bool hides(const Ball& b, const Camera& cam, P3 p, double eps = 1e-9) {
   const double s_far = -k + std::sqrt(disc);
   return s_far > eps && -k > eps;
 }
-inline bool hides(const AlignedBox& b, const Camera& cam, P3 p, double eps = 1e-9) {
+inline bool hides(const AlignedBox& b, const Camera& cam, P3 p, double eps = kSurfaceGap) {
   const double o[3] = {p.x, p.y, p.z}, d[3] = {cam.toward().x, cam.toward().y, cam.toward().z};
   const double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
   double s_in = 0, s_out = 1e300;
   for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-15) {
+    if (std::abs(d[k]) < kParallelSlab) {
       if (o[k] <= lo[k] + eps || o[k] >= hi[k] - eps) return false;
       continue;
     }
@@ -101,7 +107,7 @@ void add_segment(Panel& panel, const Camera& cam, P3 a, P3 b, Role role, const S
   double start = 0;
   bool state = hidden(0.0);
   auto flush = [&](double end, bool was_hidden) {
-    if (end - start <= 1e-9) return;
+    if (end - start <= kSurfaceGap) return;  // a sliver left by the bisection at an end
     panel.add(Segment{cam.project(at(start)), cam.project(at(end)), role, was_hidden});
   };
   for (int i = 1; i <= kSamples; ++i) {

@@ -59,4 +59,10 @@ python3 "$EPURE_SOURCE_DIR/tests/tools/page_collisions.py" "$tmp/a/sheets.pdf" "
 "$EPURE" preview ray_sphere --branch hit --out "$tmp/preview" >/dev/null || fail "preview ray_sphere --branch hit"
 ls "$tmp/preview"/ray_sphere-*.png >/dev/null 2>&1 || fail "preview wrote no PNG"
 "$EPURE" generate --spec builtin:4d --out "$tmp/bad" --quiet 2>/dev/null && fail "an unknown builtin spec was read as a file"
+# the kind model's count: outside src/geometry and src/solve, each 3D kind is named in at most two
+# files under src/ (its own and the registry)
+for kind in ray_sphere ray_cube vectors_3d; do
+  n=$(grep -rl "$kind" "$EPURE_SOURCE_DIR/src" --exclude-dir=geometry --exclude-dir=solve | wc -l)
+  [ "$n" -le 2 ] || fail "$kind is named in $n files under src/ (at most 2)"
+done
 echo "space: ok"

@@ -43,7 +43,6 @@ const char* const kAxis[] = {"x", "y", "z"};
 
 method::FaceMask bit_of(Face f) { return method::FaceMask(1u << (f.axis + (f.sign > 0 ? 0 : 3))); }
 double coord(Point3 p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-double coord(Vec3 p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 Vec3 normal_of(Face f) {
   Vec3 n{};
   (f.axis == 0 ? n.x : f.axis == 1 ? n.y : n.z) = f.sign;

@@ -4,6 +4,7 @@
 // draws it in true size beside the 3D view, where it is exactly the 2D ray/circle figure.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "exercises/kind_method.h"
@@ -249,6 +250,12 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     if (key) pts.push_back(p3(rs.P));
     const render::Ball ball{p3(d.C), d.r};
     render::Panel panel = space::view_panel(cam, pts, 4, 1.5, ball);
+    // the sphere's outline: the circle of radius r around C's projection, inside the view
+    const render::P2 c = cam.project(p3(d.C));
+    panel.view.x_min = std::min(panel.view.x_min, std::floor(c.x - d.r - 0.5));
+    panel.view.x_max = std::max(panel.view.x_max, std::ceil(c.x + d.r + 0.5));
+    panel.view.y_min = std::min(panel.view.y_min, std::floor(c.y - d.r - 0.5));
+    panel.view.y_max = std::max(panel.view.y_max, std::ceil(c.y + d.r + 0.5));
     space::add_drop(panel, cam, p3(d.A));
     space::add_drop(panel, cam, p3(d.C));
     panel.add(render::Circle{cam.project(p3(d.C)), d.r, Role::data});

@@ -52,7 +52,9 @@ struct Vectors3dMethod {
 
   static constexpr double kPoints = 9;
 
-  static constexpr std::string_view kMistakes[] = {"cross_sign", "cross_middle_sign", "norm_not_rooted",
+  // the middle component's sign first: a whole cross_sign mistake gets that component wrong the
+  // same way, and is named on the first one (x) anyway
+  static constexpr std::string_view kMistakes[] = {"cross_middle_sign", "cross_sign", "norm_not_rooted",
                                                    "angle_radians"};
 
   // By hand: u·v; u∧v component by component (the middle one is z_u x_v − x_u z_v); the norms;
@@ -81,7 +83,7 @@ struct Vectors3dMethod {
   }
 
   static CoreAnswers core(const Data& d) {
-    const auto r = geo::compare_vectors(d.u, d.v);
+    const auto r = geo::compare_vectors_3d(d.u, d.v);
     CoreAnswers a;
     a.number("dot", r.dot).vec(kCross, r.cross).number("norm_u", r.norm_u).number("norm_v", r.norm_v);
     a.number("cos", r.cos).number("sin", r.sin).number("angle_deg", r.angle_deg);
@@ -148,7 +150,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
       if (!fits(x.v) || geo::norm(x.v) < min_norm) return std::nullopt;
       if (level == Difficulty::easy && !(whole_norm(x.u) && whole_norm(x.v))) return std::nullopt;
       if (level == Difficulty::standard && whole_norm(x.u) && whole_norm(x.v)) return std::nullopt;
-      const auto r = geo::compare_vectors(x.u, x.v);
+      const auto r = geo::compare_vectors_3d(x.u, x.v);
       if (branch_of(r) != branch) return std::nullopt;
       if (branch == "general") {
         if (r.angle_deg < min_angle || r.angle_deg > 180 - min_angle) return std::nullopt;
@@ -164,7 +166,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto r = geo::compare_vectors(d.u, d.v);
+    const auto r = geo::compare_vectors_3d(d.u, d.v);
     const std::string branch = branch_of(r);
 
     ExerciseInstance inst = begin_instance(d, ctx);
