@@ -44,6 +44,52 @@ print(len(a), "solutions equal to epure solve")
 PY
 xmllint --noout "$tmp/a"/sheets/*.svg "$tmp/a"/keys/*.svg || fail "xmllint"
 
+# grading: the key's own answers earn full marks, on the key.json and on keys rebuilt from the
+# spec; a sign error in the middle component of u∧v is named
+python3 - "$tmp/a/key.json" "$tmp/answers.csv" <<'PY' || fail "answers from the key"
+import json, sys, csv
+key = json.load(open(sys.argv[1]))
+def cell(e):
+    if isinstance(e, bool): return "yes" if e else "no"
+    if isinstance(e, list): return " ".join(e) if e else "none"
+    return str(e)
+rows, ids = [], []
+for s in key["sheets"][:6]:
+    for e in s["exercises"]:
+        for q in e["questions"]:
+            if q["id"] not in ids: ids.append(q["id"])
+for s in key["sheets"][:6]:
+    right = {q["id"]: cell(q["expected"]) for e in s["exercises"] for q in e["questions"]}
+    rows.append(dict(right, sheet=s["id"], student="right " + s["id"]))
+    wrong = dict(right, sheet=s["id"], student="middle " + s["id"])
+    y = float(right["1.cross.y"])
+    if y != 0:
+        wrong["1.cross.y"] = str(-y)
+        rows.append(wrong)
+with open(sys.argv[2], "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=["sheet", "student"] + ids)
+    w.writeheader()
+    for r in rows: w.writerow(r)
+PY
+for source in "--key $tmp/a/key.json" "--spec builtin:3d"; do
+  "$EPURE" grade $source --answers "$tmp/answers.csv" --json "$tmp/marks.json" -q 2>/dev/null || fail "grade $source"
+  python3 - "$tmp/marks.json" <<'PY' || fail "marks of the key's own answers ($source)"
+import json, sys
+subs = json.load(open(sys.argv[1]))["submissions"]
+assert subs, "no submission marked"
+middle = 0
+for s in subs:
+    if s["student"].startswith("right"):
+        assert abs(s["score"] - s["max"]) < 1e-9, (s["student"], s["score"], s["max"])
+    else:
+        middle += 1
+        named = [q["mistake"] for q in s["questions"] if q["verdict"] == "wrong"]
+        assert named == ["cross_middle_sign"], (s["student"], named)
+assert middle > 0
+print(len(subs), "submissions marked as expected")
+PY
+done
+
 # French and every difficulty, and no text over text on any page
 for d in easy standard hard; do
   for lang in en fr; do
