@@ -363,6 +363,7 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
     add_cube(panel, cam, box);
     render::add_segment(panel, cam, p3(d.A), p3(end), Role::data, box);
     panel.add(render::Arrow{cam.project(p3(d.A)), cam.project(p3(d.A + uh)), Role::construction});
+    panel.add(render::Label{"û", cam.project(p3(d.A + uh)), render::Side::auto_, Role::construction});
     panel.add(render::PointMark{cam.project(p3(d.A)), Role::data, render::Label{"A", cam.project(p3(d.A))}});
     return panel;
   }

@@ -264,6 +264,7 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     if (key && rs.t_proj < 0) render::add_segment(panel, cam, p3(rs.P), p3(d.A), Role::construction, ball);
     render::add_segment(panel, cam, p3(d.A), p3(end), Role::data, ball);
     panel.add(render::Arrow{cam.project(p3(d.A)), cam.project(p3(d.A + uh)), Role::construction});
+    panel.add(render::Label{"û", cam.project(p3(d.A + uh)), render::Side::auto_, Role::construction});
     panel.add(render::PointMark{cam.project(p3(d.C)), Role::data, render::Label{"C", cam.project(p3(d.C))}});
     panel.add(render::PointMark{cam.project(p3(d.A)), Role::data, render::Label{"A", cam.project(p3(d.A))}});
     return panel;
