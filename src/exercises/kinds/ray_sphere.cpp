@@ -35,6 +35,9 @@ constexpr Names3 kAC = {"AC.x", "AC.y", "AC.z"}, kUh = {"u_hat.x", "u_hat.y", "u
                  kP = {"P.x", "P.y", "P.z"}, kI = {"I.x", "I.y", "I.z"}, kN = {"N.x", "N.y", "N.z"};
 constexpr std::string_view kReasons[] = {"behind", "miss"};
 
+// The direction (below the horizontal, in radians) of the radius drawn in the 3D view.
+constexpr double kRadiusAngle = 0.6;
+
 geo::RaySphere solve_core(const Data& d) { return geo::intersect(geo::Ray3::unit(d.A, d.u), geo::Sphere{d.C, d.r}); }
 
 std::string branch_of(const geo::RaySphere& rs) {
@@ -259,6 +262,10 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     space::add_drop(panel, cam, p3(d.A));
     space::add_drop(panel, cam, p3(d.C));
     panel.add(render::Circle{cam.project(p3(d.C)), d.r, Role::data});
+    // a radius parallel to the picture, hence in true size: the figure's scale
+    const render::P2 rim{c.x + d.r * std::cos(-kRadiusAngle), c.y + d.r * std::sin(-kRadiusAngle)};
+    panel.add(render::Segment{c, rim, Role::construction, false});
+    panel.add(render::Label{"r", {(c.x + rim.x) / 2, (c.y + rim.y) / 2}, render::Side::auto_, Role::construction});
     if (key) render::add_segment(panel, cam, p3(rs.P), p3(d.C), Role::construction, ball);
     // behind: the ray's line back to P, which lies before A
     if (key && rs.t_proj < 0) render::add_segment(panel, cam, p3(rs.P), p3(d.A), Role::construction, ball);
