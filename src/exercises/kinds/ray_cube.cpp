@@ -218,12 +218,20 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
 
     const Data d = draw_until(200000, "ray_cube (branch, edge and face margins, t range)", [&]() -> std::optional<Data> {
       Data x;
+      // widened (a large set has used up the usual ranges): A further out, finer steps inside,
+      // longer directions
+      const int w = ctx.widening;
       if (inside && !hard) {
-        x.A = {double(rng.integer(-1, 1)) / 2, double(rng.integer(-1, 1)) / 2, double(rng.integer(-1, 1)) / 2};
+        // a grid of 1/(2w + 2) strictly inside
+        const std::int64_t k = 2 * w + 1;
+        auto c = [&] { return double(rng.integer(-k, k)) / double(k + 1); };
+        x.A = {c(), c(), c()};
       } else if (inside) {
         x.A = {grid_value(rng, -0.9, 0.9, level), grid_value(rng, -0.9, 0.9, level), grid_value(rng, -0.9, 0.9, level)};
       } else {
-        x.A = {grid_value(rng, -4, 4, level), grid_value(rng, -4, 4, level), grid_value(rng, -4, 4, level)};
+        const double reach = 4 + 2 * w;
+        x.A = {grid_value(rng, -reach, reach, level), grid_value(rng, -reach, reach, level),
+               grid_value(rng, -reach, reach, level)};
       }
       if (level == Difficulty::easy) {
         Vec3 e = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
@@ -233,7 +241,7 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
           if (rng.chance(0.5)) k = -k;
         x.u = {c[0], c[1], c[2]};
       } else {
-        const double m = hard ? 3 : 4;
+        const double m = (hard ? 3 : 4) + 2 * w;
         x.u = {grid_value(rng, -m, m, level), grid_value(rng, -m, m, level), grid_value(rng, -m, m, level)};
         if (geo::norm(x.u) < 1) return std::nullopt;
       }

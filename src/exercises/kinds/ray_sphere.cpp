@@ -136,13 +136,15 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     if (!(r_lo > 0 && r_lo <= r_hi && r_hi <= 4))
       throw std::runtime_error("ray_sphere: need 0 < min_radius ≤ max_radius ≤ 4");
     const double tm_clear = hard ? tm / 4 : tm, bm_clear = hard ? bm / 3 : bm;
+    // widened (a large set has used up the usual ranges): A and C further out
+    const double w = 2 * ctx.widening;
 
     auto accept = [&](const Data& x) {
       const auto rs = solve_core(x);
       if (branch_of(rs) != ctx.branch) return false;
       const double ac = geo::norm(rs.AC) / x.r;
       const double dr = std::sqrt(rs.d2) / x.r;
-      if (std::abs(rs.P.x) > 7 || std::abs(rs.P.y) > 7 || rs.P.z < -3 || rs.P.z > 8) return false;
+      if (std::abs(rs.P.x) > 7 + w || std::abs(rs.P.y) > 7 + w || rs.P.z < -3 - w || rs.P.z > 8 + w) return false;
       if (dr < min_offset) return false;
       if (rs.inside) {
         if (ac > 1 - bm_clear || rs.hit->t < t_min) return false;
@@ -167,8 +169,8 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
                               [&]() -> std::optional<Data> {
       Data x;
       x.r = grid_value(rng, r_lo, r_hi, level);
-      x.C = {grid_value(rng, -3, 3, level), grid_value(rng, -3, 3, level), grid_value(rng, 0, 3, level)};
-      x.A = {grid_value(rng, -6, 6, level), grid_value(rng, -6, 6, level), grid_value(rng, -1, 6, level)};
+      x.C = {grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, 0, 3 + w, level)};
+      x.A = {grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -1 - w, 6 + w, level)};
       if (level == Difficulty::easy) {
         Vec3 e = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
         double c[3] = {e.x, e.y, e.z};

@@ -118,7 +118,8 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     const double min_angle = constraint(ctx, *this, "min_angle_deg") / (hard ? 2 : 1);
     const double right_margin = constraint(ctx, *this, "right_margin_deg") / (hard ? 2 : 1);
     const double min_norm = constraint(ctx, *this, "min_norm");
-    const double max_c = constraint(ctx, *this, "max_component");
+    // widened (a large set has used up the usual ranges): longer components
+    const double max_c = constraint(ctx, *this, "max_component") + 2 * ctx.widening;
     const int per_unit = hard ? 10 : 1;
     auto grid = [&]() { return grid_value(rng, -max_c, max_c, level); };
     auto fits = [&](Vec3 w) { return std::abs(w.x) <= max_c && std::abs(w.y) <= max_c && std::abs(w.z) <= max_c; };
