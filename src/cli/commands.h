@@ -35,5 +35,7 @@ void add_preview_command(CLI::App& app, int& status);
 void add_kinds_command(CLI::App& app, int& status);
 // Registers `epure grade`.
 void add_grade_command(CLI::App& app, int& status);
+// Registers `epure export moodle|qti`.
+void add_export_command(CLI::App& app, int& status);
 
 }  // namespace epure::cli

@@ -66,6 +66,8 @@ int run_generate(const GenerateCliOptions& o) {
   WorksheetSpec spec;
   if (o.spec_file.empty()) {
     spec = builtin_spec();
+  } else if (auto builtin = builtin_spec(o.spec_file)) {
+    spec = *std::move(builtin);
   } else {
     std::ifstream in(o.spec_file, std::ios::binary);
     if (!in) {
@@ -111,8 +113,8 @@ void add_generate_command(CLI::App& app, int& status) {
   cmd->add_option("--seed,-s", o->seed, "Seed of the set (0 to 2^35-1); same spec + seed = same files")
       ->check(CLI::Range(std::uint64_t{0}, (std::uint64_t{1} << 35) - 1))
       ->capture_default_str();
-  cmd->add_option("--spec", o->spec_file, "Worksheet spec (TOML); default: the built-in course worksheet")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("--spec", o->spec_file, "Worksheet spec (TOML), or builtin (the course) or builtin:3d (the course in space); default: builtin")
+      ->check(CLI::ExistingFile | CLI::IsMember({"builtin", "builtin:3d"}));
   cmd->add_option("--lang", o->language, "Language of the texts (overrides the spec)")
       ->check(CLI::IsMember({"en", "fr"}));
   cmd->add_option("--difficulty", o->difficulty, "Difficulty of every exercise (overrides the spec)")

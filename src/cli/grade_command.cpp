@@ -121,7 +121,7 @@ int run_grade(const GradeCliOptions& o) {
   const SourceInfo dialect = read_answers(o.answers, counter, delimiter);
   if (!key) {
     const WorksheetSpec spec =
-        o.spec_file == "builtin" ? builtin_spec() : parse_spec(read_text(o.spec_file), o.spec_file);
+        builtin_spec(o.spec_file) ? *builtin_spec(o.spec_file) : parse_spec(read_text(o.spec_file), o.spec_file);
     key = key_from_spec(spec, counter.ids, EPURE_VERSION);
     if (key->sheets().empty()) {
       fmt::print(stderr, "epure grade: {}: no sheet id in the answers could be rebuilt from {}\n", o.answers, o.spec_file);
@@ -189,7 +189,7 @@ void add_grade_command(CLI::App& app, int& status) {
       "grade", "Mark students' answers (CSV or JSON) against the key: reports, statistics, feedback sheets");
   auto* key = cmd->add_option("--key,-k", o->key_file, "The set's key.json (from epure generate)")->check(CLI::ExistingFile);
   auto* spec = cmd->add_option("--spec", o->spec_file,
-                               "Instead of --key: the set's spec (TOML, or 'builtin'); keys rebuilt from the sheet ids");
+                               "Instead of --key: the set's spec (TOML, or 'builtin' or 'builtin:3d'); keys rebuilt from the sheet ids");
   key->excludes(spec);
   cmd->add_option("--answers,-a", o->answers,
                   "Answers: CSV with a header row (a 'sheet' column, optional 'student', one column per question id) "

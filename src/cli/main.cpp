@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   int status = 0;
   epure::cli::add_generate_command(app, status);
   epure::cli::add_grade_command(app, status);
+  epure::cli::add_export_command(app, status);
   epure::cli::add_kinds_command(app, status);
   epure::cli::add_preview_command(app, status);
   epure::cli::add_solve_command(app, status);

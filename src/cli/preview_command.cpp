@@ -44,11 +44,19 @@ int run_preview(const PreviewOptions& o) {
     return 2;
   }
   // The course's own settings for this kind when it has them (points, constraints), else the kind's.
+  // (the built-in spec that has the kind: the course, or the course in space)
   WorksheetSpec spec = builtin_spec();
   ExerciseSpec exercise{};
   exercise.kind = o.kind;
-  for (const auto& e : spec.exercises)
-    if (e.kind == o.kind) exercise = e;
+  for (const auto& candidate : builtin_specs()) {
+    bool found = false;
+    for (const auto& e : candidate.exercises)
+      if (e.kind == o.kind) exercise = e, found = true;
+    if (found) {
+      spec = candidate;
+      break;
+    }
+  }
   if (!o.branch.empty()) {
     bool known = false;
     std::string names;

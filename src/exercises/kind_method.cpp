@@ -67,6 +67,24 @@ void SchemaReader::operator()(std::string_view field, geo::Vec2& v) {
   const auto [x, y] = pair(field);
   v = {x, y};
 }
+std::array<double, 3> SchemaReader::triple(std::string_view field) {
+  auto it = j_.find(field);
+  if (it == j_.end() || !it->is_array() || it->size() != 3 || !(*it)[0].is_number() || !(*it)[1].is_number() ||
+      !(*it)[2].is_number())
+    throw std::runtime_error(fmt::format("field '{}': expected [x, y, z]", field));
+  const std::array<double, 3> v = {(*it)[0].get<double>(), (*it)[1].get<double>(), (*it)[2].get<double>()};
+  for (double x : v)
+    if (!std::isfinite(x)) throw std::runtime_error(fmt::format("field '{}': not finite numbers", field));
+  return v;
+}
+void SchemaReader::operator()(std::string_view field, geo::Point3& p) {
+  const auto v = triple(field);
+  p = {v[0], v[1], v[2]};
+}
+void SchemaReader::operator()(std::string_view field, geo::Vec3& p) {
+  const auto v = triple(field);
+  p = {v[0], v[1], v[2]};
+}
 void SchemaReader::operator()(std::string_view field, Pair& p) {
   const auto [a, b] = pair(field);
   p = {a, b};

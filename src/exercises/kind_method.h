@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <any>
+#include <array>
 #include <span>
 #include <string>
 #include <string_view>
@@ -40,6 +41,8 @@ class SchemaWriter {
   void operator()(std::string_view field, geo::Point2 p) { w_.point(field, p); }
   void operator()(std::string_view field, geo::Vec2 v) { w_.vec(field, v); }
   void operator()(std::string_view field, Pair p) { w_.pair(field, p.a, p.b); }
+  void operator()(std::string_view field, geo::Point3 p) { w_.triple(field, p.x, p.y, p.z); }
+  void operator()(std::string_view field, geo::Vec3 v) { w_.triple(field, v.x, v.y, v.z); }
   std::string finish() { return w_.finish(); }
 
  private:
@@ -55,9 +58,12 @@ class SchemaReader {
   void operator()(std::string_view field, geo::Point2& p);
   void operator()(std::string_view field, geo::Vec2& v);
   void operator()(std::string_view field, Pair& p);
+  void operator()(std::string_view field, geo::Point3& p);
+  void operator()(std::string_view field, geo::Vec3& v);
 
  private:
   std::pair<double, double> pair(std::string_view field);
+  std::array<double, 3> triple(std::string_view field);
   const nlohmann::json& j_;
 };
 
@@ -68,6 +74,11 @@ class CoreAnswers {
   CoreAnswers& number(std::string_view field, double x);
   CoreAnswers& point(std::string_view field, geo::Point2 p);
   CoreAnswers& vec(std::string_view field, geo::Vec2 v) { return point(field, {v.x, v.y}); }
+  // a point in space: three numbers under the given names ("I.x", "I.y", "I.z")
+  CoreAnswers& point(const method::Names3& fields, geo::Point3 p) {
+    return number(fields[0], p.x).number(fields[1], p.y).number(fields[2], p.z);
+  }
+  CoreAnswers& vec(const method::Names3& fields, geo::Vec3 v) { return point(fields, {v.x, v.y, v.z}); }
   CoreAnswers& boolean(std::string_view field, bool b);
   CoreAnswers& choice(std::string_view field, std::string_view word);
   CoreAnswers& faces(std::string_view field, method::FaceMask bits);
@@ -130,8 +141,14 @@ class MethodKind : public ExerciseKind {
     return run.answers();
   }
 
+  // The contract's kind of the instance: the kind's own name, unless it says otherwise (the
+  // preamble in space is the contract's `vectors` with three components).
+  static constexpr std::string_view solve_kind() {
+    if constexpr (requires { Kind::kSolveKind; }) return Kind::kSolveKind;
+    else return Kind::kName;
+  }
   static std::string write(const Data& d) {
-    SchemaWriter w(Kind::kName);
+    SchemaWriter w(solve_kind());
     Kind::schema(w, d);
     return w.finish();
   }

@@ -31,6 +31,10 @@ InstanceWriter& InstanceWriter::pair(std::string_view field, double a, double b)
   text_ += fmt::format(",\"{}\":[{},{}]", field, number_text(a), number_text(b));
   return *this;
 }
+InstanceWriter& InstanceWriter::triple(std::string_view field, double a, double b, double c) {
+  text_ += fmt::format(",\"{}\":[{},{},{}]", field, number_text(a), number_text(b), number_text(c));
+  return *this;
+}
 InstanceWriter& InstanceWriter::point(std::string_view field, geo::Point2 p) { return pair(field, p.x, p.y); }
 InstanceWriter& InstanceWriter::vec(std::string_view field, geo::Vec2 v) { return pair(field, v.x, v.y); }
 std::string InstanceWriter::finish() { return text_ + "}"; }

@@ -26,6 +26,7 @@ class InstanceWriter {
   InstanceWriter& point(std::string_view field, geo::Point2 p);
   InstanceWriter& vec(std::string_view field, geo::Vec2 v);
   InstanceWriter& pair(std::string_view field, double a, double b);
+  InstanceWriter& triple(std::string_view field, double a, double b, double c);
   std::string finish();
 
  private:

@@ -249,6 +249,28 @@ template <class T> T norm2(const V2<T>& a) { return dot(a, a); }
 template <class T> T norm(const V2<T>& a) { return sqrt(dot(a, a)); }
 template <class T> geo::Point2 value(const V2<T>& a) { return {value(a.x), value(a.y)}; }
 
+// In space (the course's "dimension 3"): the same operations, and the 3D cross product.
+template <class T>
+struct V3 {
+  T x, y, z;
+};
+template <class T> V3<T> operator+(const V3<T>& a, const V3<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class T> V3<T> operator-(const V3<T>& a, const V3<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T> V3<T> operator-(const V3<T>& a) { return {-a.x, -a.y, -a.z}; }
+template <class T> V3<T> operator*(const T& k, const V3<T>& a) { return {k * a.x, k * a.y, k * a.z}; }
+template <class T> V3<T> operator/(const V3<T>& a, const T& k) { return {a.x / k, a.y / k, a.z / k}; }
+template <class T> T dot(const V3<T>& a, const V3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class T> V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class T> T norm2(const V3<T>& a) { return dot(a, a); }
+template <class T> T norm(const V3<T>& a) { return sqrt(dot(a, a)); }
+template <class T> geo::Point3 value(const V3<T>& a) { return {value(a.x), value(a.y), value(a.z)}; }
+
+// The names of a 3D point's coordinates, as answers or steps ("I.x", "I.y", "I.z"): a point in
+// space is asked as three numbers. Static storage: recorded steps keep views of them.
+using Names3 = std::array<std::string_view, 3>;
+
 // ---------------------------------------------------------------------------------------------
 // Decisions, words and face sets, with the answers they were read from
 
@@ -364,6 +386,8 @@ class Run {
   }
   Vec in(geo::Point2 p) const { return {in(p.x), in(p.y)}; }
   Vec in(geo::Vec2 v) const { return {in(v.x), in(v.y)}; }
+  V3<Num> in(geo::Point3 p) const { return {in(p.x), in(p.y), in(p.z)}; }
+  V3<Num> in(geo::Vec3 v) const { return {in(v.x), in(v.y), in(v.z)}; }
 
   // ---- steps: an intermediate the student writes down rounded (the tolerances follow its
   // rounding), or one the key shows as it is
@@ -377,6 +401,8 @@ class Run {
     note(id, p);
     return p;
   }
+  V3<Num> round(const Names3& ids, V3<Num> p) { return {round(ids[0], p.x), round(ids[1], p.y), round(ids[2], p.z)}; }
+  V3<Num> note(const Names3& ids, V3<Num> p) { return {note(ids[0], p.x), note(ids[1], p.y), note(ids[2], p.z)}; }
   Num note(std::string_view id, Num x) {
     steps_.push_back(Recorded<Num>(id, AnswerType::number, x));
     return x;
@@ -406,6 +432,10 @@ class Run {
       }
     }
     return p;
+  }
+  // a point in space: three numeric answers
+  V3<Num> point(const Names3& fields, V3<Num> p) {
+    return {number(fields[0], p.x), number(fields[1], p.y), number(fields[2], p.z)};
   }
   Cond boolean(std::string_view field, Cond c) {
     Recorded<Num> r(field, AnswerType::boolean);
@@ -463,6 +493,9 @@ class Run {
     return road;
   }
   Vec either(Vec road, Vec exact_road) { return {either(road.x, exact_road.x), either(road.y, exact_road.y)}; }
+  V3<Num> either(V3<Num> road, V3<Num> exact_road) {
+    return {either(road.x, exact_road.x), either(road.y, exact_road.y), either(road.z, exact_road.z)};
+  }
 
   // ---- what was recorded
   const std::vector<Recorded<Num>>& answers() const { return answers_; }

@@ -318,4 +318,15 @@ WorksheetSpec builtin_spec() {
   return spec;
 }
 
+std::optional<WorksheetSpec> builtin_spec(std::string_view name) {
+  if (name == "builtin") return builtin_spec();
+  if (name == "builtin:3d") {
+    static const WorksheetSpec spec = parse_spec(*embedded_file("course-3d.toml"), "templates/course-3d.toml");
+    return spec;
+  }
+  return std::nullopt;
+}
+
+std::vector<WorksheetSpec> builtin_specs() { return {builtin_spec(), *builtin_spec("builtin:3d")}; }
+
 }  // namespace epure

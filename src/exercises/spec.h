@@ -85,5 +85,10 @@ int exercise_number(const WorksheetSpec& spec, std::size_t slot);
 WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_name);
 // The course's worksheet, built in (templates/course.toml).
 WorksheetSpec builtin_spec();
+// A built-in spec by its command-line name: "builtin" (the course, templates/course.toml) or
+// "builtin:3d" (the course in space, templates/course-3d.toml); nothing for another name.
+std::optional<WorksheetSpec> builtin_spec(std::string_view name);
+// The built-in specs, the course's first.
+std::vector<WorksheetSpec> builtin_specs();
 
 }  // namespace epure

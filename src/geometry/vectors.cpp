@@ -1,6 +1,7 @@
 #include "geometry/vectors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "geometry/degenerate.h"
@@ -33,6 +34,26 @@ VectorPair compare_vectors(Vec2 u, Vec2 v) {
   r.cos = std::clamp(dot(us, vs) / lengths, -1.0, 1.0);
   r.sin = std::clamp(cross(us, vs) / lengths, -1.0, 1.0);
   r.angle_deg = angle_degrees(r.cos, r.sin);
+  return r;
+}
+
+VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v) {
+  const double norm_u = norm(u), norm_v = norm(v);
+  if (!(norm_u > 0)) throw DegenerateFigure("u", "zero vector has no direction");
+  if (!(norm_v > 0)) throw DegenerateFigure("v", "zero vector has no direction");
+  VectorPair3 r{};
+  r.dot = dot(u, v);
+  r.cross = cross(u, v);
+  r.norm_u = norm_u;
+  r.norm_v = norm_v;
+  // as in the plane: from the data's own products, rescaled by powers of two
+  const Vec3 us = rescaled(u), vs = rescaled(v);
+  const double lengths = plain_norm(us) * plain_norm(vs);
+  r.cos = std::clamp(dot(us, vs) / lengths, -1.0, 1.0);
+  r.sin = std::clamp(norm(cross(us, vs)) / lengths, 0.0, 1.0);
+  r.angle_deg = std::atan2(r.sin, r.cos) * (180.0 / std::numbers::pi);
+  r.collinear = r.sin <= kCollinearSin;
+  r.orthogonal = std::abs(r.cos) <= kCollinearSin;
   return r;
 }
 

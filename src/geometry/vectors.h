@@ -15,6 +15,25 @@ struct VectorPair {
 // Throws DegenerateFigure("u" or "v") for a zero vector: it has no direction, so no angle.
 VectorPair compare_vectors(Vec2 u, Vec2 v);
 
+// The preamble in space (ℝ³): u∧v is a vector, and the angle is unsigned (no orientation of a
+// plane is given), in [0°, 180°].
+struct VectorPair3 {
+  double dot;
+  Vec3 cross;        // u∧v = (y_u z_v − z_u y_v, z_u x_v − x_u z_v, x_u y_v − y_u x_v)
+  double norm_u, norm_v;
+  double cos, sin;   // u·v = ‖u‖‖v‖cos θ, ‖u∧v‖ = ‖u‖‖v‖sin θ (sin ≥ 0)
+  double angle_deg;  // θ in [0, 180]
+  bool collinear;    // ‖u∧v‖ ≤ kCollinearSin·‖u‖‖v‖
+  bool orthogonal;   // |u·v| ≤ kCollinearSin·‖u‖‖v‖
+};
+
+// The products of data on a decimal grid are exact but for the rounding of the decimals in binary
+// (about 1e-16 relative): a sine or cosine below this is zero.
+inline constexpr double kCollinearSin = 1e-12;
+
+// Throws DegenerateFigure("u" or "v") for a zero vector.
+VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v);
+
 // atan2(sin, cos) in degrees, folded into (−180, 180] (atan2(−0, −1) is −180: we say 180).
 double angle_degrees(double cos, double sin);
 

@@ -30,7 +30,7 @@ KeyDiagrams::KeyDiagrams(const AnswerKey& key, std::string language) {
   }
 }
 
-std::optional<render::Scene> KeyDiagrams::try_set(WorksheetSet& set, const SheetKey& sheet, std::size_t e) {
+std::optional<ExerciseInstance> KeyDiagrams::try_set(WorksheetSet& set, const SheetKey& sheet, std::size_t e) {
   const ExerciseKey& ex = sheet.exercises[e];
   const int slot = ex.n - 1;
   if (slot < 0 || static_cast<std::size_t>(slot) >= set.spec().exercises.size()) return std::nullopt;
@@ -43,14 +43,20 @@ std::optional<render::Scene> KeyDiagrams::try_set(WorksheetSet& set, const Sheet
       return std::nullopt;
     }
     if (nlohmann::json::parse(inst.instance) != ex.instance) continue;
-    for (auto& block : inst.key.blocks)
-      if (auto* figure = std::get_if<render::Figure>(&block)) return std::move(figure->scene);
-    return std::nullopt;
+    return inst;
   }
   return std::nullopt;
 }
 
 std::optional<render::Scene> KeyDiagrams::scene(const SheetKey& sheet, std::size_t e) {
+  auto inst = instance(sheet, e);
+  if (!inst) return std::nullopt;
+  for (auto& block : inst->key.blocks)
+    if (auto* figure = std::get_if<render::Figure>(&block)) return std::move(figure->scene);
+  return std::nullopt;
+}
+
+std::optional<ExerciseInstance> KeyDiagrams::instance(const SheetKey& sheet, std::size_t e) {
   if (!spec_) return std::nullopt;
   auto& sets = sets_[sheet.sheet.seed];
   if (sets.empty()) {

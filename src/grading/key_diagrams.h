@@ -27,9 +27,13 @@ class KeyDiagrams {
 
   // The key's figure of exercise `e` of `sheet`, or nothing when it cannot be redrawn.
   std::optional<render::Scene> scene(const SheetKey& sheet, std::size_t e);
+  // The whole exercise drawn again (the student's section, the key's, its questions), in this
+  // object's language, or nothing when it cannot be redrawn (platform exports read the sheet's
+  // statement and diagrams from it).
+  std::optional<ExerciseInstance> instance(const SheetKey& sheet, std::size_t e);
 
  private:
-  std::optional<render::Scene> try_set(WorksheetSet& set, const SheetKey& sheet, std::size_t e);
+  std::optional<ExerciseInstance> try_set(WorksheetSet& set, const SheetKey& sheet, std::size_t e);
 
   std::optional<WorksheetSpec> spec_;
   std::string language_;

@@ -395,6 +395,14 @@ class Result {
 };
 
 void solve_vectors(const Fields& f, Result& r) {
+  // in space when u has three components: u∧v is then a vector and the angle unsigned
+  if (const Value& u = f.get("u"); u.type == Type::array && u.size == 3) {
+    auto w = geo::compare_vectors_3d(f.vec3("u"), f.vec3("v"));
+    r.number("dot", w.dot).point("cross", w.cross).number("norm_u", w.norm_u).number("norm_v", w.norm_v);
+    r.number("cos", w.cos).number("sin", w.sin).number("angle_deg", w.angle_deg);
+    r.boolean("collinear", w.collinear).boolean("orthogonal", w.orthogonal);
+    return;
+  }
   auto v = geo::compare_vectors(f.vec2("u"), f.vec2("v"));
   r.number("dot", v.dot).number("cross", v.cross).number("norm_u", v.norm_u).number("norm_v", v.norm_v);
   r.number("cos", v.cos).number("sin", v.sin).number("angle_deg", v.angle_deg);

@@ -8,10 +8,11 @@ set -u
 golden=$EPURE_SOURCE_DIR/tests/golden
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 status=0
-for case in "en 1" "fr 2"; do
+# (and the course in space, builtin:3d: its épures)
+for case in "en 1" "fr 2" "en 3 builtin:3d"; do
   set -- $case
-  lang=$1 seed=$2 name=seed$2-$1
-  "$EPURE" generate --format svg --sheets 2 --seed "$seed" --lang "$lang" --jobs 1 --quiet --out "$tmp/$name" || { echo "generate failed"; exit 1; }
+  lang=$1 seed=$2 spec=${3:-} name=seed$2-$1${3:+-3d}
+  "$EPURE" generate --format svg --sheets 2 --seed "$seed" --lang "$lang" ${spec:+--spec "$spec"} --jobs 1 --quiet --out "$tmp/$name" || { echo "generate failed"; exit 1; }
   rm -f "$tmp/$name/index.html"
   if [ "${EPURE_UPDATE_GOLDEN:-0}" = 1 ]; then
     rm -rf "$golden/$name"; mkdir -p "$golden"; cp -r "$tmp/$name" "$golden/$name"

@@ -33,6 +33,29 @@ std::string fixed_part(const std::string& language, const std::string& code) {
   return epure::grading::plain_text(text.substr(0, text.find("${")));
 }
 
+// A kind in space, whose points are asked as three numbers (no point groups) and whose kind is
+// not the contract's ("vectors_3d" is the contract's vectors with three components).
+epure::grading::ExerciseKey exercise_in_space(const std::string& kind, const std::string& instance,
+                                              const std::vector<std::string>& fields) {
+  const nlohmann::json inst = nlohmann::json::parse(instance);
+  const nlohmann::json sol = nlohmann::json::parse(epure::kinds::solve_instance(instance));
+  nlohmann::json questions = nlohmann::json::array();
+  for (const auto& f : fields) {
+    const auto dot = f.find('.');
+    const nlohmann::json expected =
+        dot == std::string::npos ? sol.at(f) : sol.at(f.substr(0, dot)).at(f[dot + 1] - 'x');
+    nlohmann::json q = {{"id", "1." + f}, {"expected", expected}, {"points", 1}};
+    if (expected.is_number()) q["tolerance"] = {{"rule", "isclose"}, {"rel", 0.001}, {"abs", 0.02}, {"why", "test"}};
+    else q["tolerance"] = {{"rule", "exact"}, {"why", "test"}};
+    questions.push_back(q);
+  }
+  const nlohmann::json sheet = {
+      {"id", "1000-0001-000X"},
+      {"index", 0},
+      {"exercises", {{{"n", 1}, {"kind", kind}, {"branch", ""}, {"instance", inst}, {"solution", sol}, {"questions", questions}}}}};
+  return epure::grading::read_sheet_json(sheet, "test").exercises.at(0);
+}
+
 std::vector<Case> cases() {
   const char* projection = R"({"kind":"projection","A":[1,1],"B":[5,4],"C":[2,6]})";
   const char* circle = R"({"kind":"ray_circle","A":[0,0],"u":[2,0],"C":[5,1],"r":2})";
@@ -70,6 +93,12 @@ std::vector<Case> cases() {
       {"faces_inner_half_planes", exercise(R"({"kind":"ray_square","A":[3,0.5],"u":[-1,0]})", {"faces"}), {{"faces", "-x +y -y"}}, "faces"},
       {"cross_sign", exercise(R"({"kind":"vectors","u":[3,4],"v":[1,2]})", vector_fields), {{"cross", "-2"}}, "cross"},
       {"norm_not_rooted", exercise(R"({"kind":"vectors","u":[3,4],"v":[1,2]})", vector_fields), {{"norm_v", "5"}}, "norm_v"},
+      // u∧v = (2, −7, 4) for u = (1, 2, 3), v = (−2, 0, 1); x_u·z_v − z_u·x_v = 7
+      {"cross_middle_sign",
+       exercise_in_space("vectors_3d", R"({"kind":"vectors","u":[1,2,3],"v":[-2,0,1]})",
+                         {"dot", "cross.x", "cross.y", "cross.z", "norm_u", "norm_v", "cos", "sin", "angle_deg"}),
+       {{"cross.x", "2"}, {"cross.y", "7"}, {"cross.z", "4"}},
+       "cross.y"},
       {"angle_unsigned", exercise(R"({"kind":"vectors","u":[1,2],"v":[3,4]})", vector_fields), {{"angle_deg", "10.30"}}, "angle_deg"},
       {"angle_radians", exercise(R"({"kind":"vectors","u":[1,2],"v":[3,4]})", vector_fields), {{"angle_deg", "-0.18"}}, "angle_deg"},
       {"direction_not_unit", exercise(circle, circle_fields), {{"t_proj", "10"}}, "t_proj"},

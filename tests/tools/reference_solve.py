@@ -131,7 +131,27 @@ def outs(v):
 
 # ---- the kinds -------------------------------------------------------------------------------
 
+def solve_vectors_3d(f):
+    # in space: u∧v a vector, sin = ‖u∧v‖/(‖u‖‖v‖) ≥ 0, the unsigned angle
+    u = nonzero(vector(f, "u", 3), "u")
+    v = nonzero(vector(f, "v", 3), "v")
+    d, w = dot(u, v), cross3(u, v)
+    nu, nv, nw = sqrt(dot(u, u)), sqrt(dot(v, v)), sqrt(dot(w, w))
+    cos, sin = dec(d) / (nu * nv), nw / (nu * nv)
+    if all(c == 0 for c in w):
+        angle = 0.0 if d > 0 else 180.0
+    else:
+        angle = math.degrees(math.atan2(out(sin), out(cos)))
+    return {"dot": out(d), "cross": outs(w), "norm_u": out(nu), "norm_v": out(nv), "cos": out(cos),
+            "sin": out(sin), "angle_deg": angle,
+            # the contract's decisions: sin, resp. |cos|, at most 1e-12 (decimal data are exact
+            # only up to their rounding in binary: 0.3·(0.1, 0.2, 0.3) is collinear)
+            "collinear": sin <= Decimal("1e-12"), "orthogonal": abs(cos) <= Decimal("1e-12")}
+
+
 def solve_vectors(f):
+    if isinstance(f.get("u"), list) and len(f["u"]) == 3:
+        return solve_vectors_3d(f)
     u = nonzero(vector(f, "u", 2), "u")
     v = nonzero(vector(f, "v", 2), "v")
     d, c = dot(u, v), cross2(u, v)

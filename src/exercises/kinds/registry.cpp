@@ -12,6 +12,9 @@ const ExerciseKind& ray_circle_kind();
 const ExerciseKind& ray_square_kind();
 const ExerciseKind& ray_ellipse_kind();
 const ExerciseKind& ray_rectangle_kind();
+const ExerciseKind& vectors_3d_kind();
+const ExerciseKind& ray_sphere_kind();
+const ExerciseKind& ray_cube_kind();
 
 }  // namespace epure::kinds
 
@@ -22,6 +25,8 @@ std::vector<const ExerciseKind*> all_kinds() {
       &kinds::vectors_kind(),    &kinds::projection_kind(),  &kinds::segments_kind(),
       &kinds::ray_circle_kind(), &kinds::ray_square_kind(),  &kinds::ray_ellipse_kind(),
       &kinds::ray_rectangle_kind(),
+      // in space
+      &kinds::vectors_3d_kind(), &kinds::ray_sphere_kind(), &kinds::ray_cube_kind(),
   };
 }
 

@@ -1,0 +1,403 @@
+#include "export/export_set.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include "exercises/sheet_id.h"
+#include "grading/answer_key.h"
+#include "grading/feedback_text.h"
+#include "grading/key_diagrams.h"
+#include "grading/review.h"
+#include "render/pdf_document.h"
+#include "render/svg_scene.h"
+#include "render/text.h"
+
+namespace epure::exporting {
+
+namespace {
+
+using grading::AnswerType;
+using grading::QuestionKey;
+using method::Recorded;
+using method::Traced;
+
+// A diagram's width on the page (points) and on screen (CSS pixels at 96 per inch), and the
+// PNG's resolution: twice the screen's, sharp on a high-density display.
+constexpr double kFigureWidthPt = 360;
+constexpr double kFigureWidthPx = kFigureWidthPt * 96.0 / 72.0;
+constexpr double kPngDpi = 144;
+
+// Equal but for the last bits (as grading decides that a mistake leaves an answer unchanged).
+bool unchanged(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); }
+
+const Recorded<Traced>* find_answer(const std::vector<Recorded<Traced>>& run, std::string_view id) {
+  for (const auto& a : run)
+    if (a.id == id) return &a;
+  return nullptr;
+}
+
+// The value a run gives for a question of the key: a number, or one coordinate of a point.
+std::optional<double> number_in(const std::vector<Recorded<Traced>>& run, const QuestionKey& q) {
+  if (!q.point.empty()) {
+    const std::string group = q.field.substr(0, q.field.size() - 2);
+    const auto* a = find_answer(run, group);
+    if (!a || a->type != method::AnswerType::point) return std::nullopt;
+    return q.field.back() == 'x' ? a->x.v : a->y.v;
+  }
+  const auto* a = find_answer(run, q.field);
+  if (!a || a->type != method::AnswerType::number) return std::nullopt;
+  return a->x.v;
+}
+
+std::vector<std::string> face_names(method::FaceMask bits) {
+  std::vector<std::string> out;
+  static constexpr const char* kNames[] = {"+x", "+y", "+z", "-x", "-y", "-z"};
+  for (int i = 0; i < 6; ++i)
+    if (bits & (1u << i)) out.emplace_back(kNames[i]);
+  if (out.empty()) out.emplace_back("none");
+  return out;
+}
+
+const method::QuestionDecl* decl_of(const ExerciseKind* kind, std::string_view field) {
+  if (!kind) return nullptr;
+  for (const auto& d : kind->questions())
+    if (d.field == field) return &d;
+  return nullptr;
+}
+
+class VariantBuilder {
+ public:
+  VariantBuilder(const grading::FeedbackText& feedback, int decimals, ImageFormat images)
+      : feedback_(feedback), decimals_(decimals), images_(images) {}
+
+  Variant build(const grading::SheetKey& sheet, const grading::ExerciseKey& ex, const ExerciseInstance& inst,
+                const std::string& title) const {
+    Variant v;
+    v.sheet_id = sheet.id;
+    v.name = fmt::format("{}. {} \u2014 {}", ex.n, title, sheet.id);
+    const ExerciseKind* kind = find_kind(ex.kind);
+    const Runs runs = evaluate(kind, ex);
+    // where each mistake first shows, in the key's order of questions
+    std::vector<std::size_t> origin(runs.mistakes.size(), ex.questions.size());
+    for (std::size_t k = 0; k < runs.mistakes.size(); ++k)
+      for (std::size_t i = 0; i < ex.questions.size() && origin[k] == ex.questions.size(); ++i)
+        if (changes(runs.mistakes[k].second, runs.key, ex.questions[i])) origin[k] = i;
+    for (std::size_t i = 0; i < ex.questions.size(); ++i) {
+      // the mistakes first made on this answer before those carried from an earlier one:
+      // grading tries each mistake on the student's own earlier answers first, so that for a
+      // student whose earlier answers are right, a mistake made upstream explains nothing here
+      Runs ordered{runs.key, {}};
+      for (int pass = 0; pass < 2; ++pass)
+        for (std::size_t k = 0; k < runs.mistakes.size(); ++k)
+          if ((origin[k] == i) == (pass == 0)) ordered.mistakes.push_back(runs.mistakes[k]);
+      v.parts.push_back(part(kind, ex.questions[i], ordered));
+      v.points += ex.questions[i].points;
+    }
+    std::vector<bool> used(v.parts.size(), false);
+    for (const auto& block : inst.sheet.blocks) {
+      if (const auto* p = std::get_if<render::Paragraph>(&block)) {
+        const std::string html = html_of(p->text);
+        v.blocks.push_back({Block::Kind::text, p->emphasis ? "<em>" + html + "</em>" : html, -1, {}, false});
+      } else if (const auto* f = std::get_if<render::Figure>(&block)) {
+        v.blocks.push_back({Block::Kind::image, {}, static_cast<int>(v.images.size()), {}, false});
+        v.images.push_back(image(f->scene, fmt::format("{}-{}-{}", sheet.id, ex.n, v.images.size() + 1)));
+      } else if (const auto* a = std::get_if<render::AnswerField>(&block)) {
+        Block b{Block::Kind::field, html_of(a->prompt), -1, {}, false};
+        const bool point = a->kind == render::AnswerField::Kind::point || a->kind == render::AnswerField::Kind::point3;
+        const std::vector<std::string> ids =
+            point ? std::vector<std::string>{a->question_id + ".x", a->question_id + ".y", a->question_id + ".z"}
+                  : std::vector<std::string>{a->question_id};
+        for (const auto& id : ids)
+          for (std::size_t i = 0; i < v.parts.size(); ++i)
+            if (v.parts[i].question_id == id && !used[i]) {
+              b.parts.push_back(static_cast<int>(i));
+              used[i] = true;
+            }
+        b.point = point && b.parts.size() > 1;
+        // a field this case does not ask (the sheet prints every field of the kind)
+        if (!b.parts.empty()) v.blocks.push_back(std::move(b));
+      }
+    }
+    // a question the sheet has no field for: asked all the same, under its id
+    for (std::size_t i = 0; i < v.parts.size(); ++i)
+      if (!used[i])
+        v.blocks.push_back({Block::Kind::field, xml_escape(v.parts[i].question_id), -1, {static_cast<int>(i)}, false});
+    return v;
+  }
+
+ private:
+  struct Runs {
+    std::vector<Recorded<Traced>> key;
+    std::vector<std::pair<std::string_view, std::vector<Recorded<Traced>>>> mistakes;
+  };
+
+  // Whether a run's answer to q differs from the key run's.
+  static bool changes(const std::vector<Recorded<Traced>>& run, const std::vector<Recorded<Traced>>& key,
+                      const QuestionKey& q) {
+    if (q.type == AnswerType::number) {
+      const auto a = number_in(run, q), b = number_in(key, q);
+      return a && b && !unchanged(*a, *b);
+    }
+    const auto* a = find_answer(run, q.field);
+    const auto* b = find_answer(key, q.field);
+    if (!a || !b) return false;
+    return a->boolean != b->boolean || a->word != b->word || a->faces != b->faces;
+  }
+
+  Runs evaluate(const ExerciseKind* kind, const grading::ExerciseKey& ex) const {
+    Runs r;
+    if (!kind || kind->questions().empty()) return r;
+    const std::any data = kind->read_instance(ex.instance);
+    r.key = kind->evaluate(data, nullptr, {}, decimals_);
+    for (std::string_view code : kind->mistakes()) r.mistakes.emplace_back(code, kind->evaluate(data, nullptr, code, decimals_));
+    return r;
+  }
+
+  // The sentence the paper feedback prints for this mistake on this answer.
+  std::string sentence(const QuestionKey& q, std::string_view code, double value) const {
+    grading::QuestionMark m;
+    const std::string raw = std::isfinite(value) ? feedback_.number(value) : std::string();
+    m.verdict = grading::Verdict::wrong;
+    m.mistake = code;
+    m.value = value;
+    m.given.state = grading::Given::State::value;
+    m.given.number = value;
+    m.given.raw = raw;
+    return html_of(feedback_.explanation(q, m));
+  }
+
+  std::string wording(std::string_view word) const {
+    const std::string key = fmt::format("choice.{}", word);
+    return feedback_.texts().has(key) ? html_of(feedback_.texts().get(key)) : xml_escape(word);
+  }
+
+  Part part(const ExerciseKind* kind, const QuestionKey& q, const Runs& runs) const {
+    Part p;
+    p.question_id = q.id;
+    p.points = q.points;
+    switch (q.type) {
+      case AnswerType::number: {
+        p.type = Part::Type::number;
+        p.value = q.number;
+        const double right = rule_width(q.rule, q.number);
+        p.width = conservative_width(right, q.number);
+        const auto base = number_in(runs.key, q);
+        for (const auto& [code, run] : runs.mistakes) {
+          const auto value = number_in(run, q);
+          // as grading does: a mistake that leaves the answer where it is says nothing of it;
+          // every other one is listed, in grading's order, even where an earlier one (or the
+          // right answer) already answers (a platform tries them in order, as grading does)
+          if (!value || !std::isfinite(*value) || (base && unchanged(*value, *base))) continue;
+          MistakeAnswer m;
+          m.code = std::string(code);
+          m.value = *value;
+          m.width = conservative_width(grading::kMatchFactor * rule_width(q.rule, *value), *value);
+          m.feedback_html = sentence(q, code, *value);
+          p.mistakes.push_back(std::move(m));
+        }
+        break;
+      }
+      case AnswerType::boolean: {
+        // a yes/no answer is wrong, not diagnosed (as on paper)
+        p.type = Part::Type::choice;
+        p.options = {{"yes", html_of(feedback_.texts().get("common.yes")), q.boolean},
+                     {"no", html_of(feedback_.texts().get("common.no")), !q.boolean}};
+        break;
+      }
+      case AnswerType::word: {
+        p.type = Part::Type::choice;
+        const auto* d = decl_of(kind, q.field);
+        std::vector<std::string_view> words;
+        if (d)
+          for (auto w : d->choices) words.push_back(w);
+        if (std::find(words.begin(), words.end(), std::string_view(q.word)) == words.end()) words.push_back(q.word);
+        for (auto w : words) p.options.push_back({std::string(w), wording(w), w == q.word});
+        for (const auto& [code, run] : runs.mistakes) {
+          const auto* a = find_answer(run, q.field);
+          const auto* b = find_answer(runs.key, q.field);
+          if (!a || a->type != method::AnswerType::choice || a->word == q.word || (b && a->word == b->word)) continue;
+          bool known = false;
+          for (const auto& m : p.mistakes) known = known || m.options.front() == a->word;
+          if (known) continue;
+          p.mistakes.push_back({std::string(code), 0, 0, {std::string(a->word)}, sentence(q, code, NAN)});
+        }
+        break;
+      }
+      case AnswerType::faces: {
+        p.type = Part::Type::faces;
+        const auto* d = decl_of(kind, q.field);
+        std::vector<std::string> names;
+        if (d)
+          for (auto w : d->choices) names.emplace_back(w);
+        else
+          for (const char* f : {"+x", "+y", "-x", "-y"}) names.emplace_back(f);
+        for (const auto& f : names) p.options.push_back({f, xml_escape(f), (q.faces & grading::face_bit(f)) != 0});
+        // the candidates may be none (a ray from inside): offered on every variant, so that the
+        // question does not tell which case it is
+        p.options.push_back({"none", html_of(feedback_.texts().get("common.none")), q.faces == 0});
+        for (const auto& [code, run] : runs.mistakes) {
+          const auto* a = find_answer(run, q.field);
+          const auto* b = find_answer(runs.key, q.field);
+          if (!a || a->type != method::AnswerType::faces || a->faces == q.faces || (b && a->faces == b->faces)) continue;
+          bool known = false;
+          const auto options = face_names(a->faces);
+          for (const auto& m : p.mistakes) known = known || m.options == options;
+          if (known) continue;
+          p.mistakes.push_back({std::string(code), 0, 0, options, sentence(q, code, NAN)});
+        }
+        break;
+      }
+    }
+    return p;
+  }
+
+  Image image(const render::Scene& scene, const std::string& stem) const {
+    Image im;
+    im.alt = scene.description.empty() ? scene.title : scene.description;
+    im.width_px = kFigureWidthPx;
+    if (images_ == ImageFormat::png) {
+      im.name = stem + ".png";
+      im.media_type = "image/png";
+      im.bytes = render::scene_to_png(scene, kFigureWidthPt, kPngDpi);
+    } else {
+      im.name = stem + ".svg";
+      im.media_type = "image/svg+xml";
+      im.bytes = render::scene_to_svg(scene, kFigureWidthPt);
+    }
+    return im;
+  }
+
+  const grading::FeedbackText& feedback_;
+  int decimals_;
+  ImageFormat images_;
+};
+
+}  // namespace
+
+ExportSet read_set(const std::filesystem::path& dir, const std::string& language, ImageFormat images) {
+  ExportSet set;
+  set.key_path = dir / "key.json";
+  const std::string where = set.key_path.string();
+  std::ifstream in(set.key_path, std::ios::binary);
+  if (!in)
+    throw ExportError(fmt::format("{}: cannot be read: is {} a set written by 'epure generate'?", where, dir.string()));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  grading::AnswerKey key;
+  try {
+    key = grading::read_key_json(text, where);
+  } catch (const std::exception& e) {
+    throw ExportError(e.what());
+  }
+  if (key.info.draw_version != kDrawVersion)
+    throw ExportError(fmt::format("{}: a key of generator version {} (epure {}); this epure draws version {}: "
+                                  "generate the set again to export it",
+                                  where, key.info.draw_version, key.info.epure_version, kDrawVersion));
+  bool any = false;
+  for (const auto& s : key.sheets()) any = any || !s.exercises.empty();
+  if (!any) throw ExportError(fmt::format("{}: the set has no exercises to export", where));
+
+  set.language = language.empty() ? key.info.language : language;
+  set.title = key.info.title;
+  grading::KeyDiagrams drawings(key, set.language);
+  if (!drawings.available())
+    throw ExportError(fmt::format("{}: the sheets cannot be drawn again: {}", where, drawings.why_not()));
+  const grading::FeedbackText feedback(set.language, key.info.decimals);
+  const VariantBuilder builder(feedback, key.info.decimals, images);
+
+  std::map<int, std::size_t> slot_of;  // exercise number → place in set.exercises
+  for (const auto& sheet : key.sheets()) {
+    for (std::size_t e = 0; e < sheet.exercises.size(); ++e) {
+      const auto& ex = sheet.exercises[e];
+      auto it = slot_of.find(ex.n);
+      if (it == slot_of.end()) {
+        ExerciseSlot slot;
+        slot.n = ex.n;
+        slot.kind = ex.kind;
+        const std::string title_key = ex.kind + ".title";
+        slot.title = grading::plain_text(feedback.texts().has(title_key) ? feedback.texts().get(title_key) : ex.kind);
+        it = slot_of.emplace(ex.n, set.exercises.size()).first;
+        set.exercises.push_back(std::move(slot));
+      }
+      ExerciseSlot& slot = set.exercises[it->second];
+      if (slot.kind != ex.kind)
+        throw ExportError(fmt::format("{}: sheet {}: exercise {} is a {} where the first sheet has a {}", where, sheet.id,
+                                      ex.n, ex.kind, slot.kind));
+      auto inst = drawings.instance(sheet, e);
+      if (!inst)
+        throw ExportError(fmt::format("{}: sheet {}: exercise {} ({}) cannot be drawn again from the key's spec and "
+                                      "seed: was the set generated by another epure?",
+                                      where, sheet.id, ex.n, ex.kind));
+      slot.variants.push_back(builder.build(sheet, ex, *inst, slot.title));
+    }
+  }
+  std::sort(set.exercises.begin(), set.exercises.end(), [](const auto& a, const auto& b) { return a.n < b.n; });
+  return set;
+}
+
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::string html_of(std::string_view rich) {
+  std::string out;
+  for (const auto& run : render::parse_rich_text(rich)) {
+    std::string text;
+    for (char c : run.text) {
+      if (c == '\n') text += "<br/>";
+      else text += xml_escape(std::string_view(&c, 1));
+    }
+    if (run.arrow) text += "\u20d7";  // a combining arrow over the vector's (last) letter
+    if (run.bold) text = "<b>" + text + "</b>";
+    switch (run.shift) {
+      case render::Shift::none: out += text; break;
+      case render::Shift::sub: out += "<sub>" + text + "</sub>"; break;
+      case render::Shift::super: out += "<sup>" + text + "</sup>"; break;
+    }
+  }
+  return out;
+}
+
+std::string shortest(double x) {
+  if (!std::isfinite(x)) throw ExportError(fmt::format("a number that is not finite ({}) cannot be exported", x));
+  if (x == 0) return "0";  // and not "-0"
+  return fmt::format("{}", x);
+}
+
+double rule_width(const ToleranceRule& rule, double at) {
+  switch (rule.kind) {
+    case ToleranceRule::Kind::isclose: return std::max(rule.rel * std::abs(at), rule.abs);
+    case ToleranceRule::Kind::distance: return rule.abs / std::sqrt(2.0);
+    case ToleranceRule::Kind::exact: return 0;
+  }
+  return 0;
+}
+
+double conservative_width(double width, double value) {
+  const double w = width - 1e-12 * std::max(1.0, std::abs(value));
+  if (!(w > 0)) return 0;
+  const int e = static_cast<int>(std::floor(std::log10(w)));
+  // w = m·10^(e−3) with m in [1000, 10000): keep m's integer part
+  const int k = 3 - e;
+  const auto scaled = [&](double m) { return k >= 0 ? m / std::pow(10.0, k) : m * std::pow(10.0, -k); };
+  double m = std::floor(k >= 0 ? w * std::pow(10.0, k) : w / std::pow(10.0, -k));
+  while (m > 0 && scaled(m) > w) m -= 1;  // the decimal's double may round up past w
+  return scaled(m);
+}
+
+}  // namespace epure::exporting

@@ -1,0 +1,119 @@
+#pragma once
+// What the platform exports publish, read once from a generated set: every sheet's exercises
+// as online questions. The numbers, rules and points are key.json's; the statement, the diagram
+// and the answer fields are the sheet's own, drawn again from the key's spec and seed (and kept
+// only when the drawn instance is exactly the key's); the named mistakes' values come from each
+// kind's one method with that mistake switched on, and their feedback is the sentence the paper
+// feedback prints. Moodle XML (moodle_xml.h) and QTI 2.1 (qti_package.h) only write this out.
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exercises/exercise.h"
+
+namespace epure::exporting {
+
+// A set that cannot be exported: the message names the file and what is wrong.
+class ExportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class ImageFormat { png, svg };
+
+struct Image {
+  std::string name;        // "1000-0001-000X-2.png": unique in the set
+  std::string media_type;  // "image/png", "image/svg+xml"
+  std::string bytes;
+  double width_px = 0;     // the width it is shown at
+  std::string alt;         // plain text (the figure's description)
+};
+
+// A named mistake a platform recognises on one answer, with the paper feedback's sentence.
+struct MistakeAnswer {
+  std::string code;            // "far_intersection"
+  double value = 0;            // a number's value the mistake gives
+  double width = 0;            //   and the half-width it is recognised within (as on paper)
+  std::vector<std::string> options;  // a choice's or a face set's option ids the mistake gives
+  std::string feedback_html;   // the sentence, as HTML (sub- and superscripts)
+};
+
+struct Option {
+  std::string id;    // the contract word ("between", "yes", "+x", "none")
+  std::string html;  // the sheet's wording
+  bool right = false;
+};
+
+// One graded answer field: a number, a choice (one of) or a set of faces (any of).
+struct Part {
+  enum class Type { number, choice, faces };
+  std::string question_id;  // "2.P.x", as key.json names it
+  Type type = Type::number;
+  double points = 1;
+  double value = 0;  // number: the key's value
+  double width = 0;  //   and the absolute half-width accepted, never looser than the key's rule
+  std::vector<Option> options;  // choice, faces ("none" last, for a set that may be empty)
+  std::vector<MistakeAnswer> mistakes;  // in the order grading tries them
+};
+
+// The question's body, in the sheet's order.
+struct Block {
+  enum class Kind { text, image, field } kind = Kind::text;
+  std::string html;         // text: a paragraph's HTML; field: the prompt's HTML ("t =")
+  int image = -1;           // image: index in Variant::images
+  std::vector<int> parts;   // field: its parts (two for a point: x then y)
+  bool point = false;       // field: a point, written (x, y)
+};
+
+// One student's instance of one exercise: one online question.
+struct Variant {
+  std::string sheet_id;
+  std::string name;  // "2. Projection of a point on a line — 1000-0001-000X"
+  std::vector<Block> blocks;
+  std::vector<Image> images;
+  std::vector<Part> parts;
+  double points = 0;  // the exercise's points (the parts' sum)
+};
+
+struct ExerciseSlot {
+  int n = 0;
+  std::string kind;
+  std::string title;  // "Projection of a point on a line", in the set's language
+  std::vector<Variant> variants;  // in sheet order
+};
+
+struct ExportSet {
+  std::filesystem::path key_path;
+  std::string title;
+  std::string language;
+  std::vector<ExerciseSlot> exercises;
+};
+
+// Reads DIR/key.json and draws every exercise of every sheet again in `language` (the set's
+// when empty). Throws ExportError naming the file: no key.json, a key that cannot be read, a
+// key of another generator version, a set without exercises, an exercise that cannot be drawn
+// again from the key's spec.
+ExportSet read_set(const std::filesystem::path& dir, const std::string& language, ImageFormat images);
+
+// ---- shared pieces of the writers
+
+// RichText (the templates' label markup: t_{ab}, r^{2}, \vec{AB}) as HTML: text escaped,
+// <sub>/<sup> for scripts, a combining arrow over a vector's name.
+std::string html_of(std::string_view rich);
+// & < > " escaped for XML text and attributes.
+std::string xml_escape(std::string_view text);
+// The shortest decimal that reads back as x, with a '.' mark, no '+', no exponent when the
+// plain form is as short ("0.26229508196721313", "-18", "1e-07").
+std::string shortest(double x);
+// The absolute half-width the key's rule accepts around `at` (isclose: max(rel·|at|, abs);
+// a point marked by distance: abs/√2 per coordinate, so that both together stay within abs).
+double rule_width(const ToleranceRule& rule, double at);
+// A decimal half-width no larger than `width` even once a platform adds its own slack (Moodle
+// adds 10^−14·max(tolerance, |value|)): `width` less 10^−12·max(1, |value|), rounded down to
+// four significant digits.
+double conservative_width(double width, double value);
+
+}  // namespace epure::exporting

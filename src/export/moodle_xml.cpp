@@ -1,0 +1,219 @@
+#include "export/moodle_xml.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace epure::exporting {
+
+namespace {
+
+// Moodle's grades (question_bank::fraction_options_full), in percent, as its list spells them.
+constexpr std::string_view kGrades[] = {"100",      "90", "83.33333", "80",       "75",   "70",      "66.66667",
+                                        "60",       "50", "40",       "33.33333", "30",   "25",      "20",
+                                        "16.66667", "14.28571", "12.5", "11.11111", "10", "5", "0"};
+
+// A wrong answer no student types, wider than any value shortest() writes (at most 24
+// characters: "-1.2345678901234567e-100"): Moodle sizes a Cloze number box after its longest
+// answer, which would otherwise show the answer's length (R/exams' exams2moodle adds such an
+// answer for the same reason).
+constexpr std::string_view kWideWrong = "%0%999999999999999999999999:0";
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const auto b = [&](std::size_t k) { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0u; };
+    const unsigned v = (b(i) << 16) | (b(i + 1) << 8) | b(i + 2);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+// Statement text in the question text: outside a part the importer reads nothing, but a brace
+// is written as an entity all the same, so that no text can ever look like a part.
+std::string brace_safe(std::string_view html) {
+  std::string out;
+  for (char c : html) {
+    if (c == '{') out += "&#123;";
+    else if (c == '}') out += "&#125;";
+    else out.push_back(c);
+  }
+  return out;
+}
+
+// The smallest of 1, 2, 4, 8 that makes every part's points of the slot a whole number: Cloze
+// weights are whole numbers, and the key's points are quarter points.
+int weight_scale(const ExerciseSlot& slot) {
+  for (int scale : {1, 2, 4, 8}) {
+    bool whole = true;
+    for (const auto& v : slot.variants)
+      for (const auto& p : v.parts) whole = whole && std::abs(p.points * scale - std::round(p.points * scale)) < 1e-9;
+    if (whole) return scale;
+  }
+  throw ExportError(fmt::format("exercise {}: points that are not quarter points cannot be Cloze weights", slot.n));
+}
+
+// A category path segment: Moodle splits the path at '/', and reads "//" as a slash.
+std::string category_segment(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    out.push_back(c);
+    if (c == '/') out.push_back('/');
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string cloze_escape(std::string_view html) {
+  std::string out;
+  for (char c : html) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '}': out += "&#125;"; break;
+      case '#': out += "&#35;"; break;
+      case '~': out += "&#126;"; break;
+      case '\\': out += "&#92;"; break;
+      default: out.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::string cdata(std::string_view text) {
+  std::string out = "<![CDATA[";
+  std::size_t start = 0;
+  for (std::size_t at; (at = text.find("]]>", start)) != std::string_view::npos; start = at + 2) {
+    out.append(text.substr(start, at + 2 - start));
+    out += "]]><![CDATA[";
+  }
+  out.append(text.substr(start));
+  out += "]]>";
+  return out;
+}
+
+std::string moodle_fraction(double percent) {
+  for (std::string_view g : kGrades) {
+    const double v = std::stod(std::string(g));
+    for (double sign : {1.0, -1.0})
+      if (std::abs(percent - sign * v) < 1e-4) return fmt::format("{}{}", sign < 0 && v != 0 ? "-" : "", g);
+  }
+  throw ExportError(fmt::format("{}% is not one of Moodle's grades", percent));
+}
+
+std::string cloze_part(const Part& part, int weight) {
+  std::string s = fmt::format("{{{}:", weight);
+  switch (part.type) {
+    case Part::Type::number: {
+      s += fmt::format("NUMERICAL:={}:{}", shortest(part.value), shortest(part.width));
+      for (const auto& m : part.mistakes)
+        s += fmt::format("~%0%{}:{}#{}", shortest(m.value), shortest(m.width), cloze_escape(m.feedback_html));
+      s += '~';
+      s += kWideWrong;
+      break;
+    }
+    case Part::Type::choice: {
+      s += "MULTICHOICE:";
+      bool first = true;
+      for (const auto& o : part.options) {
+        if (!first) s += '~';
+        first = false;
+        s += o.right ? "=" : "";
+        s += cloze_escape(o.html);
+        for (const auto& m : part.mistakes)
+          if (m.options.front() == o.id) {
+            s += '#' + cloze_escape(m.feedback_html);
+            break;
+          }
+      }
+      break;
+    }
+    case Part::Type::faces: {
+      // each right option 1/k of the part, each wrong one −1/k (as Moodle's own default)
+      int right = 0;
+      for (const auto& o : part.options) right += o.right ? 1 : 0;
+      const std::string plus = moodle_fraction(100.0 / right), minus = moodle_fraction(-100.0 / right);
+      s += "MULTIRESPONSE:";
+      bool first = true;
+      for (const auto& o : part.options) {
+        if (!first) s += '~';
+        first = false;
+        s += fmt::format("%{}%{}", o.right ? plus : minus, cloze_escape(o.html));
+        // a wrong option ticked: the first named mistake that ticks it says why
+        if (!o.right)
+          for (const auto& m : part.mistakes)
+            if (std::find(m.options.begin(), m.options.end(), o.id) != m.options.end()) {
+              s += '#' + cloze_escape(m.feedback_html);
+              break;
+            }
+      }
+      break;
+    }
+  }
+  s += '}';
+  return s;
+}
+
+std::string moodle_xml(const ExportSet& set) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n";
+  const bool comma = set.language == "fr";
+  for (const auto& slot : set.exercises) {
+    const int scale = weight_scale(slot);
+    const std::string category = fmt::format("$course$/top/{}/{}. {}", category_segment(set.title), slot.n,
+                                             category_segment(slot.title));
+    out += "  <question type=\"category\">\n";
+    out += fmt::format("    <category><text>{}</text></category>\n", xml_escape(category));
+    out += "    <info format=\"html\"><text></text></info>\n";
+    out += "  </question>\n";
+    for (const auto& v : slot.variants) {
+      std::string html;
+      for (const auto& b : v.blocks) {
+        switch (b.kind) {
+          case Block::Kind::text: html += "<p>" + brace_safe(b.html) + "</p>\n"; break;
+          case Block::Kind::image: {
+            const Image& im = v.images[static_cast<std::size_t>(b.image)];
+            html += fmt::format("<p><img src=\"@@PLUGINFILE@@/{}\" alt=\"{}\" width=\"{}\"/></p>\n", im.name,
+                                xml_escape(im.alt), im.width_px);
+            break;
+          }
+          case Block::Kind::field: {
+            html += "<p>" + brace_safe(b.html) + " ";
+            std::vector<std::string> parts;
+            for (int i : b.parts) {
+              const Part& p = v.parts[static_cast<std::size_t>(i)];
+              const int weight = static_cast<int>(std::lround(p.points * scale));
+              parts.push_back(cloze_part(p, weight));
+            }
+            if (b.point) html += fmt::format("({})", fmt::join(parts, comma ? " ; " : ", "));
+            else html += fmt::format("{}", fmt::join(parts, " "));
+            html += "</p>\n";
+            break;
+          }
+        }
+      }
+      out += "  <question type=\"multianswer\">\n";
+      out += fmt::format("    <name><text>{}</text></name>\n", xml_escape(v.name));
+      out += "    <questiontext format=\"html\">\n";
+      out += "      <text>" + cdata(html) + "</text>\n";
+      for (const auto& im : v.images)
+        out += fmt::format("      <file name=\"{}\" path=\"/\" encoding=\"base64\">{}</file>\n", xml_escape(im.name),
+                           base64(im.bytes));
+      out += "    </questiontext>\n";
+      out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";
+      out += "    <penalty>0.3333333</penalty>\n";  // Moodle's default, for a quiz with several tries
+      out += "    <hidden>0</hidden>\n";
+      out += fmt::format("    <idnumber>{}-{}</idnumber>\n", v.sheet_id, slot.n);
+      out += "  </question>\n";
+    }
+  }
+  out += "</quiz>\n";
+  return out;
+}
+
+}  // namespace epure::exporting

@@ -1,0 +1,249 @@
+#include "export/qti_package.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace epure::exporting {
+
+namespace {
+
+constexpr std::string_view kQtiNamespace =
+    "xmlns=\"http://www.imsglobal.org/xsd/imsqti_v2p1\" "
+    "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+    "xsi:schemaLocation=\"http://www.imsglobal.org/xsd/imsqti_v2p1 "
+    "http://www.imsglobal.org/xsd/qti/qtiv2p1/imsqti_v2p1.xsd\"";
+constexpr std::string_view kCpNamespace =
+    "xmlns=\"http://www.imsglobal.org/xsd/imscp_v1p1\" "
+    "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+    "xsi:schemaLocation=\"http://www.imsglobal.org/xsd/imscp_v1p1 "
+    "http://www.imsglobal.org/xsd/imscp_v1p1.xsd\"";
+
+// A text box as wide for every answer (20 characters), so that its size tells nothing.
+constexpr int kExpectedLength = 20;
+
+std::string item_id(const Variant& v, int n) { return fmt::format("item-{}-{}", v.sheet_id, n); }
+std::string item_file(const Variant& v, int n) { return fmt::format("items/{}-{}.xml", v.sheet_id, n); }
+std::string response_id(std::size_t part) { return fmt::format("R{}", part + 1); }
+
+// An option's identifier (an NCName): C_between, C_yes, F_px (+x), F_my (−y), F_none.
+std::string option_id(const Part& p, std::string_view option) {
+  if (p.type != Part::Type::faces) return fmt::format("C_{}", option);
+  if (option == "none") return "F_none";
+  return fmt::format("F_{}{}", option[0] == '+' ? 'p' : 'm', option.substr(1));
+}
+std::string feedback_id(std::size_t part, const MistakeAnswer& m) { return fmt::format("M{}_{}", part + 1, m.code); }
+
+std::string points(double x) { return shortest(x); }
+
+std::string add_score(double pts) {
+  return fmt::format(
+      "        <setOutcomeValue identifier=\"SCORE\"><sum><variable identifier=\"SCORE\"/>"
+      "<baseValue baseType=\"float\">{}</baseValue></sum></setOutcomeValue>\n",
+      points(pts));
+}
+
+std::string add_feedback(const std::string& id) {
+  return fmt::format(
+      "        <setOutcomeValue identifier=\"FEEDBACK\"><multiple><variable identifier=\"FEEDBACK\"/>"
+      "<baseValue baseType=\"identifier\">{}</baseValue></multiple></setOutcomeValue>\n",
+      id);
+}
+
+std::string interaction(const Part& p, std::size_t i) {
+  const std::string r = response_id(i);
+  if (p.type == Part::Type::number)
+    return fmt::format("<textEntryInteraction responseIdentifier=\"{}\" expectedLength=\"{}\"/>", r, kExpectedLength);
+  std::string s = fmt::format("<inlineChoiceInteraction responseIdentifier=\"{}\" shuffle=\"false\">", r);
+  for (const auto& o : p.options)
+    s += fmt::format("<inlineChoice identifier=\"{}\">{}</inlineChoice>", option_id(p, o.id), o.html);
+  s += "</inlineChoiceInteraction>";
+  return s;
+}
+
+std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Variant& v) {
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format("<assessmentItem {} identifier=\"{}\" title=\"{}\" adaptive=\"false\" timeDependent=\"false\" "
+                   "xml:lang=\"{}\">\n",
+                   kQtiNamespace, item_id(v, slot.n), xml_escape(v.name), set.language);
+  // responses
+  for (std::size_t i = 0; i < v.parts.size(); ++i) {
+    const Part& p = v.parts[i];
+    const std::string r = response_id(i);
+    switch (p.type) {
+      case Part::Type::number:
+        x += fmt::format("  <responseDeclaration identifier=\"{}\" cardinality=\"single\" baseType=\"float\">"
+                         "<correctResponse><value>{}</value></correctResponse></responseDeclaration>\n",
+                         r, shortest(p.value));
+        break;
+      case Part::Type::choice: {
+        const auto right = std::find_if(p.options.begin(), p.options.end(), [](const Option& o) { return o.right; });
+        x += fmt::format("  <responseDeclaration identifier=\"{}\" cardinality=\"single\" baseType=\"identifier\">"
+                         "<correctResponse><value>{}</value></correctResponse></responseDeclaration>\n",
+                         r, option_id(p, right->id));
+        break;
+      }
+      case Part::Type::faces: {
+        x += fmt::format("  <responseDeclaration identifier=\"{}\" cardinality=\"multiple\" baseType=\"identifier\">"
+                         "<correctResponse>",
+                         r);
+        for (const auto& o : p.options)
+          if (o.right) x += fmt::format("<value>{}</value>", option_id(p, o.id));
+        x += "</correctResponse></responseDeclaration>\n";
+        break;
+      }
+    }
+  }
+  x += "  <outcomeDeclaration identifier=\"SCORE\" cardinality=\"single\" baseType=\"float\">"
+       "<defaultValue><value>0</value></defaultValue></outcomeDeclaration>\n";
+  x += fmt::format("  <outcomeDeclaration identifier=\"MAXSCORE\" cardinality=\"single\" baseType=\"float\">"
+                   "<defaultValue><value>{}</value></defaultValue></outcomeDeclaration>\n",
+                   points(v.points));
+  x += "  <outcomeDeclaration identifier=\"FEEDBACK\" cardinality=\"multiple\" baseType=\"identifier\"/>\n";
+
+  // body, in the sheet's order
+  x += "  <itemBody>\n";
+  const std::string separator = set.language == "fr" ? " ; " : ", ";
+  for (const auto& b : v.blocks) {
+    switch (b.kind) {
+      case Block::Kind::text: x += "    <p>" + b.html + "</p>\n"; break;
+      case Block::Kind::image: {
+        const Image& im = v.images[static_cast<std::size_t>(b.image)];
+        x += fmt::format("    <p><img src=\"../images/{}\" alt=\"{}\" width=\"{}\"/></p>\n", im.name, xml_escape(im.alt),
+                         im.width_px);
+        break;
+      }
+      case Block::Kind::field: {
+        const auto first = static_cast<std::size_t>(b.parts.front());
+        if (v.parts[first].type == Part::Type::faces) {
+          const Part& p = v.parts[first];
+          x += fmt::format("    <choiceInteraction responseIdentifier=\"{}\" shuffle=\"false\" maxChoices=\"0\">"
+                           "<prompt>{}</prompt>",
+                           response_id(first), b.html);
+          for (const auto& o : p.options)
+            x += fmt::format("<simpleChoice identifier=\"{}\">{}</simpleChoice>", option_id(p, o.id), o.html);
+          x += "</choiceInteraction>\n";
+          break;
+        }
+        std::vector<std::string> inner;
+        for (int i : b.parts) inner.push_back(interaction(v.parts[static_cast<std::size_t>(i)], static_cast<std::size_t>(i)));
+        x += "    <p>" + b.html + " ";
+        if (b.point) x += fmt::format("({})", fmt::join(inner, separator));
+        else x += fmt::format("{}", fmt::join(inner, " "));
+        x += "</p>\n";
+        break;
+      }
+    }
+  }
+  x += "  </itemBody>\n";
+
+  // scoring: the points of each right answer; a named mistake's value sets its feedback
+  x += "  <responseProcessing>\n";
+  for (std::size_t i = 0; i < v.parts.size(); ++i) {
+    const Part& p = v.parts[i];
+    const std::string r = response_id(i);
+    x += "    <responseCondition>\n      <responseIf>\n";
+    if (p.type == Part::Type::number)
+      x += fmt::format("        <equal toleranceMode=\"absolute\" tolerance=\"{0} {0}\"><correct identifier=\"{1}\"/>"
+                       "<variable identifier=\"{1}\"/></equal>\n",
+                       shortest(p.width), r);
+    else
+      x += fmt::format("        <match><variable identifier=\"{0}\"/><correct identifier=\"{0}\"/></match>\n", r);
+    x += add_score(p.points);
+    x += "      </responseIf>\n";
+    for (const auto& m : p.mistakes) {
+      x += "      <responseElseIf>\n";
+      if (p.type == Part::Type::number) {
+        x += fmt::format("        <equal toleranceMode=\"absolute\" tolerance=\"{0} {0}\"><baseValue baseType=\"float\">{1}"
+                         "</baseValue><variable identifier=\"{2}\"/></equal>\n",
+                         shortest(m.width), shortest(m.value), r);
+      } else if (p.type == Part::Type::choice) {
+        x += fmt::format("        <match><variable identifier=\"{}\"/><baseValue baseType=\"identifier\">{}</baseValue>"
+                         "</match>\n",
+                         r, option_id(p, m.options.front()));
+      } else {
+        x += fmt::format("        <match><variable identifier=\"{}\"/><multiple>", r);
+        for (const auto& o : m.options) x += fmt::format("<baseValue baseType=\"identifier\">{}</baseValue>", option_id(p, o));
+        x += "</multiple></match>\n";
+      }
+      x += add_feedback(feedback_id(i, m));
+      x += "      </responseElseIf>\n";
+    }
+    x += "    </responseCondition>\n";
+  }
+  x += "  </responseProcessing>\n";
+  for (std::size_t i = 0; i < v.parts.size(); ++i)
+    for (const auto& m : v.parts[i].mistakes)
+      x += fmt::format("  <modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"{}\" showHide=\"show\">"
+                       "<p>{}</p></modalFeedback>\n",
+                       feedback_id(i, m), m.feedback_html);
+  x += "</assessmentItem>\n";
+  return x;
+}
+
+std::string test_xml(const ExportSet& set) {
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format("<assessmentTest {} identifier=\"test\" title=\"{}\">\n", kQtiNamespace, xml_escape(set.title));
+  x += "  <outcomeDeclaration identifier=\"SCORE\" cardinality=\"single\" baseType=\"float\">"
+       "<defaultValue><value>0</value></defaultValue></outcomeDeclaration>\n";
+  x += "  <testPart identifier=\"part\" navigationMode=\"nonlinear\" submissionMode=\"simultaneous\">\n";
+  for (const auto& slot : set.exercises) {
+    x += fmt::format("    <assessmentSection identifier=\"exercise-{}\" title=\"{}\" visible=\"true\">\n", slot.n,
+                     xml_escape(fmt::format("{}. {}", slot.n, slot.title)));
+    x += "      <selection select=\"1\"/>\n";
+    for (const auto& v : slot.variants)
+      x += fmt::format("      <assessmentItemRef identifier=\"{}\" href=\"{}\"/>\n", item_id(v, slot.n),
+                       item_file(v, slot.n));
+    x += "    </assessmentSection>\n";
+  }
+  x += "  </testPart>\n";
+  x += "  <outcomeProcessing><setOutcomeValue identifier=\"SCORE\"><sum><testVariables variableIdentifier=\"SCORE\"/>"
+       "</sum></setOutcomeValue></outcomeProcessing>\n";
+  x += "</assessmentTest>\n";
+  return x;
+}
+
+}  // namespace
+
+std::vector<ZipEntry> qti_files(const ExportSet& set) {
+  std::vector<ZipEntry> files;
+  files.push_back({"imsmanifest.xml", {}});
+  files.push_back({"test.xml", test_xml(set)});
+  std::string resources;
+  std::string test_dependencies;
+  for (const auto& slot : set.exercises)
+    for (const auto& v : slot.variants) {
+      const std::string file = item_file(v, slot.n);
+      files.push_back({file, item_xml(set, slot, v)});
+      resources += fmt::format("    <resource identifier=\"{}\" type=\"imsqti_item_xmlv2p1\" href=\"{}\">\n",
+                               item_id(v, slot.n), file);
+      resources += fmt::format("      <file href=\"{}\"/>\n", file);
+      for (const auto& im : v.images) {
+        files.push_back({"images/" + im.name, im.bytes});
+        resources += fmt::format("      <file href=\"images/{}\"/>\n", im.name);
+      }
+      resources += "    </resource>\n";
+      test_dependencies += fmt::format("      <dependency identifierref=\"{}\"/>\n", item_id(v, slot.n));
+    }
+  std::string m = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  const std::string first = set.exercises.empty() || set.exercises.front().variants.empty()
+                                ? std::string("set")
+                                : set.exercises.front().variants.front().sheet_id;
+  m += fmt::format("<manifest {} identifier=\"epure-{}\">\n", kCpNamespace, first);
+  m += "  <metadata><schema>QTIv2.1 Package</schema><schemaversion>1.0.0</schemaversion></metadata>\n";
+  m += "  <organizations/>\n";
+  m += "  <resources>\n";
+  m += "    <resource identifier=\"test\" type=\"imsqti_test_xmlv2p1\" href=\"test.xml\">\n";
+  m += "      <file href=\"test.xml\"/>\n";
+  m += test_dependencies;
+  m += "    </resource>\n";
+  m += resources;
+  m += "  </resources>\n";
+  m += "</manifest>\n";
+  files.front().bytes = std::move(m);
+  return files;
+}
+
+std::string qti_package(const ExportSet& set) { return zip_archive(qti_files(set)); }
+
+}  // namespace epure::exporting
