@@ -12,7 +12,7 @@ for case in "en 1" "fr 2"; do
   set -- $case
   lang=$1 seed=$2 name=seed$2-$1
   "$EPURE" generate --format svg --sheets 2 --seed "$seed" --lang "$lang" --jobs 1 --quiet --out "$tmp/$name" || { echo "generate failed"; exit 1; }
-  rm -f "$tmp/$name/index.html"
+  rm -f "$tmp/$name/index.html" "$tmp/$name/explore.html"  # explore.html: tests/browser
   if [ "${EPURE_UPDATE_GOLDEN:-0}" = 1 ]; then
     rm -rf "$golden/$name"; mkdir -p "$golden"; cp -r "$tmp/$name" "$golden/$name"
     echo "updated $golden/$name"
