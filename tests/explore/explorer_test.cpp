@@ -51,9 +51,9 @@ TEST_CASE("explore: a drag puts the point under the pointer, on hundredths or on
   const json at_b = json::parse(ex::drag(start, "A", b["x"], b["y"], v["frame"].dump(), false));
   CHECK(at_b["A"][0].get<double>() == doctest::Approx(7).epsilon(1e-12));
   CHECK(at_b["A"][1].get<double>() == doctest::Approx(3).epsilon(1e-12));
-  // half-way between A and B: (4, 2), then rounded to hundredths or to the grid
-  const double mx = (a["x"].get<double>() + b["x"].get<double>()) / 2 + 0.3;
-  const double my = (a["y"].get<double>() + b["y"].get<double>()) / 2;
+  // 55% of the way from A to B: (4.3, 2.1), then rounded to hundredths or to the grid
+  const double mx = a["x"].get<double>() + 0.55 * (b["x"].get<double>() - a["x"].get<double>());
+  const double my = a["y"].get<double>() + 0.55 * (b["y"].get<double>() - a["y"].get<double>());
   const json free = json::parse(ex::drag(start, "A", mx, my, v["frame"].dump(), false));
   const json snapped = json::parse(ex::drag(start, "A", mx, my, v["frame"].dump(), true));
   const double x = free["A"][0].get<double>();
