@@ -1,11 +1,12 @@
 #include "render/label_placer.h"
-#include "support/portable.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include "support/portable.h"
 
 namespace epure::render {
 namespace {
