@@ -16,9 +16,9 @@ constexpr std::string_view kConfig = "<script id=\"epure-config\" type=\"applica
 bool explore_available() { return explore_page().has_value(); }
 
 std::string explore_unavailable_message() {
-  return "this epure was built without the explorer page: em++ was not found when it was configured "
-         "(install Debian's emscripten package, then configure and build again; see README, "
-         "\"epure explore\")";
+  return "this epure was built without the explorer page: em++ was not found when it was configured, "
+         "or -DEPURE_EXPLORE=OFF (install Debian's emscripten package, then configure and build again; "
+         "see README, \"epure explore\")";
 }
 
 std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets) {
