@@ -33,6 +33,8 @@ void add_generate_command(CLI::App& app, int& status);
 void add_preview_command(CLI::App& app, int& status);
 // Registers `epure kinds`.
 void add_kinds_command(CLI::App& app, int& status);
+// Registers `epure explore`.
+void add_explore_command(CLI::App& app, int& status);
 // Registers `epure grade`.
 void add_grade_command(CLI::App& app, int& status);
 // Registers `epure export moodle|qti`.

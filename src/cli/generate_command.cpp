@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "exercises/spec.h"
 #include "exercises/worksheet.h"
+#include "output/explore_page.h"
 #include "output/generate.h"
 #include "render/pdf_document.h"
 
@@ -59,6 +60,7 @@ std::string written_files(const output::GenerateOptions& o) {
   if (o.pdf) files += o.split ? "sheets/*.pdf, keys/*.pdf, " : "sheets.pdf, keys.pdf, ";
   files += "key.json";
   if (o.svg) files += ", index.html";
+  if (o.svg && output::explore_available()) files += ", explore.html";
   return files;
 }
 

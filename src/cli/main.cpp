@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "epure " EPURE_VERSION);
   app.require_subcommand(1);
   int status = 0;
+  epure::cli::add_explore_command(app, status);
   epure::cli::add_generate_command(app, status);
   epure::cli::add_grade_command(app, status);
   epure::cli::add_export_command(app, status);

@@ -11,4 +11,8 @@ namespace epure {
 std::optional<std::string_view> embedded_file(std::string_view name);
 std::vector<std::string_view> embedded_files();
 
+// The page of `epure explore` (one self-contained HTML file, src/explore/wasm.cmake), or nothing
+// when this binary was built without emscripten.
+std::optional<std::string_view> explore_page();
+
 }  // namespace epure

@@ -135,6 +135,11 @@ class ExerciseKind {
   // The instance read from a solve input (key.json's "instance"); throws std::runtime_error
   // naming the field.
   virtual std::any read_instance(const nlohmann::json& instance) const;
+  // The key of an instance given from outside (a solve input: key.json's "instance", the
+  // explorer's dragged figure), in the branch its data falls in: statement, worked steps,
+  // construction diagram and answers, as a sheet's key shows them. Throws std::runtime_error
+  // (naming the field) for an instance the kind cannot read or solve.
+  virtual ExerciseInstance key_of(const nlohmann::json& instance, const ExerciseContext& ctx) const;
   // The method run on an instance read by read_instance: with `given`, on the student's own
   // answers where they gave them; with `mistake`, taking that mistake's road. The answers in
   // the order the method reaches them, each with the answers it was computed from.

@@ -11,6 +11,10 @@ std::any ExerciseKind::read_instance(const nlohmann::json&) const {
   throw std::logic_error(fmt::format("{}: not written as a method", name()));
 }
 
+ExerciseInstance ExerciseKind::key_of(const nlohmann::json&, const ExerciseContext&) const {
+  throw std::logic_error(fmt::format("{}: not written as a method", name()));
+}
+
 std::vector<method::Recorded<method::Traced>> ExerciseKind::evaluate(const std::any&, const method::GivenAnswers*,
                                                                      std::string_view, int) const {
   throw std::logic_error(fmt::format("{}: not written as a method", name()));

@@ -14,10 +14,12 @@
 // instance as a solve input (key.json) and read back (grading), the sheet's answer fields and
 // the question ids, the key's expected values (the core's, checked against the method's own
 // double evaluation), exact forms, tolerances, and the student's evaluations for grading.
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <any>
 #include <array>
+#include <stdexcept>
 #include <span>
 #include <string>
 #include <string_view>
@@ -133,6 +135,15 @@ class MethodKind : public ExerciseKind {
   }
 
   std::any read_instance(const nlohmann::json& instance) const override { return read(instance); }
+
+  // A kind's `ExerciseInstance build(const Data&, const ExerciseContext&) const` (the key of
+  // drawn data, its branch that of the data) overrides this, and key_of follows from it.
+  virtual ExerciseInstance build(const Data&, const ExerciseContext&) const {
+    throw std::logic_error(fmt::format("{}: no key for given data", Kind::kName));
+  }
+  ExerciseInstance key_of(const nlohmann::json& instance, const ExerciseContext& ctx) const override {
+    return build(read(instance), ctx);
+  }
 
   std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data, const method::GivenAnswers* given,
                                                          std::string_view mistake, int decimals) const override {

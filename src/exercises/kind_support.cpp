@@ -7,6 +7,7 @@
 
 #include "solve/json_out.h"
 #include "solve/solve.h"
+#include "support/portable.h"
 
 namespace epure::kinds {
 
@@ -161,7 +162,7 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
     q.tolerance = isclose_rule(tols[i], ctx_.decimals, spec);
     if (q.tolerance.kind == ToleranceRule::Kind::distance) {
       // as a whole: within the distance that both coordinates' tolerances allow together
-      q.tolerance.abs = spec && spec->abs ? *spec->abs : std::hypot(tols[0], tols[1]);
+      q.tolerance.abs = spec && spec->abs ? *spec->abs : portable::hypot(tols[0], tols[1]);
       q.tolerance.rel = 0;
       q.tolerance.why = "the point is marked as a whole, by its distance to the expected point";
     }

@@ -22,7 +22,7 @@ Affine2Matrix multiply(const Affine2Matrix& p, const Affine2Matrix& q) {  // p �
 Transform2::Transform2(const Affine2Matrix& m) : m_(m) {
   const double det = exact::difference_of_products(m.a, m.d, m.b, m.c);
   // Singular only when the columns are parallel to rounding: relative to their sizes.
-  const double size = std::hypot(m.a, m.c) * std::hypot(m.b, m.d);
+  const double size = portable::hypot(m.a, m.c) * portable::hypot(m.b, m.d);
   if (!(std::abs(det) > 64 * std::numeric_limits<double>::epsilon() * size))
     throw DegenerateFigure("transform", "singular matrix, no inverse");
   // [a b; c d]⁻¹ = [d −b; −c a] / det, and the translation follows: −M⁻¹·(e, f)
@@ -76,7 +76,8 @@ CosSin cos_sin_degrees(double degrees) {
   const double quarter = std::nearbyint(turns / 90.0);
   const double rest = turns - 90.0 * quarter;
   const double radians = rest * (std::numbers::pi / 180.0);
-  const double c = std::cos(radians), s = std::sin(radians);
+  double c, s;
+  portable::sin_cos_quarter(radians, s, c);  // correctly rounded: the same bits everywhere
   switch (((static_cast<int>(quarter) % 4) + 4) % 4) {
     case 0: return {c, s};
     case 1: return {-s, c};

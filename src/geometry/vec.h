@@ -3,12 +3,12 @@
 // pbrt: a point minus a point is a vector, a point plus a vector is a point, and a transform
 // moves a point with its translation but a vector without it.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 
 #include "geometry/exact.h"
+#include "support/portable.h"
 
 namespace epure::geo {
 
@@ -40,7 +40,7 @@ constexpr Point2 operator-(Point2 p, Vec2 v) { return {p.x - v.x, p.y - v.y}; }
 // perpendicular dot or a nearly parallel cross keeps its sign and its digits.
 inline double dot(Vec2 u, Vec2 v) { return exact::sum_of_products(u.x, v.x, u.y, v.y); }
 inline double cross(Vec2 u, Vec2 v) { return exact::difference_of_products(u.x, v.y, u.y, v.x); }
-inline double norm(Vec2 v) { return std::hypot(v.x, v.y); }
+inline double norm(Vec2 v) { return portable::hypot(v.x, v.y); }
 inline double norm2(Vec2 v) { return dot(v, v); }
 // The vector turned a quarter turn counter-clockwise: u∧perp(u) = ‖u‖².
 constexpr Vec2 perp(Vec2 v) { return {-v.y, v.x}; }
@@ -56,7 +56,7 @@ constexpr Point2 to_point(Vec2 v) { return {v.x, v.y}; }
 // call, and the kernels make several).
 inline double times_pow2(double x, int k) {
   if (k < -1022 || k > 1023) return std::scalbn(x, k);
-  return x * std::bit_cast<double>(static_cast<std::uint64_t>(1023 + k) << 52);
+  return x * portable::bit_cast<double>(static_cast<std::uint64_t>(1023 + k) << 52);
 }
 inline Vec2 times_pow2(Vec2 v, int k) { return {times_pow2(v.x, k), times_pow2(v.y, k)}; }
 inline Point2 times_pow2(Point2 p, int k) { return {times_pow2(p.x, k), times_pow2(p.y, k)}; }
@@ -101,7 +101,7 @@ inline Vec3 cross(Vec3 u, Vec3 v) {
           exact::difference_of_products(u.z, v.x, u.x, v.z),
           exact::difference_of_products(u.x, v.y, u.y, v.x)};
 }
-inline double norm(Vec3 v) { return std::hypot(v.x, v.y, v.z); }
+inline double norm(Vec3 v) { return portable::hypot(v.x, v.y, v.z); }
 inline double norm2(Vec3 v) { return dot(v, v); }
 constexpr Vec3 to_vec(Point3 p) { return {p.x, p.y, p.z}; }
 

@@ -9,7 +9,8 @@
 namespace epure::geo {
 
 double angle_degrees(double cos, double sin) {
-  double degrees = std::atan2(sin, cos) * (180.0 / std::numbers::pi);
+  // correctly rounded: the same bits everywhere (portable.h)
+  double degrees = portable::atan2(sin, cos) * (180.0 / std::numbers::pi);
   // atan2 returns −π for a negative zero sine: the contract's interval is (−180, 180].
   return degrees <= -180.0 ? 180.0 : degrees;
 }

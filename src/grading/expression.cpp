@@ -1,5 +1,7 @@
 #include "grading/expression.h"
 
+#include "support/portable.h"
+
 #include <charconv>
 #include <cstdint>
 #include <cmath>
@@ -62,7 +64,7 @@ bool fast_decimal(std::string_view s, double& out) {
       return true;
     }
   }
-  const auto [end, ec] = std::from_chars(buf, buf + n, out);
+  const auto [end, ec] = portable::parse_double(buf, buf + n, out);
   return ec == std::errc() && end == buf + n && std::isfinite(out);
 }
 
@@ -273,7 +275,7 @@ class Parser {
       return 0;
     }
     double v = 0;
-    std::from_chars(buf, buf + n, v);
+    portable::parse_double(buf, buf + n, v);
     return v;
   }
 

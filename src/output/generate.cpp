@@ -9,6 +9,7 @@
 
 #include "exercises/key_json.h"
 #include "output/atomic_file.h"
+#include "output/explore_page.h"
 #include "output/index_html.h"
 #include "output/parallel.h"
 #include "render/layout.h"
@@ -139,6 +140,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   fmt::memory_buffer key;
   KeyJson::begin(key, set, options.epure_version);
   std::vector<IndexEntry> index;
+  // explore.html beside index.html, every sheet's exercises reachable from their ids
+  const bool explore = options.svg && explore_available();
+  std::vector<ExploreSheet> explore_sheets;
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;
   std::unique_ptr<ClassSetWriter> class_set;
@@ -190,7 +194,12 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
     }
     for (int i = 0; i < count; ++i) {
       KeyJson::sheet(key, sheets[i], start + i == 0);
-      index.push_back({sheets[i].id.str()});
+      index.push_back({sheets[i].id.str(), static_cast<int>(sheets[i].exercises.size())});
+      if (explore) {
+        ExploreSheet& e = explore_sheets.emplace_back();
+        e.id = sheets[i].id.str();
+        for (const auto& x : sheets[i].exercises) e.instances.push_back(x.instance);
+      }
     }
     key_file.write(std::string_view(key.data(), key.size()));
     key.clear();
@@ -208,7 +217,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
                           index_html(set.spec().title, set.spec().course, set.language(), index,
                                      !options.pdf    ? PdfLinks::none
                                      : options.split ? PdfLinks::per_sheet
-                                                     : PdfLinks::class_set));
+                                                     : PdfLinks::class_set,
+                                     explore));
+  if (explore) write_file_atomically(options.out / "explore.html", explore_html(set.language(), explore_sheets));
   return report;
 }
 

@@ -20,10 +20,20 @@ std::string escape(const std::string& s) {
   return out;
 }
 
+// "explore: 1 2 3": each exercise of the sheet in the interactive page, with its own data.
+std::string explore_links(const IndexEntry& e, bool explore) {
+  if (!explore || e.exercises == 0) return {};
+  std::string links = "<p class=\"explore\"><a href=\"explore.html\">explore</a>:";
+  for (int n = 1; n <= e.exercises; ++n)
+    links += fmt::format(" <a href=\"explore.html#{0}.{1}\">{1}</a>", escape(e.id), n);
+  return links + "</p>\n";
+}
+
 }  // namespace
 
 std::string index_html(const std::string& title, const std::string& course,
-                       const std::string& language, const std::vector<IndexEntry>& entries, PdfLinks pdfs) {
+                       const std::string& language, const std::vector<IndexEntry>& entries, PdfLinks pdfs,
+                       bool explore) {
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>{}</title>\n<style>\n"
@@ -46,11 +56,12 @@ std::string index_html(const std::string& title, const std::string& course,
         "<section id=\"s-{0}\">\n<h2>{0}{1}</h2>\n<div class=\"pair\">\n"
         "<a href=\"sheets/{0}.svg\"><img src=\"sheets/{0}.svg\" alt=\"sheet {0}\" loading=\"lazy\"></a>\n"
         "<a href=\"keys/{0}.svg\"><img src=\"keys/{0}.svg\" alt=\"key {0}\" loading=\"lazy\"></a>\n"
-        "</div>\n</section>\n",
+        "</div>\n{2}</section>\n",
         id,
         pdfs == PdfLinks::per_sheet
             ? fmt::format(" <a href=\"sheets/{0}.pdf\">sheet PDF</a> <a href=\"keys/{0}.pdf\">key PDF</a>", id)
-            : std::string());
+            : std::string(),
+        explore_links(e, explore));
   }
   html += "</body>\n</html>\n";
   return html;

@@ -7,6 +7,7 @@ namespace epure::output {
 
 struct IndexEntry {
   std::string id;
+  int exercises = 0;  // linked to explore.html#<id>.<n> when the set wrote explore.html
 };
 
 // Which PDFs were written beside the SVGs, to link them.
@@ -15,6 +16,6 @@ enum class PdfLinks { none, class_set, per_sheet };
 // `title` and `course` are escaped; images load lazily so that 3,000 sheets stay light.
 std::string index_html(const std::string& title, const std::string& course,
                        const std::string& language, const std::vector<IndexEntry>& entries,
-                       PdfLinks pdfs = PdfLinks::none);
+                       PdfLinks pdfs = PdfLinks::none, bool explore = false);
 
 }  // namespace epure::output

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "support/portable.h"
+
 namespace epure::render {
 namespace {
 
@@ -62,7 +64,7 @@ double outside_amount(const Box& b, const Box& area) {
 }
 
 P2 unit(P2 v) {
-  const double n = std::hypot(v.x, v.y);
+  const double n = portable::hypot(v.x, v.y);
   return n > 0 ? P2{v.x / n, v.y / n} : P2{0, 0};
 }
 
@@ -111,7 +113,7 @@ class Placer {
     }
     for (double ring : kFarRings) {
       for (const P2& t : kFine) {
-        const P2 prefer = unit(std::hypot(r.prefer.x, r.prefer.y) > 0 ? r.prefer : P2{1, -1});
+        const P2 prefer = unit(portable::hypot(r.prefer.x, r.prefer.y) > 0 ? r.prefer : P2{1, -1});
         const P2 u{prefer.x * t.x - prefer.y * t.y, prefer.x * t.y + prefer.y * t.x};
         const Box b = candidate(r.anchor, u, r.gap + ring, r.width, r.height);
         if (clean(b) && leader_clear(r.anchor, b)) {
@@ -139,10 +141,10 @@ class Placer {
   // it did.
   template <class F>
   static bool for_each_candidate(const LabelRequest& r, F&& f) {
-    const bool any = std::hypot(r.prefer.x, r.prefer.y) > 0;
+    const bool any = portable::hypot(r.prefer.x, r.prefer.y) > 0;
     const P2 prefer = unit(any ? r.prefer : P2{1, -1});  // above right by default
     const P2 along = unit(r.along);
-    if (std::hypot(along.x, along.y) > 0) {
+    if (portable::hypot(along.x, along.y) > 0) {
       // Beside the stroke: the box's centre on the normal, as far as its half-extent in that
       // direction, so that the stroke's line clears the box; then slid along the stroke.
       P2 n{-along.y, along.x};
@@ -229,7 +231,7 @@ class Placer {
     for (const auto& s : obstacles_.segments) {
       double t0 = 0, t1 = 0;
       if (clip_segment(s.a, s.b, c, t0, t1)) {
-        p += kCrossWeight * (t1 - t0) * std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+        p += kCrossWeight * (t1 - t0) * portable::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
       }
     }
     return p;

@@ -15,6 +15,7 @@
 
 #include "render/font_metrics.h"
 #include "render/text.h"
+#include "support/portable.h"
 
 namespace epure::render {
 namespace {
@@ -68,7 +69,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 P2 add(P2 a, P2 b) { return {a.x + b.x, a.y + b.y}; }
 P2 sub(P2 a, P2 b) { return {a.x - b.x, a.y - b.y}; }
 P2 mul(double k, P2 a) { return {k * a.x, k * a.y}; }
-double norm(P2 v) { return std::hypot(v.x, v.y); }
+double norm(P2 v) { return portable::hypot(v.x, v.y); }
 P2 perp(P2 v) { return {-v.y, v.x}; }  // a quarter turn (counter-clockwise in math space)
 std::optional<P2> unit(P2 v) {
   const double n = norm(v);
@@ -131,8 +132,9 @@ P2 side_direction(Side s) {
 // A grid number as printed: at most two decimals, no trailing zeros, a true minus sign.
 std::string axis_number(double v) {
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, std::abs(v), std::chars_format::fixed, 2);
-  std::string_view s(buf, static_cast<std::size_t>(r.ptr - buf));
+  // fmt's fixed format is exact, as std::to_chars's is (portable.h: not every libc++ has it)
+  const auto r = fmt::format_to_n(buf, sizeof buf, "{:.2f}", std::abs(v));
+  std::string_view s(buf, static_cast<std::size_t>(r.out - buf));
   while (s.back() == '0') s.remove_suffix(1);
   if (s.back() == '.') s.remove_suffix(1);
   if (s == "0" || v > 0) return std::string(s);

@@ -20,6 +20,7 @@
 #include "geometry/segments.h"
 #include "geometry/vectors.h"
 #include "solve/json_out.h"
+#include "support/portable.h"
 
 namespace epure::solve {
 
@@ -243,7 +244,7 @@ class FlatReader {
       x = *exact;
     } else {
       // Out of range (1e400, 1e-400): nlohmann's own wording and value.
-      auto [end, error] = std::from_chars(begin, p_, x);
+      auto [end, error] = portable::parse_double(begin, p_, x);
       if (error != std::errc() || end != p_) return false;
     }
     // nlohmann reads "-0" as the integer 0, which is +0.0.

@@ -13,7 +13,7 @@ for case in "en 1" "fr 2" "en 3 builtin:3d"; do
   set -- $case
   lang=$1 seed=$2 spec=${3:-} name=seed$2-$1${3:+-3d}
   "$EPURE" generate --format svg --sheets 2 --seed "$seed" --lang "$lang" ${spec:+--spec "$spec"} --jobs 1 --quiet --out "$tmp/$name" || { echo "generate failed"; exit 1; }
-  rm -f "$tmp/$name/index.html"
+  rm -f "$tmp/$name/index.html" "$tmp/$name/explore.html"  # explore.html: tests/browser
   if [ "${EPURE_UPDATE_GOLDEN:-0}" = 1 ]; then
     rm -rf "$golden/$name"; mkdir -p "$golden"; cp -r "$tmp/$name" "$golden/$name"
     echo "updated $golden/$name"

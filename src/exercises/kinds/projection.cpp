@@ -119,7 +119,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto p = geo::project(d.A, d.B, d.C);

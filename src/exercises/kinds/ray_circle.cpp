@@ -196,7 +196,7 @@ class RayCircleKind final : public MethodKind<RayCircle> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto rc = solve_core(d);

@@ -129,7 +129,7 @@ class RayEllipseKind final : public MethodKind<RayEllipse> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto r = geo::intersect(world_ray(d), ellipse_of(d));
     const Solved s = solved_of(r);
 

@@ -8,6 +8,7 @@
 
 #include "exercises/kinds/transformed_common.h"
 #include "geometry/box_faces.h"
+#include "support/portable.h"
 
 namespace epure::kinds {
 
@@ -111,7 +112,7 @@ struct RayRectangle {
     }
     const auto in = m.boolean("inside", inside);
     std::optional<Num> best;
-    const double tiny = kAlongSide * std::hypot(method::value(f.uc.x), method::value(f.uc.y));
+    const double tiny = kAlongSide * portable::hypot(method::value(f.uc.x), method::value(f.uc.y));
     for (int i = 0; i < 4; ++i) {
       const Face s = kSides[i];
       const auto u_n = m.note(kStepUn[i], on(f.uc, s));
@@ -194,7 +195,7 @@ class RayRectangleKind final : public MethodKind<RayRectangle> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto r = geo::intersect(world_ray(d), rectangle_of(d));
     const Solved s = solved_of(r);
 

@@ -268,7 +268,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto rs = solve_core(d);

@@ -261,7 +261,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);

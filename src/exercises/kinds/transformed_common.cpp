@@ -1,4 +1,5 @@
 #include "exercises/kinds/transformed_common.h"
+#include "support/portable.h"
 
 #include <fmt/format.h>
 
@@ -36,7 +37,7 @@ std::optional<double> on_grid(Rng& rng, double lo, double hi, Difficulty level) 
 // Half the width and height of the figure's bounding box.
 Vec2 half_extent(Shape shape, double sx, double sy, double angle_deg) {
   const auto [c, s] = geo::cos_sin_degrees(angle_deg);
-  if (shape == Shape::ellipse) return {std::hypot(sx * c, sy * s), std::hypot(sx * s, sy * c)};
+  if (shape == Shape::ellipse) return {portable::hypot(sx * c, sy * s), portable::hypot(sx * s, sy * c)};
   return {sx * std::abs(c) + sy * std::abs(s), sx * std::abs(s) + sy * std::abs(c)};
 }
 

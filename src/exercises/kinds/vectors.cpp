@@ -189,7 +189,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto r = geo::compare_vectors(d.u, d.v);
@@ -227,7 +227,9 @@ class Vectors final : public MethodKind<VectorsMethod> {
     inst.key.add(render::Paragraph{T.format("vectors.step.sin", {{"sin", equals_value(ctx, r.sin, key.exact("sin"))}})});
     inst.key.add(render::Paragraph{
         T.format("vectors.step.angle", {{"angle", equals_value(ctx, r.angle_deg, key.exact("angle_deg"))}})});
-    inst.key.add(render::Paragraph{T.get(fmt::format("vectors.step.{}", ctx.branch))});
+    // the data's own case (the branch drawn, or the explorer's dragged vectors)
+    const char* angle_case = std::abs(r.cos) <= kRightAngleCos ? "right" : r.cos > 0 ? "acute" : "obtuse";
+    inst.key.add(render::Paragraph{T.get(fmt::format("vectors.step.{}", angle_case))});
     inst.key.add(render::Paragraph{T.get(r.cross > 0 ? "vectors.step.ccw" : "vectors.step.cw")});
     inst.key.add(render::Figure{key_scene(d, r, ctx), 0.5});
     add_lines(inst.key, q);

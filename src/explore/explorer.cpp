@@ -1,0 +1,358 @@
+#include "explore/explorer.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <variant>
+#include <vector>
+
+#include "exercises/exercise.h"
+#include "exercises/numbers.h"
+#include "exercises/rng.h"
+#include "exercises/texts.h"
+#include "render/scene_painter.h"
+#include "render/svg_scene.h"
+#include "render/text.h"
+#include "solve/solve.h"
+
+namespace epure::explore {
+
+namespace {
+
+using nlohmann::json;
+using render::Box;
+using render::P2;
+
+// The figure's width in the page, points (the SVG scales to the page's column).
+constexpr double kFigureWidth = 520;
+// Grid steps of a keyboard nudge, and the rounding of dragged data: integers with snap (the
+// exact forms of an easy sheet), hundredths without (data as a worksheet prints it).
+constexpr double kSnapStep = 1, kFreeStep = 0.1, kFreeScale = 100;
+constexpr double kSnapAngle = 15;  // degrees
+
+const ExerciseKind& kind_of(const json& instance) {
+  if (!instance.is_object() || !instance.contains("kind") || !instance["kind"].is_string())
+    throw std::runtime_error("field 'kind': missing");
+  const auto name = instance["kind"].get<std::string>();
+  const ExerciseKind* k = find_kind(name);
+  if (k == nullptr) throw std::runtime_error(fmt::format("field 'kind': no view for '{}'", name));
+  return *k;
+}
+
+json parse(std::string_view text) {
+  json j = json::parse(text, nullptr, false);
+  if (j.is_discarded()) throw std::runtime_error("not a JSON object");
+  return j;
+}
+
+// ---- handles: one per datum, from the solve fields -----------------------------------------
+// A point field (A, B, C, D) is its own handle; a direction (u) is held by its tip, drawn from A
+// (from the origin when the figure has no A: the vectors kind); a radius r by the point C + (r, 0);
+// a pair of sizes with an angle (radii, half) by the ends of the two axes, the first also turning
+// the figure. Fields that are not plane data (3D) have no handle.
+
+bool is_pair(const json& j) { return j.is_array() && j.size() == 2 && j[0].is_number() && j[1].is_number(); }
+P2 pair_of(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
+
+struct Handle {
+  std::string id;
+  P2 at;  // math coordinates
+};
+
+double degrees_of(const json& instance) {
+  return instance.contains("angle") && instance["angle"].is_number() ? instance["angle"].get<double>() : 0.0;
+}
+
+P2 axis(double degrees, int index) {
+  const double a = degrees * std::numbers::pi / 180;
+  return index == 0 ? P2{std::cos(a), std::sin(a)} : P2{-std::sin(a), std::cos(a)};
+}
+
+P2 anchor_of(const json& instance, std::string_view field) {
+  if (field == "u" && instance.contains("A") && is_pair(instance["A"])) return pair_of(instance["A"]);
+  return {0, 0};
+}
+
+std::vector<Handle> handles_of(const json& instance) {
+  std::vector<Handle> out;
+  for (const char* f : {"A", "B", "C", "D"})
+    if (instance.contains(f) && is_pair(instance[f])) out.push_back({f, pair_of(instance[f])});
+  for (const char* f : {"u", "v"})
+    if (instance.contains(f) && is_pair(instance[f])) {
+      const P2 o = anchor_of(instance, f), u = pair_of(instance[f]);
+      out.push_back({f, {o.x + u.x, o.y + u.y}});
+    }
+  const bool centred = instance.contains("C") && is_pair(instance["C"]);
+  const P2 c = centred ? pair_of(instance["C"]) : P2{0, 0};
+  if (centred && instance.contains("r") && instance["r"].is_number())
+    out.push_back({"r", {c.x + instance["r"].get<double>(), c.y}});
+  for (const char* f : {"radii", "half"})
+    if (centred && instance.contains(f) && is_pair(instance[f])) {
+      const P2 s = pair_of(instance[f]);
+      const double deg = degrees_of(instance);
+      for (int i = 0; i < 2; ++i) {
+        const P2 e = axis(deg, i);
+        const double len = i == 0 ? s.x : s.y;
+        out.push_back({fmt::format("{}.{}", f, i), {c.x + len * e.x, c.y + len * e.y}});
+      }
+    }
+  return out;
+}
+
+double quantise(double x, bool snap) {
+  // k / 100 as the nearest double, the one a worksheet's "3.51" denotes
+  return snap ? std::round(x) : std::round(x * kFreeScale) / kFreeScale;
+}
+
+double rounded_size(double x, bool snap) { return quantise(x, snap); }
+
+// The instance with handle `id` at math point m; unchanged when that would zero a datum.
+json moved(json instance, std::string_view id, P2 m, bool snap) {
+  const P2 q{quantise(m.x, snap), quantise(m.y, snap)};
+  const auto set_pair = [&](const char* f, double a, double b) { instance[f] = json::array({a, b}); };
+  if (id == "A" || id == "B" || id == "C" || id == "D") {
+    const std::string f(id);
+    if (!instance.contains(f)) return instance;
+    set_pair(f.c_str(), q.x, q.y);
+    return instance;
+  }
+  if (id == "u" || id == "v") {
+    const std::string f(id);
+    const P2 o = anchor_of(instance, f);
+    const double x = quantise(m.x - o.x, snap), y = quantise(m.y - o.y, snap);
+    if (x == 0 && y == 0) return instance;  // a direction is never zero
+    set_pair(f.c_str(), x, y);
+    return instance;
+  }
+  if (!instance.contains("C") || !is_pair(instance["C"])) return instance;
+  const P2 c = pair_of(instance["C"]);
+  const P2 d{m.x - c.x, m.y - c.y};
+  if (id == "r") {
+    const double r = rounded_size(std::hypot(d.x, d.y), snap);
+    if (r > 0) instance["r"] = r;
+    return instance;
+  }
+  for (const char* f : {"radii", "half"}) {
+    for (int i = 0; i < 2; ++i) {
+      if (id != fmt::format("{}.{}", f, i) || !instance.contains(f) || !is_pair(instance[f])) continue;
+      P2 s = pair_of(instance[f]);
+      if (i == 0) {
+        // the first axis's end: its length, and the figure's angle
+        const double len = rounded_size(std::hypot(d.x, d.y), snap);
+        double deg = std::atan2(d.y, d.x) * 180 / std::numbers::pi;
+        deg = snap ? std::round(deg / kSnapAngle) * kSnapAngle : std::round(deg);
+        if (deg <= -180) deg += 360;
+        if (len <= 0) return instance;
+        s.x = len;
+        instance["angle"] = deg;
+      } else {
+        const P2 e = axis(degrees_of(instance), 1);
+        const double len = rounded_size(std::abs(d.x * e.x + d.y * e.y), snap);
+        if (len <= 0) return instance;
+        s.y = len;
+      }
+      set_pair(f, s.x, s.y);
+      return instance;
+    }
+  }
+  return instance;
+}
+
+// ---- the first panel's frame: math <-> figure (SVG user units) -------------------------------
+
+struct FrameData {
+  Box view, rect;
+};
+
+json frame_json(const FrameData& f) {
+  return {{"view", {f.view.x_min, f.view.y_min, f.view.x_max, f.view.y_max}},
+          {"rect", {f.rect.x_min, f.rect.y_min, f.rect.x_max, f.rect.y_max}}};
+}
+
+std::optional<FrameData> frame_from(std::string_view text) {
+  if (text.empty()) return std::nullopt;
+  const json j = json::parse(text, nullptr, false);
+  const auto box = [&](const char* key, Box& b) {
+    if (!j.is_object() || !j.contains(key) || !j[key].is_array() || j[key].size() != 4) return false;
+    for (const auto& x : j[key])
+      if (!x.is_number()) return false;
+    b = {j[key][0].get<double>(), j[key][1].get<double>(), j[key][2].get<double>(), j[key][3].get<double>()};
+    return b.width() > 0 && b.height() > 0;
+  };
+  FrameData f;
+  if (!box("view", f.view) || !box("rect", f.rect)) return std::nullopt;
+  return f;
+}
+
+// The figure point's math coordinates: render::Frame's map, inverted (one scale, y flipped).
+P2 to_math(const FrameData& f, P2 page) {
+  const render::Frame frame(f.view, f.rect);
+  const P2 corner = frame.to_page({f.view.x_min, f.view.y_max});
+  return {f.view.x_min + (page.x - corner.x) / frame.scale(), f.view.y_max - (page.y - corner.y) / frame.scale()};
+}
+
+// ---- the key as HTML ------------------------------------------------------------------------
+
+void escape_into(std::string& out, std::string_view s) {
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+}
+
+// The label markup (t_{ab}, r^{2}, \vec{AB}) as HTML, through the parser every backend uses.
+std::string rich_html(std::string_view rich) {
+  std::string out;
+  for (const auto& run : render::parse_rich_text(rich)) {
+    std::string text;
+    escape_into(text, run.text);
+    if (run.arrow) text = "<span class=\"vec\">" + text + "</span>";
+    if (run.bold) text = "<b>" + text + "</b>";
+    if (run.shift == render::Shift::sub) text = "<sub>" + text + "</sub>";
+    if (run.shift == render::Shift::super) text = "<sup>" + text + "</sup>";
+    out += text;
+  }
+  return out;
+}
+
+struct KeyView {
+  std::string steps;
+  const render::Scene* figure = nullptr;
+};
+
+KeyView key_view(const render::Section& key) {
+  KeyView v;
+  for (const auto& block : key.blocks) {
+    if (const auto* h = std::get_if<render::Heading>(&block)) {
+      v.steps += fmt::format("<h{0}>{1}</h{0}>\n", h->level + 1, rich_html(h->text));
+    } else if (const auto* p = std::get_if<render::Paragraph>(&block)) {
+      v.steps += fmt::format("<p{}>{}</p>\n", p->emphasis ? " class=\"emphasis\"" : "", rich_html(p->text));
+    } else if (const auto* a = std::get_if<render::AnswerLine>(&block)) {
+      v.steps += fmt::format("<p class=\"answer\" data-question=\"{}\"><span class=\"prompt\">{}</span> {}</p>\n",
+                             a->question_id, rich_html(a->prompt), rich_html(a->answer));
+    } else if (const auto* f = std::get_if<render::Figure>(&block)) {
+      if (v.figure == nullptr) v.figure = &f->scene;
+      v.steps += "<div class=\"figure-here\"></div>\n";
+    }
+  }
+  return v;
+}
+
+ExerciseSpec exercise_spec(std::string_view kind) {
+  ExerciseSpec s;
+  s.kind = std::string(kind);
+  s.difficulty = Difficulty::standard;
+  return s;
+}
+
+// The figure's SVG with the handles drawn over it, as circles the page's script can grab.
+std::string with_handles(std::string svg, const std::vector<Handle>& handles, const FrameData& f) {
+  const render::Frame frame(f.view, f.rect);
+  std::string g = "<g class=\"handles\">";
+  for (const auto& h : handles) {
+    const P2 p = frame.to_page(h.at);
+    g += fmt::format(
+        "<circle class=\"handle\" data-handle=\"{0}\" cx=\"{1:.3f}\" cy=\"{2:.3f}\" r=\"7\" tabindex=\"-1\" "
+        "role=\"slider\" aria-label=\"{0}\"/>",
+        h.id, p.x, p.y);
+  }
+  g += "</g>";
+  const auto end = svg.rfind("</svg>");
+  if (end == std::string::npos) throw std::logic_error("explore: the figure is not an SVG document");
+  svg.insert(end, g);
+  // the XML declaration has no place inside HTML
+  if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
+  return svg;
+}
+
+}  // namespace
+
+std::string solve(std::string_view line) {
+  fmt::memory_buffer out;
+  solve::solve_line(line, out, solve::Semantics::exact);
+  return std::string(out.data(), out.size());
+}
+
+std::string kinds() {
+  json names = json::array();
+  for (std::string_view k : solve::kKinds)
+    if (find_kind(k) != nullptr) names.push_back(k);
+  return names.dump();
+}
+
+std::string starting_instance(std::string_view kind_name) {
+  const ExerciseKind* kind = find_kind(kind_name);
+  if (kind == nullptr) throw std::runtime_error(fmt::format("no view for '{}'", kind_name));
+  const auto branches = kind->default_branches();
+  std::string branch = branches.front().first;
+  double weight = branches.front().second;
+  for (const auto& [b, w] : branches)
+    if (w > weight) branch = b, weight = w;
+  const ExerciseSpec spec = exercise_spec(kind_name);
+  const Texts& texts = Texts::builtin("en");
+  const ExerciseContext ctx{1, spec, texts, NumberStyle::for_language("en"), 2, branch};
+  Rng rng(1);
+  return kind->make(rng, ctx).instance;
+}
+
+std::string view(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
+  json out = json::object();
+  try {
+    const json instance = parse(instance_text);
+    const ExerciseKind& kind = kind_of(instance);
+    out["kind"] = kind.name();
+    out["instance"] = instance.dump();
+    const ExerciseSpec spec = exercise_spec(kind.name());
+    const Texts& texts = Texts::builtin(language);
+    const ExerciseContext ctx{n, spec, texts, NumberStyle::for_language(language), 2, ""};
+    const ExerciseInstance key = kind.key_of(instance, ctx);
+    out["instance"] = key.instance;
+    out["solution"] = json::parse(key.solution);
+    KeyView kv = key_view(key.key);
+    if (kv.figure == nullptr || kv.figure->panels.empty()) throw std::logic_error("explore: the key has no figure");
+    render::Scene scene = *kv.figure;
+    if (auto f = frame_from(frozen)) scene.panels[0].view = f->view;
+    const auto layout = render::layout_scene(scene, 0, 0, kFigureWidth);
+    const FrameData frame{scene.panels[0].view, layout.panels[0]};
+    const auto handles = handles_of(json::parse(key.instance));
+    out["svg"] = with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame);
+    out["steps"] = kv.steps;
+    out["frame"] = frame_json(frame);
+    json hs = json::array();
+    const render::Frame map(frame.view, frame.rect);
+    for (const auto& h : handles) {
+      const P2 p = map.to_page(h.at);
+      hs.push_back({{"id", h.id}, {"x", p.x}, {"y", p.y}});
+    }
+    out["handles"] = hs;
+  } catch (const std::exception& e) {
+    out["error"] = e.what();
+  }
+  return out.dump();
+}
+
+std::string drag(std::string_view instance_text, std::string_view handle, double x, double y,
+                 std::string_view frame_text, bool snap) {
+  const json instance = parse(instance_text);
+  const auto frame = frame_from(frame_text);
+  if (!frame || !std::isfinite(x) || !std::isfinite(y)) return std::string(instance_text);
+  return moved(instance, handle, to_math(*frame, {x, y}), snap).dump();
+}
+
+std::string nudge(std::string_view instance_text, std::string_view handle, int dx, int dy, bool snap) {
+  const json instance = parse(instance_text);
+  const double step = snap ? kSnapStep : kFreeStep;
+  for (const auto& h : handles_of(instance))
+    if (h.id == handle) return moved(instance, handle, {h.at.x + dx * step, h.at.y + dy * step}, snap).dump();
+  return std::string(instance_text);
+}
+
+}  // namespace epure::explore

@@ -1,0 +1,52 @@
+#pragma once
+// The core side of `epure explore` (the interactive page): everything the page shows is
+// computed here, in the same C++ as the sheets, and compiled to WebAssembly (explore_wasm.cpp
+// binds these functions; the page's script only handles input and puts the SVG and the steps it
+// gets into the DOM). Strings in, strings out (JSON text), so that the binding is trivial and
+// the same calls can be made natively.
+//
+// A view is a kind's answer key for the current data: the key's construction diagram (the
+// kind's own key scene, drawn by the SVG backend of the sheets) with a draggable handle per
+// datum, and the key's worked steps in the chosen language. Any kind registered with a key
+// (ExerciseKind::key_of) has a view; its handles follow from its solve fields (handles below).
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "render/scene.h"
+
+namespace epure::explore {
+
+// What `epure solve` prints for that line (exact semantics), without the newline.
+std::string solve(std::string_view line);
+
+// The kinds that have a view, in the contract's order, as a JSON array of names.
+std::string kinds();
+
+// A well-posed instance of `kind` to start from (its generator's first draw at seed 1), as a
+// solve input. Throws std::runtime_error for a kind without a view.
+std::string starting_instance(std::string_view kind);
+
+// The view of `instance` (a solve input) in `language` ("en", "fr"), for exercise `n` of a
+// sheet (1 outside one), as a JSON object:
+//   {"kind", "instance" (canonical text), "solution" (the key's solve output), "svg" (the figure with its handles),
+//    "steps" (HTML of the worked solution), "frame" (the map of the figure's first panel, to be
+//    handed back to drag), "handles": [{"id", "x", "y"}], "error" (only when the data cannot be
+//    solved: then no svg nor steps)}.
+// With `frozen` (a frame this function returned), the first panel keeps that view, so that
+// the figure stays still under a dragging pointer; the kind's own framing comes back on release.
+std::string view(std::string_view instance, std::string_view language, int n = 1,
+                 std::string_view frozen = {});
+
+// The instance with handle `handle` moved to the figure point (x, y) (SVG user units of the
+// view's figure, `frame` as view returned it). With `snap`, points land on the integer grid,
+// sizes on whole numbers and angles on multiples of 15°; otherwise on hundredths. A move that
+// would leave a direction or a size zero is refused (the instance comes back unchanged).
+std::string drag(std::string_view instance, std::string_view handle, double x, double y,
+                 std::string_view frame, bool snap);
+
+// The instance with handle `handle` moved by (dx, dy) grid steps (the arrow keys): one unit
+// with `snap`, a tenth without, in the figure's math coordinates.
+std::string nudge(std::string_view instance, std::string_view handle, int dx, int dy, bool snap);
+
+}  // namespace epure::explore

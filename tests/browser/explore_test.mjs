@@ -1,0 +1,240 @@
+// epure explore in a real browser: Debian's headless chromium, driven by puppeteer-core.
+//   node explore_test.mjs PAGE LINES EXPECTED SET_DIR OUT_DIR
+// PAGE: explore.html written by `epure explore`; LINES / EXPECTED: solve input lines and what
+// `epure solve` printed for them; SET_DIR: a set written by `epure generate` (its explore.html,
+// key.json); OUT_DIR: screenshots and timings.json. Every request outside the page's own file is
+// refused (and counted as a failure). Prints one line per check, then "N passed, M failed".
+import fs from "node:fs";
+import path from "node:path";
+import { pathToFileURL } from "node:url";
+import puppeteer from "puppeteer-core";
+
+const [pagePath, linesPath, expectedPath, setDir, outDir] = process.argv.slice(2);
+fs.mkdirSync(outDir, { recursive: true });
+let passed = 0, failed = 0;
+function check(ok, what, detail = "") {
+  if (ok) passed++;
+  else failed++;
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}${detail ? ": " + detail : ""}`);
+}
+
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+  headless: true,
+  args: ["--no-sandbox", "--disable-gpu", "--allow-file-access-from-files=false"],
+});
+
+// A page on `file`, with every other request refused and every console error recorded.
+async function open(file, hash = "") {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1400, height: 1000, hasTouch: true });
+  const url = pathToFileURL(path.resolve(file)).href;
+  const refused = [], errors = [];
+  await page.setRequestInterception(true);
+  page.on("request", req => {
+    const u = req.url();
+    if (u === url || u === url + hash || u.startsWith("data:")) req.continue();
+    else { refused.push(u); req.abort(); }
+  });
+  page.on("console", msg => { if (msg.type() === "error") errors.push(msg.text()); });
+  page.on("pageerror", err => errors.push(String(err)));
+  await page.goto(url + hash, { waitUntil: "load" });
+  await page.waitForFunction(() => window.epure && window.epure.ready, { timeout: 30000 });
+  return { page, refused, errors };
+}
+
+function quantile(xs, q) {
+  const s = [...xs].sort((a, b) => a - b);
+  if (!s.length) return NaN;
+  return s[Math.min(s.length - 1, Math.floor(q * s.length))];
+}
+
+// ---- 1. epure.solve is `epure solve`, bit for bit ----------------------------------------------
+const lines = fs.readFileSync(linesPath, "utf8").split("\n").filter(l => l.trim() !== "");
+const expected = fs.readFileSync(expectedPath, "utf8").split("\n").filter(l => l !== "");
+check(lines.length === expected.length, "solve: one native result per line", `${lines.length} / ${expected.length}`);
+{
+  const { page, refused, errors } = await open(pagePath);
+  const r = await page.evaluate((lines, expected) => {
+    // equal as values, every number by its bits (Object.is tells -0 from 0)
+    const same = (a, b) => {
+      if (typeof a === "number" || typeof b === "number") return Object.is(a, b);
+      if (Array.isArray(a)) return Array.isArray(b) && a.length === b.length && a.every((x, i) => same(x, b[i]));
+      if (a && typeof a === "object") {
+        const ka = Object.keys(a), kb = Object.keys(b || {});
+        return ka.length === kb.length && ka.every((k, i) => k === kb[i] && same(a[k], b[k]));
+      }
+      return a === b;
+    };
+    const lossless = v => {  // an object whose doubles JSON.stringify keeps (no -0, no infinity)
+      if (typeof v === "number") return Number.isFinite(v) && !Object.is(v, -0);
+      if (Array.isArray(v)) return v.every(lossless);
+      if (v && typeof v === "object") return Object.values(v).every(lossless);
+      return true;
+    };
+    let text = 0, objects = 0, objectsTried = 0;
+    const bad = [], kinds = {};
+    lines.forEach((line, i) => {
+      const want = JSON.parse(expected[i]);
+      const got = window.epure.solve(line);
+      if (same(got, want)) text++;
+      else if (bad.length < 5) bad.push({ line, got: JSON.stringify(got), want: expected[i] });
+      let obj = null;
+      try { obj = JSON.parse(line); } catch (e) { obj = null; }
+      if (obj && typeof obj === "object" && !Array.isArray(obj) && lossless(obj)) {
+        objectsTried++;
+        if (same(window.epure.solve(obj), want)) objects++;
+        else if (bad.length < 5) bad.push({ object: line, got: JSON.stringify(window.epure.solve(obj)), want: expected[i] });
+        if (typeof obj.kind === "string") kinds[obj.kind] = (kinds[obj.kind] || 0) + 1;
+      }
+    });
+    return { text, objects, objectsTried, bad, kinds };
+  }, lines, expected);
+  check(r.text === lines.length, `solve: ${r.text}/${lines.length} lines (as text) equal to epure solve`, JSON.stringify(r.bad));
+  check(r.objects === r.objectsTried, `solve: ${r.objects}/${r.objectsTried} lines (as objects) equal to epure solve`);
+  console.log(`     lines per kind: ${JSON.stringify(r.kinds)}`);
+  check(refused.length === 0 && errors.length === 0, "solve page: no request outside the file, no console error",
+        JSON.stringify({ refused, errors }));
+  await page.close();
+}
+
+// ---- 2. every view: figure, handles, mouse drag, keyboard, touch, timings -------------------------
+const timings = {};
+{
+  const { page, refused, errors } = await open(pagePath);
+  const kinds = await page.evaluate(() => window.epure.kinds());
+  check(kinds.length >= 7, "views: one per 2D kind of the solve contract", kinds.join(" "));
+  for (const kind of kinds) {
+    await page.click(`#views button[data-kind="${kind}"]`);
+    await page.waitForFunction(k => window.epure.current().kind === k, {}, kind);
+    const before = await page.evaluate(() => ({
+      current: window.epure.current(),
+      svg: document.querySelector("#figure svg").outerHTML,
+      steps: document.getElementById("steps").textContent,
+      handles: [...document.querySelectorAll("#figure [data-handle]")].map(h => h.dataset.handle),
+    }));
+    await page.screenshot({ path: path.join(outDir, `view-${kind}.png`) });
+    check(before.handles.length >= 2, `${kind}: handles`, before.handles.join(" "));
+    check(before.steps.length > 100 && !(await page.$eval("#error", e => e.textContent)), `${kind}: worked steps shown`);
+
+    // every handle dragged with the mouse, 12 moves each; the first one is checked in detail
+    const start = await page.evaluate(() => window.epure.timings.length);
+    for (const [index, id] of before.handles.entries()) {
+      const box = await (await page.$(`#figure [data-handle="${id}"]`)).boundingBox();
+      const x = box.x + box.width / 2, y = box.y + box.height / 2;
+      await page.mouse.move(x, y);
+      await page.mouse.down();
+      for (let k = 1; k <= 12; k++) await page.mouse.move(x + 3 * k, y - 2 * k);
+      const during = await page.evaluate(() => ({
+        current: window.epure.current(),
+        svg: document.querySelector("#figure svg").outerHTML,
+        steps: document.getElementById("steps").textContent,
+      }));
+      await page.mouse.up();
+      if (index === 0) {
+        const field = id.split(".")[0];
+        check(JSON.stringify(during.current[field]) !== JSON.stringify(before.current[field]),
+              `${kind}: dragging ${id} moves the datum`, `${JSON.stringify(before.current[field])} -> ${JSON.stringify(during.current[field])}`);
+        check(during.svg !== before.svg, `${kind}: dragging ${id} redraws the figure`);
+        check(during.steps !== before.steps, `${kind}: dragging ${id} updates the numbers`);
+        const moved = await page.$eval(`#figure [data-handle="${id}"]`, h => [h.getAttribute("cx"), h.getAttribute("cy")]);
+        check(JSON.stringify(moved) !== JSON.stringify(before.svg.match(new RegExp(`data-handle="${id.replace(".", "\\.")}" cx="([^"]+)" cy="([^"]+)"`)).slice(1)),
+              `${kind}: the handle ${id} follows`);
+      }
+    }
+    const t = await page.evaluate(s => window.epure.timings.slice(s), start);
+    timings[kind] = { moves: t.length, total_median_ms: quantile(t.map(x => x.total), 0.5), total_p95_ms: quantile(t.map(x => x.total), 0.95),
+                      core_median_ms: quantile(t.map(x => x.core), 0.5), core_p95_ms: quantile(t.map(x => x.core), 0.95) };
+
+    // keyboard: Tab selects the first handle, an arrow moves it by a tenth
+    const k0 = await page.evaluate(() => window.epure.current());
+    await page.focus("#figure");
+    await page.keyboard.press("Escape");  // the last dragged handle is selected: none now
+    await page.keyboard.press("Tab");
+    const selected = await page.$eval("#figure .handle.selected", h => h.dataset.handle).catch(() => null);
+    check(selected === before.handles[0], `${kind}: Tab selects a handle`, String(selected));
+    await page.keyboard.press("Tab");
+    const second = await page.$eval("#figure .handle.selected", h => h.dataset.handle).catch(() => null);
+    check(second === before.handles[1], `${kind}: Tab cycles to the next handle`, String(second));
+    await page.keyboard.press("ArrowUp");
+    const k1 = await page.evaluate(() => window.epure.current());
+    check(JSON.stringify(k1) !== JSON.stringify(k0), `${kind}: an arrow key moves the selected handle`);
+  }
+
+  // touch on one view, snap on another
+  await page.click(`#views button[data-kind="projection"]`);
+  {
+    const box = await (await page.$(`#figure [data-handle="C"]`)).boundingBox();
+    const c0 = await page.evaluate(() => window.epure.current().C);
+    const x = box.x + box.width / 2, y = box.y + box.height / 2;
+    await page.touchscreen.touchStart(x, y);
+    for (let k = 1; k <= 8; k++) await page.touchscreen.touchMove(x - 4 * k, y + 3 * k);
+    await page.touchscreen.touchEnd();
+    const c1 = await page.evaluate(() => window.epure.current().C);
+    check(JSON.stringify(c0) !== JSON.stringify(c1), "projection: a touch drag moves C", `${c0} -> ${c1}`);
+  }
+  await page.click("#snap");
+  {
+    const box = await (await page.$(`#figure [data-handle="A"]`)).boundingBox();
+    const x = box.x + box.width / 2, y = box.y + box.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let k = 1; k <= 10; k++) await page.mouse.move(x + 7 * k, y + 5 * k);
+    await page.mouse.up();
+    const a = await page.evaluate(() => window.epure.current().A);
+    check(a.every(Number.isInteger), "snap: a dragged point lands on the integer grid", JSON.stringify(a));
+  }
+  // the branch follows the data: C dragged past B puts P after B
+  {
+    const fr = await page.evaluate(() => { window.epure.show({ kind: "projection", A: [0, 0], B: [4, 0], C: [6, 3] }); return document.getElementById("steps").textContent; });
+    const inside = await page.evaluate(() => { window.epure.show({ kind: "projection", A: [0, 0], B: [4, 0], C: [2, 3] }); return document.getElementById("steps").textContent; });
+    check(fr !== inside, "projection: the steps change with the branch (after B, between)");
+  }
+  // French
+  await page.select("#lang", "fr");
+  const french = await page.$eval("#steps", e => e.textContent);
+  check(/Exercice|Solution|donc|produit/i.test(french), "language: the steps in French", french.slice(0, 80));
+  await page.screenshot({ path: path.join(outDir, "view-projection-fr.png") });
+  // a degenerate figure is said, not drawn
+  const err = await page.evaluate(() => window.epure.show({ kind: "projection", A: [1, 1], B: [1, 1], C: [2, 3] }));
+  check(typeof err === "string" && err.length > 0, "a degenerate figure gives a clear error", String(err));
+  check(refused.length === 0, "views: no request outside the file", JSON.stringify(refused));
+  check(errors.length === 0, "views: no console error", JSON.stringify(errors));
+  await page.close();
+}
+
+// ---- 3. a student's own exercise from a link ------------------------------------------------------
+{
+  const key = JSON.parse(fs.readFileSync(path.join(setDir, "key.json"), "utf8"));
+  const index = fs.readFileSync(path.join(setDir, "index.html"), "utf8");
+  let good = 0, total = 0;
+  for (const sheet of key.sheets.slice(0, 2)) {
+    for (const ex of sheet.exercises) {
+      total++;
+      const hash = `#${sheet.id}.${ex.n}`;
+      if (!index.includes(`explore.html${hash}"`)) { console.log(`     index.html has no link ${hash}`); continue; }
+      const { page, refused, errors } = await open(path.join(setDir, "explore.html"), hash);
+      const cur = await page.evaluate(() => window.epure.current());
+      const want = typeof ex.instance === "string" ? JSON.parse(ex.instance) : ex.instance;
+      const same = JSON.stringify(cur) === JSON.stringify(want);
+      if (same && !refused.length && !errors.length) good++;
+      else console.log(`     ${hash}: ${JSON.stringify(cur)} vs ${JSON.stringify(want)} ${JSON.stringify({ refused, errors })}`);
+      await page.close();
+    }
+  }
+  check(total > 0 && good === total, `links: explore.html#<sheet id>.<n> opens that exercise (${good}/${total}), linked from index.html`);
+}
+
+await browser.close();
+const all = Object.values(timings).flatMap(t => [t]);
+fs.writeFileSync(path.join(outDir, "timings.json"), JSON.stringify(timings, null, 2) + "\n");
+for (const [kind, t] of Object.entries(timings))
+  console.log(`     timing ${kind}: ${t.moves} moves, total median ${t.total_median_ms.toFixed(2)} ms, p95 ${t.total_p95_ms.toFixed(2)} ms; core median ${t.core_median_ms.toFixed(2)} ms, p95 ${t.core_p95_ms.toFixed(2)} ms`);
+// The target is one frame (p95 <= 16 ms, README); on a loaded two-core CI machine the run checks
+// a guard against regressions, EPURE_BROWSER_P95_MS (default 100 ms), and says whether the target held.
+const worst = Math.max(...all.map(t => t.total_p95_ms));
+const guard = Number(process.env.EPURE_BROWSER_P95_MS || 100);
+console.log(`     timing target (p95 <= 16 ms in every view): ${worst <= 16 ? "met" : "NOT met"}, worst p95 ${worst.toFixed(2)} ms`);
+check(worst <= guard, `timing: pointer move to updated figure and steps, p95 <= ${guard} ms in every view`, `${worst.toFixed(2)} ms`);
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
