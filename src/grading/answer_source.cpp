@@ -218,7 +218,11 @@ SourceInfo read_answers(const std::filesystem::path& path, RowHandler& handler, 
     return info;
   }
   CsvReader reader(path, delimiter);
-  read_csv(reader, handler, info);
+  try {
+    read_csv(reader, handler, info);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(fmt::format("{}: {}", path.string(), e.what()));
+  }
   return info;
 }
 

@@ -550,11 +550,18 @@ std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics
   std::string message;
   const std::size_t start = out.size();
   try {
+    if (line.size() > kMaxLineBytes)
+      throw InputError(fmt::format("line: {} bytes long: a line holds at most {} (1 MiB)", line.size(), kMaxLineBytes));
     FlatReader reader(line);
     if (auto fields = reader.read()) {
       solve(*fields, out, semantics);
     } else {
-      json figure = json::parse(line.begin(), line.end());
+      const json::parser_callback_t shallow = [](int depth, json::parse_event_t event, json&) {
+        if (depth >= kMaxDepth && (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
+          throw InputError(fmt::format("line: nested deeper than {} levels", kMaxDepth));
+        return true;
+      };
+      json figure = json::parse(line.begin(), line.end(), shallow);
       solve_figure(figure, out, semantics);
     }
     return {};
