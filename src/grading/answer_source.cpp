@@ -134,6 +134,13 @@ class JsonRows {
   bool dropped_ = false;
 };
 
+struct TooDeep {};
+
+bool too_deep(int depth, json::parse_event_t event) {
+  return depth >= kMaxJsonDepth &&
+         (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start);
+}
+
 // A JSON array of objects, each handed on as soon as it closes and then dropped.
 template <class Input>
 void read_json_array(Input&& input, RowHandler& handler, SourceInfo& info) {
@@ -142,6 +149,7 @@ void read_json_array(Input&& input, RowHandler& handler, SourceInfo& info) {
   JsonRows rows(handler, info);
   int record = 0;
   auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (too_deep(depth, event)) throw TooDeep{};
     if (depth == 1 && (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end ||
                        event == json::parse_event_t::value)) {
       rows.object(parsed, ++record);
@@ -154,6 +162,8 @@ void read_json_array(Input&& input, RowHandler& handler, SourceInfo& info) {
     (void)rest;
   } catch (const json::parse_error& e) {
     info.stopped = fmt::format("not valid JSON after record {} (byte {}): {}", record, e.byte, e.what());
+  } catch (const TooDeep&) {
+    info.stopped = fmt::format("record {} is nested deeper than {} levels: not an answers file", record + 1, kMaxJsonDepth);
   }
 }
 
@@ -166,9 +176,14 @@ void read_json_lines(std::string_view text, int first_line, SourceInfo& info,
     if (l.find_first_not_of(" \t\r") != std::string_view::npos) {
       json o;
       try {
-        o = json::parse(l);
+        o = json::parse(l, [](int depth, json::parse_event_t event, json&) {
+          if (too_deep(depth, event)) throw TooDeep{};
+          return true;
+        });
       } catch (const json::parse_error&) {
         o = json();  // reported as a row that is not an object
+      } catch (const TooDeep&) {
+        o = json();
       }
       rows.object(o, line);
     } else {

@@ -551,7 +551,7 @@ std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics
   const std::size_t start = out.size();
   try {
     if (line.size() > kMaxLineBytes)
-      throw InputError(fmt::format("line: {} bytes long: a line holds at most {} (1 MiB)", line.size(), kMaxLineBytes));
+      throw InputError(fmt::format("line: longer than {} bytes (1 MiB), the most a line may hold", kMaxLineBytes));
     FlatReader reader(line);
     if (auto fields = reader.read()) {
       solve(*fields, out, semantics);

@@ -1,6 +1,6 @@
 // Sheet ids (src/exercises/sheet_id.cpp): an id read prints back as an id that reads the same;
 // a refusal gives one of its codes; any id written reads back; the check character catches every
-// single mistyped character (README, "Sheet ids").
+// single mistyped character (src/exercises/sheet_id.h).
 #include <cstdint>
 #include <cstring>
 
@@ -46,10 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check(back.id && same(*back.id, id), "an id written does not read back", s);
     if (size >= 11) {
       std::string typo = s;
-      const std::size_t at = std::string_view("0123567890AB").size();
       std::size_t pos = data[9] % 12;
       pos += pos / 4;  // skip the dashes
-      (void)at;
       const char was = typo[pos];
       const char now = kAlphabet[data[10] % 32];
       if (now != was) {
