@@ -62,7 +62,7 @@ bool CsvReader::fill() {
     begin_ = 0;
   }
   if (end_ == buf_.size()) {  // one record longer than the buffer
-    if (end_ > kMaxRecordBytes) too_long();
+    if (end_ > kMaxRecordBytes) too_long(line_);  // line_: where the record being read starts
     buf_.resize(buf_.size() * 2);
   }
   const std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
@@ -189,9 +189,9 @@ bool CsvReader::find_record(std::size_t& end, std::size_t& next, bool& quoted, b
   }
 }
 
-void CsvReader::too_long() const {
+void CsvReader::too_long(int line) const {
   throw std::runtime_error(fmt::format("line {}: a record longer than {} MiB (an unclosed quote?): not an answers file",
-                                       line_, kMaxRecordBytes >> 20));
+                                       line, kMaxRecordBytes >> 20));
 }
 
 void CsvReader::split(std::size_t b, std::size_t e, bool quoted, CsvRecord& r) {
@@ -290,7 +290,7 @@ bool CsvReader::next(CsvRecord& r) {
     }
     r.problem = unclosed ? std::string_view("unclosed_quote") : std::string_view();
     const std::size_t b = begin_;
-    if (stop - b > kMaxRecordBytes) too_long();
+    if (stop - b > kMaxRecordBytes) too_long(r.line);
     begin_ = next;
     if (stop == b) {
       ++blank_lines_;

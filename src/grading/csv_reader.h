@@ -66,7 +66,7 @@ class CsvReader {
   bool fill();  // reads more; false at end of file
   bool find_record(std::size_t& end, std::size_t& next, bool& quoted, bool& unclosed);
   void split(std::size_t begin, std::size_t end, bool quoted, CsvRecord& record);
-  [[noreturn]] void too_long() const;
+  [[noreturn]] void too_long(int line) const;
 
   std::FILE* file_ = nullptr;
   std::vector<char> buf_;
