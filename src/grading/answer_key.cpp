@@ -315,6 +315,9 @@ AnswerKey read_key_json(std::string_view text, std::string_view source) {
     root = json::parse(text.begin(), text.end(), callback);
   } catch (const json::parse_error& e) {
     throw KeyError(fmt::format("{}: not valid JSON (byte {}): {}", source, e.byte, e.what()));
+  } catch (const json::exception& e) {
+    // a number past the doubles' range (1e400) is out_of_range.406, not a parse_error
+    throw KeyError(fmt::format("{}: not valid JSON: {}", source, e.what()));
   }
   Where where{source, {}, {}};
   if (!root.is_object()) where.fail("expected one JSON object, as `epure generate` writes key.json");

@@ -571,6 +571,11 @@ std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics
     std::string_view what = e.what();
     if (auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
     message = fmt::format("line: not valid JSON ({})", what);
+  } catch (const json::out_of_range& e) {
+    // a number past the doubles' range (1e400): not valid as a double either
+    std::string_view what = e.what();
+    if (auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
+    message = fmt::format("line: not valid JSON ({})", what);
   } catch (const InputError& e) {
     message = e.what();
   } catch (const std::exception& e) {
