@@ -317,7 +317,10 @@ AnswerKey read_key_json(std::string_view text, std::string_view source) {
     throw KeyError(fmt::format("{}: not valid JSON (byte {}): {}", source, e.byte, e.what()));
   } catch (const json::exception& e) {
     // a number past the doubles' range (1e400) is out_of_range.406, not a parse_error
-    throw KeyError(fmt::format("{}: not valid JSON: {}", source, e.what()));
+    std::string_view what = e.what();
+    if (const auto close = what.find("] "); what.substr(0, 1) == "[" && close != std::string_view::npos)
+      what.remove_prefix(close + 2);
+    throw KeyError(fmt::format("{}: not valid JSON: {}", source, what));
   }
   Where where{source, {}, {}};
   if (!root.is_object()) where.fail("expected one JSON object, as `epure generate` writes key.json");

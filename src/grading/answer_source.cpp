@@ -136,6 +136,14 @@ class JsonRows {
 
 struct TooDeep {};
 
+// nlohmann's message without its id: "[json.exception.parse_error.101] parse error at …" →
+// "parse error at …"
+std::string_view without_id(std::string_view what) {
+  if (what.substr(0, 1) == "[")
+    if (const auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
+  return what;
+}
+
 bool too_deep(int depth, json::parse_event_t event) {
   return depth >= kMaxJsonDepth &&
          (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start);
@@ -161,11 +169,11 @@ void read_json_array(Input&& input, RowHandler& handler, SourceInfo& info) {
     const json rest = json::parse(std::forward<Input>(input), callback);  // the emptied array
     (void)rest;
   } catch (const json::parse_error& e) {
-    info.stopped = fmt::format("not valid JSON after record {} (byte {}): {}", record, e.byte, e.what());
+    info.stopped = fmt::format("not valid JSON after record {} (byte {}): {}", record, e.byte, without_id(e.what()));
   } catch (const json::exception& e) {
     // a number past the doubles' range (1e400) is out_of_range.406 (found by tests/fuzz: it
     // escaped the reader as nlohmann's raw text)
-    info.stopped = fmt::format("not valid JSON after record {}: {}", record, e.what());
+    info.stopped = fmt::format("not valid JSON after record {}: {}", record, without_id(e.what()));
   } catch (const TooDeep&) {
     info.stopped = fmt::format("record {} is nested deeper than {} levels: not an answers file", record + 1, kMaxJsonDepth);
   }

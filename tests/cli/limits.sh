@@ -97,5 +97,22 @@ s=$?
 [ $s -eq 1 ] || [ $s -eq 2 ] || fail "deep.json: exit status $s, expected 1 or 2"
 says "$tmp/deep-answers.err" "deep.json.*nested deeper than 64 levels"
 
+# a number past the doubles' range: "not valid JSON", not nlohmann's out_of_range escaping
+printf '[{"sheet": "1000-0001-000X", "1.t": 1e400}]\n' >"$tmp/overflow.json"
+"$EPURE" grade --key "$data/key_small.json" --answers "$tmp/overflow.json" -q >"$tmp/overflow.out" 2>"$tmp/overflow.err"
+says "$tmp/overflow.err" "overflow.json.*not valid JSON after record 0: number overflow parsing '1e400'"
+lacks "$tmp/overflow.err" "json.exception"
+python3 - "$data/key_small.json" "$tmp/key-overflow.json" <<'PY'
+import sys
+t = open(sys.argv[1]).read()
+i = t.index('"seed"')
+open(sys.argv[2], "w").write(t[:i] + '"seed": 1e400, "x' + t[i + 1:])
+PY
+"$EPURE" grade --key "$tmp/key-overflow.json" --answers "$data/export_fr.csv" -q >"$tmp/key-overflow.out" 2>"$tmp/key-overflow.err"
+says "$tmp/key-overflow.err" "key-overflow.json: not valid JSON: number overflow parsing '1e400'"
+lacks "$tmp/key-overflow.err" "json.exception"
+printf '{"kind":"vectors","u":[1e400,2],"v":[3,4]}\n' | "$EPURE" solve >"$tmp/solve-overflow.out" 2>/dev/null
+grep -q '"error":"line: not valid JSON (number overflow parsing' "$tmp/solve-overflow.out" || fail "solve 1e400: $(cat "$tmp/solve-overflow.out")"
+
 [ $failed -eq 0 ] && echo "limits: every hostile file refused clearly"
 exit $failed

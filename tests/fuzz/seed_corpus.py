@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of tests/fuzz/corpus/<target>/ from the project's examples, goldens and
 tests, and from realistic exports written out here (French Excel, LibreOffice, Google Sheets,
-Moodle's response report). Crashes kept as regressions (corpus/<target>/regression-*) are left
+Moodle's response report). The crashes kept as regressions (corpus/<target>/regression-*) and
+the long runs' new inputs, minimised with libFuzzer's -merge=1 (corpus/<target>/found-*), are left
 as they are. Run from anywhere: python3 tests/fuzz/seed_corpus.py"""
 import hashlib, json, os, re, sys
 
