@@ -4,6 +4,7 @@
 // (each said on stderr with its file and line), 2 when nothing could be graded.
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -116,7 +117,14 @@ int run_grade(const GradeCliOptions& o) {
   const auto delimiter = delimiter_of(o.delimiter);
   // the key: key.json, or rebuilt from the spec for the ids the answers name
   std::optional<AnswerKey> key;
-  if (!o.key_file.empty()) key = read_key_json(read_text(o.key_file), o.key_file);
+  if (!o.key_file.empty()) {
+    // refused before it is read whole (README, "Limits")
+    std::error_code size_error;
+    const auto bytes = std::filesystem::file_size(o.key_file, size_error);
+    if (!size_error && bytes > kMaxKeyBytes)
+      throw KeyError(fmt::format("{}: {} bytes: a key.json holds at most {} bytes (1 GiB)", o.key_file, bytes, kMaxKeyBytes));
+    key = read_key_json(read_text(o.key_file), o.key_file);
+  }
   SheetCounter counter(key ? &*key : nullptr);
   const SourceInfo dialect = read_answers(o.answers, counter, delimiter);
   if (!key) {

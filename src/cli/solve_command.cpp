@@ -33,6 +33,7 @@ class LineReader {
         pos_ = static_cast<std::size_t>(nl - buffer_.data()) + 1;
         return std::string_view(begin, static_cast<std::size_t>(nl - begin));
       }
+      if (size_ - pos_ > solve::kMaxLineBytes) return too_long();
       if (done_) {
         if (pos_ == size_) return std::nullopt;
         pos_ = size_;  // a last line without its '\n'
@@ -54,6 +55,35 @@ class LineReader {
     const std::size_t got = std::fread(buffer_.data() + size_, 1, buffer_.size() - size_, in_);
     size_ += got;
     if (got == 0) done_ = true;
+  }
+
+  // A line longer than solve::kMaxLineBytes: its first kMaxLineBytes + 1 bytes (solve_line
+  // refuses them, and the line still gives one output line), the rest read past up to its '\n'
+  // without being kept, so that a line of gigabytes takes no more memory than one of 2 MiB.
+  std::string_view too_long() {
+    std::memmove(buffer_.data(), buffer_.data() + pos_, size_ - pos_);
+    size_ -= pos_;
+    pos_ = 0;
+    const std::size_t keep = solve::kMaxLineBytes + 1;
+    if (buffer_.size() < 2 * keep) buffer_.resize(2 * keep);
+    for (;;) {
+      if (auto* nl = static_cast<const char*>(std::memchr(buffer_.data() + keep, '\n', size_ - keep))) {
+        const std::size_t after = static_cast<std::size_t>(nl - buffer_.data()) + 1;
+        std::memmove(buffer_.data() + keep, buffer_.data() + after, size_ - after);
+        size_ = keep + (size_ - after);
+        break;
+      }
+      size_ = keep;
+      if (done_) break;
+      const std::size_t got = std::fread(buffer_.data() + size_, 1, buffer_.size() - size_, in_);
+      size_ += got;
+      if (got == 0) {
+        done_ = true;
+        break;
+      }
+    }
+    pos_ = keep;
+    return std::string_view(buffer_.data(), keep);
   }
 
   std::FILE* in_;

@@ -282,6 +282,9 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
   if (!exercises) throw SpecError(fmt::format("{}: no [[exercise]]: a worksheet needs at least one", source_name));
   const auto* array = exercises->as_array();
   if (!array || array->empty()) r.fail(*exercises, "exercise", "expected [[exercise]] tables");
+  if (array->size() > kMaxExercises)
+    r.fail(*exercises, "exercise",
+           fmt::format("{} [[exercise]] tables: a spec holds at most {}", array->size(), kMaxExercises));
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& node = *array->get(i);
     const auto* t = node.as_table();

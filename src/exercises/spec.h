@@ -49,6 +49,10 @@ struct SpecWords {
   std::string subject;
 };
 
+// At most this many [[exercise]] tables in a spec (README, "Limits"): the course has 8, a long
+// exam 20; more is a mistake, refused before any sheet is drawn (20,000 ran out of memory).
+inline constexpr std::size_t kMaxExercises = 100;
+
 struct WorksheetSpec {
   std::string source;  // where it was read from, for messages
   // In the spec's language. Each may also be written per language, `title = { en = "…",

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "exercises/key_json.h"
 #include "exercises/worksheet.h"
@@ -46,6 +47,42 @@ double number_member(const json& object, const char* name, const Where& where) {
   const json& v = member(object, name, where);
   if (!v.is_number()) where.fail(fmt::format("'{}' must be a number", name));
   return v.get<double>();
+}
+
+// An optional member of `object`, of the type asked, or `fallback` when absent: a value of
+// another type is refused with its name, never read as nlohmann's type_error.
+std::string optional_string(const json& object, const char* name, std::string fallback, const Where& where) {
+  const auto it = object.find(name);
+  if (it == object.end()) return fallback;
+  if (!it->is_string()) where.fail(fmt::format("'{}' must be a string", name));
+  return it->get<std::string>();
+}
+
+bool optional_bool(const json& object, const char* name, bool fallback, const Where& where) {
+  const auto it = object.find(name);
+  if (it == object.end()) return fallback;
+  if (!it->is_boolean()) where.fail(fmt::format("'{}' must be true or false", name));
+  return it->get<bool>();
+}
+
+// An integer from `lo` to `hi` (a JSON number with no fraction: 2 and 2.0 alike).
+std::int64_t integer_member(const json& object, const char* name, std::int64_t lo, std::int64_t hi,
+                            const Where& where) {
+  const json& v = member(object, name, where);
+  const auto refuse = [&] { where.fail(fmt::format("'{}' must be an integer from {} to {}", name, lo, hi)); };
+  if (v.is_number_unsigned()) {
+    if (v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) refuse();
+    return static_cast<std::int64_t>(v.get<std::uint64_t>());
+  }
+  if (v.is_number_integer()) {
+    const auto i = v.get<std::int64_t>();
+    if (i < lo || i > hi) refuse();
+    return i;
+  }
+  if (!v.is_number()) refuse();
+  const double d = v.get<double>();
+  if (!(d >= static_cast<double>(lo) && d <= static_cast<double>(hi)) || d != std::floor(d)) refuse();
+  return static_cast<std::int64_t>(d);
 }
 
 ToleranceRule read_rule(const json& q, const Where& where) {
@@ -200,8 +237,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
   for (const auto& e : exercises) {
     where.item.clear();
     ExerciseKey ex;
-    const double n = number_member(e, "n", where);
-    ex.n = static_cast<int>(n);
+    ex.n = static_cast<int>(integer_member(e, "n", 1, static_cast<std::int64_t>(kMaxExercises), where));
     where.item = fmt::format("exercise {}", ex.n);
     ex.kind = string_member(e, "kind", where);
     if (auto b = e.find("branch"); b != e.end() && b->is_string()) ex.branch = b->get<std::string>();
@@ -259,9 +295,16 @@ AnswerKey read_key_json(std::string_view text, std::string_view source) {
   key.info.source = std::string(source);
   bool in_sheets = false;
   // Each sheet is converted as soon as its object closes, and dropped from the tree.
+  if (text.size() > kMaxKeyBytes)
+    throw KeyError(fmt::format("{}: {} bytes: a key.json holds at most {} bytes (1 GiB)", source, text.size(),
+                               kMaxKeyBytes));
   auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > kMaxKeyDepth && (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
+      throw KeyError(fmt::format("{}: nested deeper than {} levels: not a key.json", source, kMaxKeyDepth));
     if (depth == 1 && event == json::parse_event_t::key) in_sheets = parsed == "sheets";
     if (depth == 2 && in_sheets && event == json::parse_event_t::object_end) {
+      if (key.sheets().size() >= static_cast<std::size_t>(kMaxSheets))
+        throw KeyError(fmt::format("{}: more than {} sheets: a set holds at most {}", source, kMaxSheets, kMaxSheets));
       key.add(read_sheet_json(parsed, source));
       return false;
     }
@@ -272,29 +315,34 @@ AnswerKey read_key_json(std::string_view text, std::string_view source) {
     root = json::parse(text.begin(), text.end(), callback);
   } catch (const json::parse_error& e) {
     throw KeyError(fmt::format("{}: not valid JSON (byte {}): {}", source, e.byte, e.what()));
+  } catch (const json::exception& e) {
+    // a number past the doubles' range (1e400) is out_of_range.406, not a parse_error
+    std::string_view what = e.what();
+    if (const auto close = what.find("] "); what.substr(0, 1) == "[" && close != std::string_view::npos)
+      what.remove_prefix(close + 2);
+    throw KeyError(fmt::format("{}: not valid JSON: {}", source, what));
   }
   Where where{source, {}, {}};
   if (!root.is_object()) where.fail("expected one JSON object, as `epure generate` writes key.json");
   const json& spec = member(root, "spec", where);
   where.item = "spec";
-  key.info.title = spec.value("title", std::string{});
-  key.info.language = spec.value("language", std::string("en"));
-  key.info.decimals = spec.value("decimals", 2);
-  key.info.follow_through = spec.value("follow_through", true);
+  if (!spec.is_object()) where.fail("expected an object");
+  key.info.title = optional_string(spec, "title", {}, where);
+  key.info.language = optional_string(spec, "language", "en", where);
+  if (spec.contains("decimals")) key.info.decimals = static_cast<int>(integer_member(spec, "decimals", 0, 6, where));
+  key.info.follow_through = optional_bool(spec, "follow_through", true, where);
   if (const auto it = spec.find("scale"); it != spec.end()) {
     if (!it->is_number() || !(it->get<double>() > 0)) where.fail("'scale' must be a positive number");
     key.info.scale = it->get<double>();
   }
-  key.info.spec_text = spec.value("text", std::string{});
-  key.info.spec_source = spec.value("source", std::string{});
+  key.info.spec_text = optional_string(spec, "text", {}, where);
+  key.info.spec_source = optional_string(spec, "source", {}, where);
   where.item.clear();
-  const json& seed = member(root, "seed", where);
-  if (!seed.is_number_unsigned() && !seed.is_number_integer()) where.fail("'seed' must be an integer");
-  key.info.seed = seed.get<std::uint64_t>();
+  key.info.seed = static_cast<std::uint64_t>(integer_member(root, "seed", 0, static_cast<std::int64_t>(kMaxSeed), where));
   const json& version = member(root, "version", where);
   where.item = "version";
   key.info.epure_version = string_member(version, "epure", where);
-  key.info.draw_version = static_cast<int>(number_member(version, "draw", where));
+  key.info.draw_version = static_cast<int>(integer_member(version, "draw", 0, 31, where));
   where.item.clear();
   if (!root.contains("sheets")) where.fail("missing 'sheets'");
   if (key.sheets().empty()) where.fail("the key has no sheets");

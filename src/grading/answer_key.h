@@ -140,6 +140,11 @@ class AnswerKey {
   std::map<std::string, std::string> refused_;
 };
 
+// Limits on what key.json may hold (README, "Limits"): `epure generate` writes at most
+// kMaxSheets sheets (about 13 kB each for the course), nested 7 levels deep.
+inline constexpr std::size_t kMaxKeyBytes = std::size_t(1) << 30;  // 1 GiB
+inline constexpr int kMaxKeyDepth = 64;
+
 // Reads key.json. Throws KeyError "<source>: …" for a file that is not a key; a key from
 // another epure version is read (it carries every number and rule grading needs) and its
 // versions are left in `info` for the caller to compare.

@@ -12,6 +12,12 @@
 
 namespace epure::grading {
 
+// How deep a JSON answers file may nest (README, "Limits"): a record is two levels deep (three
+// with "answers"), a point or a face list one more. Deeper, the reading stops (an array) or the
+// line is a row that is not an object (JSON Lines), before a file of [[[[… builds a tree of
+// gigabytes (20 MB of '[' took 4 GB).
+inline constexpr int kMaxJsonDepth = 64;
+
 struct AnswerRow {
   int line = 0;       // CSV: the physical line; JSON: the line (JSON Lines) or the record number
   int last_line = 0;

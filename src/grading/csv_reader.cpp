@@ -61,7 +61,10 @@ bool CsvReader::fill() {
     end_ -= begin_;
     begin_ = 0;
   }
-  if (end_ == buf_.size()) buf_.resize(buf_.size() * 2);  // one record longer than the buffer
+  if (end_ == buf_.size()) {  // one record longer than the buffer
+    if (end_ > kMaxRecordBytes) too_long(line_);  // line_: where the record being read starts
+    buf_.resize(buf_.size() * 2);
+  }
   const std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
   end_ += got;
   if (got == 0) eof_ = true;
@@ -186,7 +189,14 @@ bool CsvReader::find_record(std::size_t& end, std::size_t& next, bool& quoted, b
   }
 }
 
+void CsvReader::too_long(int line) const {
+  throw std::runtime_error(fmt::format("line {}: a record longer than {} MiB (an unclosed quote?): not an answers file",
+                                       line, kMaxRecordBytes >> 20));
+}
+
 void CsvReader::split(std::size_t b, std::size_t e, bool quoted, CsvRecord& r) {
+  // one cell past the limit is enough to refuse the record (next() does)
+  const std::size_t limit_ = std::min(this->limit_, kMaxCells + 1);
   char* buf = buf_.data();
   r.cells.clear();
   if (!quoted) {
@@ -280,12 +290,15 @@ bool CsvReader::next(CsvRecord& r) {
     }
     r.problem = unclosed ? std::string_view("unclosed_quote") : std::string_view();
     const std::size_t b = begin_;
+    if (stop - b > kMaxRecordBytes) too_long(r.line);
     begin_ = next;
     if (stop == b) {
       ++blank_lines_;
       continue;
     }
     split(b, stop, quoted, r);
+    if (r.cells.size() > kMaxCells)
+      throw std::runtime_error(fmt::format("line {}: more than {} cells in a record: not an answers file", r.line, kMaxCells));
     if (unclosed) r.problem = "unclosed_quote";
     return true;
   }

@@ -24,6 +24,11 @@
 
 namespace epure::grading {
 
+// Limits on a record (README, "Limits"): past them the reading stops with an error naming the
+// line, instead of holding a file-sized record (an unclosed quote) or 200,000 cells in memory.
+inline constexpr std::size_t kMaxRecordBytes = std::size_t(16) << 20;  // 16 MiB
+inline constexpr std::size_t kMaxCells = 4096;
+
 struct CsvRecord {
   int line = 0;       // physical line where the record starts, 1-based
   int last_line = 0;  // where it ends (a quoted cell may span lines)
@@ -61,6 +66,7 @@ class CsvReader {
   bool fill();  // reads more; false at end of file
   bool find_record(std::size_t& end, std::size_t& next, bool& quoted, bool& unclosed);
   void split(std::size_t begin, std::size_t end, bool quoted, CsvRecord& record);
+  [[noreturn]] void too_long(int line) const;
 
   std::FILE* file_ = nullptr;
   std::vector<char> buf_;

@@ -31,6 +31,12 @@ bool valid_utf8(std::string_view s) {
     if (i + extra >= s.size()) return false;
     for (int k = 1; k <= extra; ++k)
       if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+    // RFC 3629: no overlong form (E0 80–9F, F0 80–8F), no surrogate (ED A0–BF), nothing past
+    // U+10FFFF (F4 90–BF); tests/fuzz found these taken as UTF-8 and written out as they came
+    const auto second = static_cast<unsigned char>(s[i + 1]);
+    if ((c == 0xe0 && second < 0xa0) || (c == 0xed && second > 0x9f) || (c == 0xf0 && second < 0x90) ||
+        (c == 0xf4 && second > 0x8f))
+      return false;
     i += 1 + extra;
   }
   return true;

@@ -97,19 +97,55 @@ class JsonWriter {
   bool after_key_ = false;
 };
 
+// The length of the UTF-8 character at the start of `s` (RFC 3629: no overlong form, no
+// surrogate, nothing past U+10FFFF), or 0 when it is not one.
+inline std::size_t utf8_char_length(std::string_view s) {
+  const auto at = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const auto tail = [&](std::size_t k) { return k < s.size() && (at(k) & 0xc0) == 0x80; };
+  const unsigned c = at(0);
+  if (c < 0x80) return 1;
+  if (c >= 0xc2 && c <= 0xdf) return tail(1) ? 2 : 0;
+  if (c >= 0xe0 && c <= 0xef) {
+    if (!tail(1) || !tail(2)) return 0;
+    if ((c == 0xe0 && at(1) < 0xa0) || (c == 0xed && at(1) > 0x9f)) return 0;
+    return 3;
+  }
+  if (c >= 0xf0 && c <= 0xf4) {
+    if (!tail(1) || !tail(2) || !tail(3)) return 0;
+    if ((c == 0xf0 && at(1) < 0x90) || (c == 0xf4 && at(1) > 0x8f)) return 0;
+    return 4;
+  }
+  return 0;
+}
+
 inline void JsonWriter::string_literal(std::string_view s) {
   buf_.push_back('"');
   // Keys and names need no escape: copy them whole.
   const bool plain = std::all_of(s.begin(), s.end(), [](char ch) {
-    return static_cast<unsigned char>(ch) >= 0x20 && ch != '"' && ch != '\\';
+    const auto c = static_cast<unsigned char>(ch);
+    return c >= 0x20 && c < 0x80 && ch != '"' && ch != '\\';
   });
   if (plain) {
     append(s);
     buf_.push_back('"');
     return;
   }
-  for (char ch : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char ch = s[i];
     auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x80) {
+      // JSON text is UTF-8: a byte that starts no character (an error message quoting a bad
+      // input, a name in Windows-1252) is written as U+FFFD, never as itself
+      const std::size_t n = utf8_char_length(s.substr(i));
+      if (n == 0) {
+        append("\\ufffd");
+        ++i;
+      } else {
+        append(s.substr(i, n));
+        i += n;
+      }
+      continue;
+    }
     switch (ch) {
       case '"': append("\\\""); break;
       case '\\': append("\\\\"); break;
@@ -120,6 +156,7 @@ inline void JsonWriter::string_literal(std::string_view s) {
         if (c < 0x20) fmt::format_to(std::back_inserter(buf_), "\\u{:04x}", c);
         else buf_.push_back(ch);
     }
+    ++i;
   }
   buf_.push_back('"');
 }

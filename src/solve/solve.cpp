@@ -559,17 +559,29 @@ std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics
   std::string message;
   const std::size_t start = out.size();
   try {
+    if (line.size() > kMaxLineBytes)
+      throw InputError(fmt::format("line: longer than {} bytes (1 MiB), the most a line may hold", kMaxLineBytes));
     FlatReader reader(line);
     if (auto fields = reader.read()) {
       solve(*fields, out, semantics);
     } else {
-      json figure = json::parse(line.begin(), line.end());
+      const json::parser_callback_t shallow = [](int depth, json::parse_event_t event, json&) {
+        if (depth >= kMaxDepth && (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
+          throw InputError(fmt::format("line: nested deeper than {} levels", kMaxDepth));
+        return true;
+      };
+      json figure = json::parse(line.begin(), line.end(), shallow);
       solve_figure(figure, out, semantics);
     }
     return {};
   } catch (const json::parse_error& e) {
     // nlohmann says "[json.exception.parse_error.101] parse error at line 1, column 30: ...":
     // keep the part after the id.
+    std::string_view what = e.what();
+    if (auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
+    message = fmt::format("line: not valid JSON ({})", what);
+  } catch (const json::out_of_range& e) {
+    // a number past the doubles' range (1e400): not valid as a double either
     std::string_view what = e.what();
     if (auto close = what.find("] "); close != std::string_view::npos) what.remove_prefix(close + 2);
     message = fmt::format("line: not valid JSON ({})", what);

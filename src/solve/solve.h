@@ -34,6 +34,10 @@ enum class Semantics {
 void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out,
                   Semantics semantics = Semantics::worksheet);
 
+// Limits on a line (README, "Limits"): a figure is a few hundred bytes and two levels deep.
+inline constexpr std::size_t kMaxLineBytes = std::size_t(1) << 20;  // 1 MiB
+inline constexpr int kMaxDepth = 32;
+
 // One line of JSON Lines: parses, solves and appends the result object, or {"error": "..."}.
 // Never throws. Returns the error message, empty when the line was solved. `epure solve` asks
 // for Semantics::exact; without it, a line is solved as a worksheet's (the answer keys' call).
