@@ -253,7 +253,7 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto rc = solve_core(d);

@@ -164,7 +164,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
   }
 
  private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const {
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
     const auto r = geo::compare_vectors_3d(d.u, d.v);
