@@ -33,7 +33,9 @@ TEST_CASE("explore: every 2D kind has a view with its handles, steps and the key
     const json v = view_of(ex::starting_instance(kind));
     REQUIRE_FALSE(v.contains("error"));
     CHECK(v["kind"] == kind);
-    CHECK(v["handles"].size() >= 2);
+    // The 3D views have no drag handles yet (a drag on a projected view needs a plane to move in).
+    if (kind == "ray_sphere" || kind == "ray_cube") CHECK(v["handles"].empty());
+    else CHECK(v["handles"].size() >= 2);
     const std::string svg = v["svg"];
     for (const auto& h : v["handles"]) CHECK(svg.find("data-handle=\"" + h["id"].get<std::string>() + "\"") != std::string::npos);
     CHECK(svg.find("<svg") != std::string::npos);
