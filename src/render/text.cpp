@@ -142,7 +142,13 @@ std::vector<Word> words(std::string_view rich) {
     const char close = rich[open] == '(' ? ')' : ']';
     int depth = 0;
     for (std::size_t j = open; j < rich.size() && j - open < kShortGroup; ++j) {
-      if (rich[j] == rich[open]) ++depth;
+      if (rich[j] == '\\' && j + 1 < rich.size() && escapable(rich[j + 1])) {
+        ++j;
+      } else if (rich[j] == '{') {  // a markup group is skipped whole, as words() skips it
+        const std::size_t close_brace = closing_brace(rich, j);
+        if (close_brace == npos) return npos;
+        j = close_brace;
+      } else if (rich[j] == rich[open]) ++depth;
       else if (rich[j] == close && --depth == 0) return j;
     }
     return npos;

@@ -202,6 +202,11 @@ inline constexpr DD kHalfPi{0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54};
 
 // sin x and cos x for |x| <= π/4, correctly rounded (above).
 inline void sin_cos_quarter(double x, double& s, double& c) {
+  if (x == 0) {  // exactly ±0: sin keeps the sign of zero (the series would add +0)
+    s = x;
+    c = 1;
+    return;
+  }
   detail::DD ds, dc;
   detail::dd_sin_cos({x, 0}, ds, dc);
   s = ds.hi + ds.lo;
@@ -216,6 +221,9 @@ inline double atan2(double y, double x) {
   using namespace detail;
   const double a = std::atan2(y, x);
   if (!std::isfinite(x) || !std::isfinite(y) || x == 0 || y == 0) return a;
+  // Below the normal range the scaling further down would lose y's bits; there atan(y/x) is y/x
+  // to far below an ulp, and the division is correctly rounded (and keeps the sign of a −0).
+  if (x > 0 && std::fabs(a) < 0x1p-1000) return y / x;
   // both near 1 in size (exact), so that no product below under- or overflows
   int e = 0;
   std::frexp(std::fabs(x) > std::fabs(y) ? x : y, &e);

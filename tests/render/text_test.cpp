@@ -151,6 +151,13 @@ TEST_CASE("wrap_rich_text: no break inside a formula nor before French punctuati
                  CHECK((line.size() < 3 || line.compare(line.size() - 3, 3, " «") != 0));
                });
   }
+  SUBCASE("5. a bracket closed inside a markup group does not glue the rest of the line") {
+    const std::string text = "(a_{b)} c d e f g h i j k (f ; g) h";
+    every_wrap(text, "(f ; g)", [](const std::string& line, std::size_t, std::size_t) {
+      CHECK((line.find("(f") == std::string::npos || line.find("(f ; g)") != std::string::npos));
+    });
+    CHECK(wrap_rich_text(text, size, text_width("c d e f", size)).size() > 3);
+  }
   SUBCASE("4. a glued run wider than the line still wraps, at its own spaces") {
     const auto lines = wrap_rich_text("x = a + b + c + d + e + f + g + h", size, 25);
     CHECK(lines.size() > 2);

@@ -85,6 +85,12 @@ TEST_CASE("portable: sin, cos and atan2 correctly rounded (values from mpmath at
   p::sin_cos_quarter(0, s, c);
   CHECK(bits(s) == bits(0.0));
   CHECK(c == 1);
+  p::sin_cos_quarter(-0.0, s, c);  // the sign of zero kept
+  CHECK(bits(s) == bits(-0.0));
+  // below the normal range atan2 is y/x, correctly rounded, the sign of a zero kept
+  CHECK(bits(p::atan2(1e-310, 3.0)) == bits(1e-310 / 3.0));
+  CHECK(bits(p::atan2(-1e-300, 1e300)) == bits(-0.0));
+  CHECK(bits(p::atan2(0x1p-1060, 0x1.8p0)) == bits(0x1p-1060 / 0x1.8p0));
   // arguments where glibc's sin and cos round the other way
   p::sin_cos_quarter(-0x1.bf0b19459991fp-4, s, c);
   CHECK(bits(s) == bits(-0x1.be2807714e255p-4));
