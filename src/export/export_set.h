@@ -47,17 +47,33 @@ struct Option {
   bool right = false;
 };
 
-// One graded answer field: a number, a choice (one of) or a set of faces (any of).
+// One answer field: a number, a choice (one of) or a set of faces (any of).
 struct Part {
   enum class Type { number, choice, faces };
   std::string question_id;  // "2.P.x", as key.json names it
   Type type = Type::number;
+  // false: a field the sheet prints but this case does not ask (t after a miss, the reason of a
+  // hit). It is shown all the same, so that the question's shape does not tell the case, and
+  // marked for nothing, as on paper (points 0, no right value, no mistakes).
+  bool asked = true;
   double points = 1;
   double value = 0;  // number: the key's value
   double width = 0;  //   and the absolute half-width accepted, never looser than the key's rule
+  // A coordinate of a point the key marks as a whole (a spec's whole_point): the distance to the
+  // key's point that is accepted (the key's rule); `width` is then the per-coordinate square
+  // inside that disc, for a platform that can only test coordinates one at a time.
+  double radius = 0;
   std::vector<Option> options;  // choice, faces ("none" last, for a set that may be empty)
   std::vector<MistakeAnswer> mistakes;  // in the order grading tries them
 };
+
+// Every set of sides a faces part can be answered with, as the sheet's boxes allow any of them
+// to be ticked (a named mistake may tick both sides of an axis): each as its option ids (empty:
+// none), by size, then in the options' order (16 sets for the square's four sides, 64 for the
+// cube's six faces).
+std::vector<std::vector<std::string>> face_sets(const Part& faces);
+// A set's wording, from the part's option wordings: "+x, −y", or the "none" option's.
+std::string face_set_html(const Part& faces, const std::vector<std::string>& set);
 
 // The question's body, in the sheet's order.
 struct Block {
@@ -66,6 +82,7 @@ struct Block {
   int image = -1;           // image: index in Variant::images
   std::vector<int> parts;   // field: its parts (two for a point: x then y)
   bool point = false;       // field: a point, written (x, y)
+  bool whole_point = false; // field: a point marked as a whole (its parts carry the radius)
 };
 
 // One student's instance of one exercise: one online question.
@@ -80,6 +97,10 @@ struct Variant {
 
 struct ExerciseSlot {
   int n = 0;
+  // The question ids some variant prints but does not ask: every variant then says that such a
+  // box is not marked (export.not_asked_hint), and a platform that needs a right option in every
+  // list offers "— (does not apply)" in these lists on every variant, so that neither tells the case.
+  std::vector<std::string> not_asked;
   std::string kind;
   std::string title;  // "Projection of a point on a line", in the set's language
   std::vector<Variant> variants;  // in sheet order
@@ -90,6 +111,8 @@ struct ExportSet {
   std::string title;
   std::string language;
   std::vector<ExerciseSlot> exercises;
+  std::string not_asked_feedback_html;  // what a box that is not asked says when filled in
+  std::string does_not_apply_html;      // the option a list adds for a case that does not ask it
 };
 
 // Reads DIR/key.json and draws every exercise of every sheet again in `language` (the set's

@@ -79,7 +79,12 @@ std::string cloze_escape(std::string_view html) {
       case '}': out += "&#125;"; break;
       case '#': out += "&#35;"; break;
       case '~': out += "&#126;"; break;
-      case '\\': out += "&#92;"; break;
+      // the importer decodes entities once and then turns \\} into }: a backslash stays an
+      // entity after that decoding, so that it never meets a brace
+      case '\\': out += "&amp;#92;"; break;
+      // an answer's first = or % would read as its grade
+      case '=': out += "&#61;"; break;
+      case '%': out += "&#37;"; break;
       default: out.push_back(c);
     }
   }
@@ -107,10 +112,57 @@ std::string moodle_fraction(double percent) {
   throw ExportError(fmt::format("{}% is not one of Moodle's grades", percent));
 }
 
-std::string cloze_part(const Part& part, int weight) {
+namespace {
+
+// The options of a list, each with its wording, whether it is right and the feedback it gives.
+struct ListOption {
+  std::string html;
+  bool right = false;
+  std::string feedback_html;
+};
+
+std::string multichoice(const std::vector<ListOption>& options) {
+  std::string s = "MULTICHOICE:";
+  bool first = true;
+  for (const auto& o : options) {
+    if (!first) s += '~';
+    first = false;
+    s += o.right ? "=" : "";
+    s += cloze_escape(o.html);
+    if (!o.feedback_html.empty()) s += '#' + cloze_escape(o.feedback_html);
+  }
+  return s;
+}
+
+// A mistake's set of faces as face_sets() spells it ("none" is the empty set).
+std::vector<std::string> as_set(const std::vector<std::string>& options) {
+  std::vector<std::string> out;
+  for (const auto& o : options)
+    if (o != "none") out.push_back(o);
+  return out;
+}
+
+bool same_set(std::vector<std::string> a, std::vector<std::string> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a == b;
+}
+
+}  // namespace
+
+std::string cloze_part(const Part& part, int weight, const ClozeContext& context) {
   std::string s = fmt::format("{{{}:", weight);
+  const std::string_view not_asked_feedback = part.asked ? std::string_view() : context.not_asked_feedback_html;
   switch (part.type) {
     case Part::Type::number: {
+      if (!part.asked) {
+        // Marked for nothing, but a box like a number's: a dash (any of the usual ones) is
+        // taken as "nothing to give", anything else says that nothing is asked here.
+        s += "SHORTANSWER:=-~=\u2013~=\u2014~=\u2212";
+        s += fmt::format("~%0%*#{}", cloze_escape(context.not_asked_feedback_html));
+        s += fmt::format("~%0%{}", kWideWrong.substr(3, kWideWrong.size() - 3 - 2));
+        break;
+      }
       s += fmt::format("NUMERICAL:={}:{}", shortest(part.value), shortest(part.width));
       for (const auto& m : part.mistakes)
         s += fmt::format("~%0%{}:{}#{}", shortest(m.value), shortest(m.width), cloze_escape(m.feedback_html));
@@ -119,40 +171,38 @@ std::string cloze_part(const Part& part, int weight) {
       break;
     }
     case Part::Type::choice: {
-      s += "MULTICHOICE:";
-      bool first = true;
+      std::vector<ListOption> options;
       for (const auto& o : part.options) {
-        if (!first) s += '~';
-        first = false;
-        s += o.right ? "=" : "";
-        s += cloze_escape(o.html);
+        ListOption l{o.html, o.right, std::string(not_asked_feedback)};
         for (const auto& m : part.mistakes)
           if (m.options.front() == o.id) {
-            s += '#' + cloze_escape(m.feedback_html);
+            l.feedback_html = m.feedback_html;
             break;
           }
+        options.push_back(std::move(l));
       }
+      if (context.does_not_apply_offered) options.push_back({context.does_not_apply_html, !part.asked, {}});
+      s += multichoice(options);
       break;
     }
     case Part::Type::faces: {
-      // each right option 1/k of the part, each wrong one −1/k (as Moodle's own default)
-      int right = 0;
-      for (const auto& o : part.options) right += o.right ? 1 : 0;
-      const std::string plus = moodle_fraction(100.0 / right), minus = moodle_fraction(-100.0 / right);
-      s += "MULTIRESPONSE:";
-      bool first = true;
-      for (const auto& o : part.options) {
-        if (!first) s += '~';
-        first = false;
-        s += fmt::format("%{}%{}", o.right ? plus : minus, cloze_escape(o.html));
-        // a wrong option ticked: the first named mistake that ticks it says why
-        if (!o.right)
-          for (const auto& m : part.mistakes)
-            if (std::find(m.options.begin(), m.options.end(), o.id) != m.options.end()) {
-              s += '#' + cloze_escape(m.feedback_html);
-              break;
-            }
+      // One list of the candidate sets, the whole set right or wrong, as the key marks it
+      // (a MULTIRESPONSE would give part marks for part of the set).
+      std::vector<std::string> right;
+      for (const auto& o : part.options)
+        if (o.right && o.id != "none") right.push_back(o.id);
+      std::vector<ListOption> options;
+      for (const auto& set : face_sets(part)) {
+        ListOption l{face_set_html(part, set), part.asked && same_set(set, right), std::string(not_asked_feedback)};
+        for (const auto& m : part.mistakes)
+          if (same_set(as_set(m.options), set)) {
+            l.feedback_html = m.feedback_html;
+            break;
+          }
+        options.push_back(std::move(l));
       }
+      if (context.does_not_apply_offered) options.push_back({context.does_not_apply_html, !part.asked, {}});
+      s += multichoice(options);
       break;
     }
   }
@@ -188,7 +238,10 @@ std::string moodle_xml(const ExportSet& set) {
             for (int i : b.parts) {
               const Part& p = v.parts[static_cast<std::size_t>(i)];
               const int weight = static_cast<int>(std::lround(p.points * scale));
-              parts.push_back(cloze_part(p, weight));
+              const ClozeContext context{
+                  std::find(slot.not_asked.begin(), slot.not_asked.end(), p.question_id) != slot.not_asked.end(),
+                  set.does_not_apply_html, set.not_asked_feedback_html};
+              parts.push_back(cloze_part(p, weight, context));
             }
             if (b.point) html += fmt::format("({})", fmt::join(parts, comma ? " ; " : ", "));
             else html += fmt::format("{}", fmt::join(parts, " "));

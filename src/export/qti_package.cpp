@@ -50,6 +50,53 @@ std::string add_feedback(const std::string& id) {
       id);
 }
 
+std::string not_asked_id(std::size_t part) { return fmt::format("NA{}", part + 1); }
+
+// A point marked as a whole (whole_point): its points when the distance to the key's point is
+// within the key's rule, (x − x₀)² + (y − y₀)² ≤ r²; a named mistake when every coordinate is
+// the mistake's (a coordinate the mistake leaves alone: the key's), each within its width.
+// Every named mistake of a whole point's coordinates, once each, in the coordinates' order.
+std::vector<const MistakeAnswer*> point_mistakes(const Variant& v, const Block& b) {
+  std::vector<const MistakeAnswer*> out;
+  for (int i : b.parts)
+    for (const auto& m : v.parts[static_cast<std::size_t>(i)].mistakes)
+      if (std::none_of(out.begin(), out.end(), [&](const MistakeAnswer* o) { return o->code == m.code; }))
+        out.push_back(&m);
+  return out;
+}
+
+std::string whole_point_condition(const Variant& v, const Block& b) {
+  const auto part = [&](int i) -> const Part& { return v.parts[static_cast<std::size_t>(i)]; };
+  const Part& first = part(b.parts.front());
+  std::string x = "    <responseCondition>\n      <responseIf>\n        <lte><sum>";
+  double points = 0;
+  for (int i : b.parts) {
+    x += fmt::format("<power><subtract><variable identifier=\"{}\"/><baseValue baseType=\"float\">{}</baseValue>"
+                     "</subtract><baseValue baseType=\"integer\">2</baseValue></power>",
+                     response_id(static_cast<std::size_t>(i)), shortest(part(i).value));
+    points += part(i).points;
+  }
+  x += fmt::format("</sum><baseValue baseType=\"float\">{}</baseValue></lte>\n", shortest(first.radius * first.radius));
+  x += add_score(points);
+  x += "      </responseIf>\n";
+  for (const MistakeAnswer* m : point_mistakes(v, b)) {
+    x += "      <responseElseIf>\n        <and>";
+    for (int i : b.parts) {
+      double value = part(i).value, width = part(i).width;
+      for (const auto& other : part(i).mistakes)
+        if (other.code == m->code) value = other.value, width = other.width;
+      x += fmt::format("<equal toleranceMode=\"absolute\" tolerance=\"{0} {0}\"><baseValue baseType=\"float\">{1}"
+                       "</baseValue><variable identifier=\"{2}\"/></equal>",
+                       shortest(width), shortest(value), response_id(static_cast<std::size_t>(i)));
+    }
+    x += "</and>\n";
+    x += add_feedback(feedback_id(static_cast<std::size_t>(b.parts.front()), *m));
+    x += "      </responseElseIf>\n";
+  }
+  x += "    </responseCondition>\n";
+  return x;
+}
+
 std::string interaction(const Part& p, std::size_t i) {
   const std::string r = response_id(i);
   if (p.type == Part::Type::number)
@@ -70,6 +117,12 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
   for (std::size_t i = 0; i < v.parts.size(); ++i) {
     const Part& p = v.parts[i];
     const std::string r = response_id(i);
+    if (!p.asked) {  // a field this case does not ask: any answer, marked for nothing
+      x += fmt::format("  <responseDeclaration identifier=\"{}\" cardinality=\"{}\" baseType=\"{}\"/>\n", r,
+                       p.type == Part::Type::faces ? "multiple" : "single",
+                       p.type == Part::Type::number ? "string" : "identifier");
+      continue;
+    }
     switch (p.type) {
       case Part::Type::number:
         x += fmt::format("  <responseDeclaration identifier=\"{}\" cardinality=\"single\" baseType=\"float\">"
@@ -139,9 +192,26 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
 
   // scoring: the points of each right answer; a named mistake's value sets its feedback
   x += "  <responseProcessing>\n";
+  std::vector<const Block*> point_of(v.parts.size(), nullptr);  // a whole point's block, by part
+  for (const auto& b : v.blocks)
+    if (b.kind == Block::Kind::field && b.whole_point)
+      for (int i : b.parts) point_of[static_cast<std::size_t>(i)] = &b;
   for (std::size_t i = 0; i < v.parts.size(); ++i) {
     const Part& p = v.parts[i];
     const std::string r = response_id(i);
+    if (!p.asked) {
+      x += fmt::format("    <responseCondition>\n      <responseIf>\n        <not><isNull><variable identifier=\"{}\"/>"
+                       "</isNull></not>\n",
+                       r);
+      x += add_feedback(not_asked_id(i));
+      x += "      </responseIf>\n    </responseCondition>\n";
+      continue;
+    }
+    if (point_of[i]) {
+      // marked as a whole, on its first coordinate: the others are read there
+      if (point_of[i]->parts.front() == static_cast<int>(i)) x += whole_point_condition(v, *point_of[i]);
+      continue;
+    }
     x += "    <responseCondition>\n      <responseIf>\n";
     if (p.type == Part::Type::number)
       x += fmt::format("        <equal toleranceMode=\"absolute\" tolerance=\"{0} {0}\"><correct identifier=\"{1}\"/>"
@@ -172,11 +242,25 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
     x += "    </responseCondition>\n";
   }
   x += "  </responseProcessing>\n";
-  for (std::size_t i = 0; i < v.parts.size(); ++i)
+  for (std::size_t i = 0; i < v.parts.size(); ++i) {
+    if (!v.parts[i].asked)
+      x += fmt::format("  <modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"{}\" showHide=\"show\">"
+                       "<p>{}</p></modalFeedback>\n",
+                       not_asked_id(i), set.not_asked_feedback_html);
+    // a whole point's mistakes are set on its first coordinate only
+    if (point_of[i]) {
+      if (point_of[i]->parts.front() == static_cast<int>(i))
+        for (const MistakeAnswer* m : point_mistakes(v, *point_of[i]))
+          x += fmt::format("  <modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"{}\" showHide=\"show\">"
+                           "<p>{}</p></modalFeedback>\n",
+                           feedback_id(i, *m), m->feedback_html);
+      continue;
+    }
     for (const auto& m : v.parts[i].mistakes)
       x += fmt::format("  <modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"{}\" showHide=\"show\">"
                        "<p>{}</p></modalFeedback>\n",
                        feedback_id(i, m), m.feedback_html);
+  }
   x += "</assessmentItem>\n";
   return x;
 }

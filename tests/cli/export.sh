@@ -62,6 +62,45 @@ PY
   [ "$n" -eq 211 ] || fail "$lang: $n of 211 QTI files validate"
 done
 
+# The course in space (vectors in ℝ³, ray/sphere, ray/cube: 64 sets of faces), and a
+# spec whose points are marked as a whole (QTI's distance test); French for the first.
+mkdir -p "$tmp/wp" && cat >"$tmp/wp/spec.toml" <<'TOML'
+title = "Whole points"
+[[exercise]]
+kind = "projection"
+questions = { P = { whole_point = true, abs = 0.02 } }
+[[exercise]]
+kind = "ray_circle"
+questions = { I = { whole_point = true }, N = { whole_point = true } }
+TOML
+for extra in "3d fr builtin:3d" "wp en $tmp/wp/spec.toml"; do
+  set -- $extra
+  name=$1 lang=$2 spec=$3 set="$tmp/set-$1"
+  "$EPURE" generate --spec "$spec" --sheets 12 --seed 3 --lang "$lang" --format svg --out "$set" --quiet \
+    || { fail "$name: generate"; continue; }
+  "$EPURE" export moodle --set "$set" >/dev/null 2>"$tmp/err" || fail "$name: export moodle: $(cat "$tmp/err")"
+  "$EPURE" export qti --set "$set" >/dev/null 2>"$tmp/err" || fail "$name: export qti: $(cat "$tmp/err")"
+  python3 "$tools/moodle_cloze.py" "$set/moodle.xml" "$set/key.json" \
+    "$EPURE_SOURCE_DIR/templates/text/$lang/grading.toml" --summary >"$tmp/cloze" \
+    || { cat "$tmp/cloze"; fail "$name: the Cloze questions"; }
+  cat "$tmp/cloze"
+  python3 "$tools/qti_check.py" "$set/qti.zip" "$set/key.json" "$tmp/qti-$name" >"$tmp/qti" \
+    || { cat "$tmp/qti"; fail "$name: the QTI package"; }
+  cat "$tmp/qti"
+  (cd "$tmp/qti-$name" && xmllint --noout --nonet --schema "$xsd/qtiv2p1/imsqti_v2p1.xsd" test.xml items/*.xml) \
+    2>"$tmp/lint" || { grep -v validates "$tmp/lint" | head -5; fail "$name: the items against imsqti_v2p1.xsd"; }
+done
+python3 - "$tools" "$tmp/set-3d/moodle.xml" <<'PY' || fail "3d: the cube's faces are not one list of its 64 sets of faces"
+import sys, xml.etree.ElementTree as ET
+sys.path.insert(0, sys.argv[1])
+from moodle_cloze import extract
+lists = [len(p['alternatives']) for q in ET.parse(sys.argv[2]).getroot().findall('question')
+         if q.get('type') == 'multianswer' for p in extract(q.findtext('questiontext/text'))[0]
+         if p['type'] == 'multichoice' and any('+z' in a.get('text', '') for a in p['alternatives'])]
+assert lists and all(n == 64 for n in lists), lists
+PY
+grep -q '<lte><sum><power>' "$tmp/qti-wp/items/"*-1.xml || fail "wp: no point marked by its distance in QTI"
+
 # SVG diagrams, and another language than the set's
 set="$tmp/set-en"
 "$EPURE" export moodle --set "$set" --image svg --lang fr --out "$tmp/svg.xml" >/dev/null 2>"$tmp/err" \

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -14,15 +15,19 @@ using namespace epure;
 using namespace epure::exporting;
 
 TEST_CASE("cloze_escape: nothing in an answer or a feedback can end a Cloze part") {
-  const std::string s = cloze_escape("a}b#c~d\\e&f<g>");
-  CHECK(s == "a&#125;b&#35;c&#126;d&#92;e&amp;f<g>");
-  // the importer ends an answer at ~ # } not preceded by \ or &: every # left follows a &
+  const std::string s = cloze_escape("a}b#c~d\\e&f<g>=h%");
+  CHECK(s == "a&#125;b&#35;c&#126;d&amp;#92;e&amp;f<g>&#61;h&#37;");
+  // the importer ends an answer at ~ # } not preceded by \, & or &amp;: every # left follows one
   for (std::size_t i = 0; i < s.size(); ++i) {
     CAPTURE(i);
     CHECK(s[i] != '}');
     CHECK(s[i] != '~');
-    if (s[i] == '#') CHECK((i > 0 && s[i - 1] == '&'));
+    CHECK(s[i] != '\\');
+    if (s[i] == '#') CHECK((s[i - 1] == '&' || (i >= 5 && s.compare(i - 5, 5, "&amp;") == 0)));
   }
+  // an option starting with = or % would be read as its grade
+  CHECK(cloze_escape("=x")[0] == '&');
+  CHECK(cloze_escape("%50%x")[0] == '&');
   // an HTML entity survives the importer's one decoding: &lt; is written &amp;lt;
   CHECK(cloze_escape("x &lt; 1") == "x &amp;lt; 1");
 }
@@ -87,10 +92,8 @@ TEST_CASE("rule_width: the key's rule as an absolute half-width") {
 
 namespace {
 
-// The importer's reading of one alternative list (qtype_multianswer_extract_question), for
-// text without raw '~': an answer ends at the first # or } not preceded by \ or &, a feedback
-// at the first } not preceded by \; then entities are decoded once, \} and \# unescaped.
-std::string decode(std::string_view s) {
+// HTML entities decoded once (the importer's html_entity_decode, or a browser showing HTML).
+std::string entities(std::string_view s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] == '&') {
@@ -109,17 +112,31 @@ std::string decode(std::string_view s) {
   return out;
 }
 
+// The importer's reading of one answer or feedback (qtype_multianswer_extract_question), once
+// found: entities decoded once, then \} and \# unescaped. What it stores is HTML.
+std::string moodle_reads(std::string_view s) {
+  std::string out = entities(s);
+  for (std::string_view escaped : {"\\}", "\\#"})
+    for (std::size_t at; (at = out.find(escaped)) != std::string::npos;) out.erase(at, 1);
+  return out;
+}
+
+// Where the importer ends an answer (at ~ # } not preceded by \, & or &amp;) or a feedback (at ~ }
+// not preceded by \), in text without raw '~'.
 std::size_t end_of(std::string_view s, std::size_t from, std::string_view stops, bool amp_escapes) {
-  for (std::size_t i = from; i < s.size(); ++i)
-    if (stops.find(s[i]) != std::string_view::npos && !(i > 0 && (s[i - 1] == '\\' || (amp_escapes && s[i - 1] == '&'))))
+  for (std::size_t i = from; i < s.size(); ++i) {
+    const bool after_amp = (i > 0 && s[i - 1] == '&') || (i >= 5 && s.substr(i - 5, 5) == "&amp;");
+    if (stops.find(s[i]) != std::string_view::npos && !(i > 0 && (s[i - 1] == '\\' || (amp_escapes && after_amp))))
       return i;
+  }
   return s.size();
 }
 
 }  // namespace
 
 TEST_CASE("cloze_part: answers and feedback with } # ~ \\ & < read back as written") {
-  const std::string nasty = "a}b#c~d\\e&amp;f&lt;g <sub>x</sub>";
+  // what a browser shows of the stored HTML must be what it shows of ours (\} and \# included)
+  const std::string nasty = "a}b#c~d\\e\\}f\\#=h%&amp;f&lt;g <sub>x</sub>";
   Part p;
   p.type = Part::Type::choice;
   p.options = {{"yes", nasty, true}, {"no", "no " + nasty, false}};
@@ -138,12 +155,12 @@ TEST_CASE("cloze_part: answers and feedback with } # ~ \\ & < read back as writt
   const std::string second = s.substr(s.find('~', body) + 1, s.size() - 1 - s.find('~', body) - 1);
   // first: "=" + answer; second: answer # feedback
   CHECK(end_of(first, 0, "#}", true) == first.size());
-  CHECK(decode(first.substr(1)) == nasty);
+  CHECK(entities(moodle_reads(first.substr(1))) == entities(nasty));
   const std::size_t hash = end_of(second, 0, "#}", true);
   REQUIRE(hash < second.size());
-  CHECK(decode(second.substr(0, hash)) == "no " + nasty);
+  CHECK(entities(moodle_reads(second.substr(0, hash))) == entities("no " + nasty));
   CHECK(end_of(second, hash + 1, "}", false) == second.size());
-  CHECK(decode(second.substr(hash + 1)) == "why: " + nasty);
+  CHECK(entities(moodle_reads(second.substr(hash + 1))) == entities("why: " + nasty));
 }
 
 TEST_CASE("cloze_part: a number: the right value first, the mistakes, a wide wrong answer last") {
@@ -162,5 +179,59 @@ TEST_CASE("cloze_part: a number: the right value first, the mistakes, a wide wro
   p.options = {{"+x", "+x", true}, {"+y", "+y", true}, {"-x", "-x", false}, {"none", "none", false}};
   m.options = {"-x"};
   p.mistakes = {m};
-  CHECK(cloze_part(p, 1) == "{1:MULTIRESPONSE:%50%+x~%50%+y~%-50%-x#far~%-50%none}");
+  // one list of every set of the sides offered (2³ here), the key's whole set right
+  CHECK(cloze_part(p, 1) == "{1:MULTICHOICE:none~+x~+y~-x#far~=+x, +y~+x, -x~+y, -x~+x, +y, -x}");
+}
+
+TEST_CASE("face_sets: every set of sides once, the empty set first, by size") {
+  Part square;
+  square.type = Part::Type::faces;
+  for (const char* f : {"+x", "+y", "-x", "-y", "none"}) square.options.push_back({f, f, false});
+  const auto sets = face_sets(square);
+  CHECK(sets.size() == 16);
+  CHECK(sets.front().empty());
+  CHECK(sets[1] == std::vector<std::string>{"+x"});
+  CHECK(sets[2] == std::vector<std::string>{"+y"});
+  CHECK(sets[5] == std::vector<std::string>{"+x", "+y"});
+  CHECK(sets.back() == std::vector<std::string>{"+x", "+y", "-x", "-y"});
+  CHECK(face_set_html(square, {}) == "none");
+  CHECK(face_set_html(square, {"+x", "-y"}) == "+x, -y");
+  Part cube = square;
+  cube.options.insert(cube.options.end() - 1, {{"+z", "+z", false}, {"-z", "-z", false}});
+  const auto cube_sets = face_sets(cube);
+  CHECK(cube_sets.size() == 64);
+  for (std::size_t i = 0; i < cube_sets.size(); ++i) {
+    CAPTURE(i);
+    for (std::size_t j = 0; j < i; ++j) CHECK(cube_sets[i] != cube_sets[j]);
+    if (i > 0) CHECK(cube_sets[i - 1].size() <= cube_sets[i].size());
+  }
+}
+
+TEST_CASE("cloze_part: a field the case does not ask looks like the others and is marked for nothing") {
+  const ClozeContext context{true, "— (does not apply)", "not marked"};
+  SUBCASE("a number: a box of the same width, taking a dash") {
+    Part p;
+    p.type = Part::Type::number;
+    p.asked = false;
+    p.points = 0;
+    const std::string s = cloze_part(p, 0, context);
+    CHECK(s == "{0:SHORTANSWER:=-~=\u2013~=\u2014~=\u2212~%0%*#not marked~%0%999999999999999999999999}");
+    Part asked;
+    asked.value = 1.5;
+    asked.width = 0.005;
+    const std::string n = cloze_part(asked, 4, context);
+    // Moodle sizes a box after its longest answer: both end with the same 24-digit one
+    CHECK(n.substr(n.rfind('~')) == "~%0%999999999999999999999999:0}");
+  }
+  SUBCASE("a choice: the same list, with the does-not-apply option right only where not asked") {
+    Part p;
+    p.type = Part::Type::choice;
+    p.options = {{"behind", "behind", true}, {"miss", "miss", false}};
+    CHECK(cloze_part(p, 2, context) == "{2:MULTICHOICE:=behind~miss~\u2014 (does not apply)}");
+    p.asked = false;
+    p.options[0].right = false;
+    CHECK(cloze_part(p, 0, context) ==
+          "{0:MULTICHOICE:behind#not marked~miss#not marked~=\u2014 (does not apply)}");
+    CHECK(cloze_part(p, 0, ClozeContext{}).find('=') == std::string::npos);  // only offered when asked for
+  }
 }

@@ -8,8 +8,8 @@ two must agree: right for both, or wrong with the same named mistake (same sente
 A point's coordinates are separate Cloze parts, so Moodle decides each coordinate alone where
 grading decides the point as a whole (both coordinates must fit one mistake): there they may name
 different mistakes; those are counted and printed, and fail only when grading marks the answer
-right (or Moodle does and grading does not). Sets of faces carry a mistake's sentence per wrong
-option, not per set: not checked here.
+right (or Moodle does and grading does not). Sets of faces are one list of the candidate sets:
+a mistake's set is typed as the list words it ("+x, −y").
 usage: mistakes_vs_grading.py EPURE MOODLE.xml KEY.json GRADING.toml WORKDIR
 """
 import csv
@@ -55,6 +55,7 @@ def main(argv):
         for e in s['exercises']:
             q = by_name[(e['n'], s['id'])]
             parts, _ = extract(q.findtext('questiontext/text'))
+            parts = [p for p in parts if p['weight'] != '0']  # fields this case does not ask
             part_of = {kq['id']: p for p, kq in zip(parts, e['questions'])}
             right = {kq['id']: shown(kq) for kq in e['questions']}
             mistakes = {}  # question id → code → (the answer as typed, Moodle's verdict on it)

@@ -18,7 +18,13 @@ Then, for every sheet of the key and every exercise:
   - the last answer of a number is a wrong one at least as wide as every other;
   - every other answer is a named mistake: 0 %, not the key's value, with a feedback that is one
     of the paper feedback's sentences (templates/text/<lang>/grading.toml);
-  - choices have one right option, sets of faces a "none" option, every fraction one of Moodle's grades;
+  - choices have one right option; a set of faces is one list of every set of the sides (as the
+    sheet lets any boxes be ticked), the key's set right, no part marks; every fraction one of
+    Moodle's grades;
+  - a field the sheet prints and the case does not ask is a weight-0 part: a box that takes a
+    dash and says "not marked" for anything else, or a list whose right option is "— (does not
+    apply)"; in each exercise every variant shows the same boxes (same widths) and the same
+    lists, so that the question's shape does not tell the case;
   - every diagram is a base64 PNG (or SVG) <file> the text references as @@PLUGINFILE@@/name.
 Exit status 0 when everything holds; otherwise every failure is printed.
 
@@ -46,7 +52,7 @@ TYPES = ('(NUMERICAL|NM)|(MULTICHOICE|MC)|(MULTICHOICE_V|MCV)|(MULTICHOICE_H|MCH
 START = r'\{([0-9]*):(' + TYPES + '):'
 ANSWER_REGEX = START + '(' + ALTERNATIVE + '(~' + ALTERNATIVE + ')*)' + r'\}'
 # group numbers as the importer's constants name them
-REGEX_NORM, REGEX_NUMERICAL, REGEX_MULTICHOICE, REGEX_MULTIRESPONSE, REGEX_ALTERNATIVES = 1, 3, 4, 12, 16
+REGEX_NORM, REGEX_NUMERICAL, REGEX_MULTICHOICE, REGEX_SHORTANSWER, REGEX_MULTIRESPONSE, REGEX_ALTERNATIVES = 1, 3, 4, 7, 12, 16
 ALT_FRACTION, ALT_PERCENT, ALT_ANSWER, ALT_FEEDBACK = 1, 2, 3, 5
 
 GRADES = [100, 90, 83.33333, 80, 75, 70, 66.66667, 60, 50, 40, 33.33333, 30, 25, 20, 16.66667,
@@ -68,6 +74,8 @@ def extract(text):
             part['type'] = 'multichoice'
         elif m.group(REGEX_MULTIRESPONSE):
             part['type'] = 'multiresponse'
+        elif m.group(REGEX_SHORTANSWER):
+            part['type'] = 'shortanswer'
         else:
             part['type'] = m.group(2)
         remaining = m.group(REGEX_ALTERNATIVES)
@@ -143,6 +151,21 @@ def sentence_patterns(grading_toml):
     return out
 
 
+def shape(part):
+    """What a student sees of a part: a box and its width (Moodle sizes it after the longest
+    answer), or a list and its options in order."""
+    if part['type'] in ('numerical', 'shortanswer'):
+        return ('box', max(len(a['raw'].split(':')[0]) if 'value' in a else len(a['text']) for a in part['alternatives']))
+    return (part['type'], tuple(a['text'] for a in part['alternatives']))
+
+
+def face_set(text, none_word):
+    """The set of faces a list option names ("+x, \u2212y"), with the contract's '-'."""
+    if text == none_word:
+        return set()
+    return {f.strip().replace('\u2212', '-') for f in text.split(',')}
+
+
 def main(argv):
     if len(argv) < 4:
         print(__doc__)
@@ -178,7 +201,32 @@ def main(argv):
         if q.get('type') != 'multianswer':
             fail(name, f'type {q.get("type")}, not multianswer')
 
-    counts = {'questions': 0, 'parts': 0, 'numbers': 0, 'mistakes': 0, 'images': 0, 'choices': 0, 'faces': 0}
+    counts = {'questions': 0, 'parts': 0, 'numbers': 0, 'mistakes': 0, 'images': 0, 'choices': 0, 'faces': 0,
+              'not_asked': 0}
+    shapes = {}  # exercise n → [(where, [shape of each part])]
+    with open(grading_path, 'rb') as f:
+        export_words = tomllib.load(f)['export']
+    does_not_apply = export_words['does_not_apply']
+    not_asked_feedback = export_words['not_asked']
+    with open(grading_path.replace('grading.toml', 'common.toml'), 'rb') as f:
+        none_word = tomllib.load(f)['common']['none']
+
+    def check_not_asked(part, where, fail):
+        alts = part['alternatives']
+        if part['type'] == 'shortanswer':
+            right = [a['text'] for a in alts if a['fraction'] == 1.0]
+            if set(right) != {'-', '\u2013', '\u2014', '\u2212'}:
+                fail(where, f'a box not asked takes {right}, not the dashes')
+            star = [a for a in alts if a['text'] == '*']
+            if len(star) != 1 or star[0]['fraction'] != 0 or strip_tags(star[0]['feedback']) != not_asked_feedback:
+                fail(where, 'a box not asked does not say so for any other answer')
+        elif part['type'] == 'multichoice':
+            right = [a['text'] for a in alts if a['fraction'] == 1.0]
+            if right != [does_not_apply]:
+                fail(where, f'a list not asked has {right} right, not {does_not_apply!r}')
+        else:
+            fail(where, f'a field not asked as {part["type"]}')
+
     codes_seen = set()
     title = key['spec']['title']
     for sheet in key['sheets']:
@@ -215,9 +263,16 @@ def main(argv):
                 if name not in refs:
                     fail(where, f'{name} is embedded but not shown')
 
-            parts, rest = extract(text)
+            all_parts, rest = extract(text)
             if re.search(r'\{[0-9]*:[A-Z_]+:', rest):
                 fail(where, 'a part the importer would not read is left in the text')
+            shapes.setdefault(ex['n'], []).append((where, [shape(p) for p in all_parts]))
+            # weight 0: a field the sheet prints and this case does not ask, marked for nothing
+            parts = [p for p in all_parts if p['weight'] != '0']
+            for p in all_parts:
+                if p['weight'] == '0':
+                    counts['not_asked'] += 1
+                    check_not_asked(p, where, fail)
             qs = ex['questions']
             if len(parts) != len(qs):
                 fail(where, f'{len(parts)} parts for {len(qs)} questions')
@@ -281,18 +336,23 @@ def main(argv):
                         codes_seen.update(codes)
                 elif isinstance(e, list):
                     counts['faces'] += 1
-                    if part['type'] != 'multiresponse':
+                    # the set as a whole, as the key marks it: one list of the candidate sets
+                    if part['type'] != 'multichoice':
                         fail(qwhere, f'a set of faces asked as {part["type"]}')
                         continue
                     texts = [a['text'] for a in alts]
-                    ticked = {a['text'] for a in alts if a['fraction'] > 0}
-                    if set(e) != (ticked - {texts[-1]}) or (not e and ticked != {texts[-1]}):
-                        fail(qwhere, f'right options {sorted(ticked)} are not the key\'s {e}')
+                    right = [a for a in alts if a['fraction'] == 1.0]
+                    if len(right) != 1 or any(a['fraction'] not in (0.0, 1.0) for a in alts):
+                        fail(qwhere, f'{len(right)} right options, or part marks, among {len(alts)}')
+                        continue
+                    if face_set(right[0]['text'], none_word) != set(e):
+                        fail(qwhere, f'right option {right[0]["text"]!r} is not the key\'s {e}')
+                    sets = [face_set(t, none_word) for t in texts if t != does_not_apply]
+                    sides = {f for st in sets for f in st}
+                    if len(sets) != 2 ** len(sides) or len({frozenset(x) for x in sets}) != len(sets):
+                        fail(qwhere, f'{len(sets)} sets of {len(sides)} sides, or a set twice')
                     if len(texts) != len(set(texts)):
                         fail(qwhere, 'an option twice')
-                    total = sum(a['fraction'] for a in alts if a['fraction'] > 0)
-                    if abs(total - 1) > 1e-6:
-                        fail(qwhere, f'right options add up to {total}')
                     for alt in alts:
                         if alt['feedback']:
                             counts['mistakes'] += 1
@@ -317,6 +377,14 @@ def main(argv):
                             if not codes:
                                 fail(qwhere, f'feedback {alt["feedback"]!r} is none of the paper sentences')
                             codes_seen.update(codes)
+    # the question's shape does not tell the case: in each exercise, every variant has the same
+    # boxes (same widths) and lists (same options, whichever is right), in the same order
+    for n, variants in shapes.items():
+        first_where, first = variants[0]
+        for where, sh in variants[1:]:
+            if sh != first:
+                fail(where, f'its parts look unlike {first_where}\'s: {sh} against {first}')
+                break
     for (n, sid), _ in questions.items():
         fail(f'{sid} exercise {n}', 'a question the key does not have')
     if counts['mistakes'] == 0:
@@ -328,7 +396,8 @@ def main(argv):
         print(f'… and {len(failures) - 60} more')
     if summary or failures:
         print(f'{moodle_path}: {counts["questions"]} questions, {counts["parts"]} parts ({counts["numbers"]} numbers, '
-              f'{counts["choices"]} choices, {counts["faces"]} face sets), {counts["mistakes"]} named-mistake answers '
+              f'{counts["choices"]} choices, {counts["faces"]} face sets, {counts["not_asked"]} fields not asked), '
+              f'{counts["mistakes"]} named-mistake answers '
               f'({len(codes_seen)} mistakes: {", ".join(sorted(codes_seen))}), {counts["images"]} images; '
               f'{len(failures)} failures')
     return 1 if failures else 0

@@ -7,8 +7,12 @@
   - every item is titled `<n>. <title> — <sheet id>`; every declared response is used by an
     interaction and by the response processing, and every interaction's response is declared;
   - a float response's correct value is the key's, matched by <equal toleranceMode="absolute">
-    with <correct> first and a tolerance no looser than the key's rule; the points added up are
-    the key's; every modalFeedback is set by the response processing;
+    with <correct> first and a tolerance no looser than the key's rule; a point marked as a whole
+    (whole_point) by its distance, (x − x₀)² + (y − y₀)² ≤ r², r no larger than the key's; a set of
+    faces matched as a whole; the points added up are the key's; every modalFeedback is set by
+    the response processing;
+  - a field the sheet prints and the case does not ask has a response with no correct value,
+    read only to say that it is not marked;
   - every <img> of an item is in the package.
 usage: qti_check.py QTI.zip KEY.json EXTRACT_DIR
 """
@@ -117,36 +121,83 @@ def main(argv):
                 path = os.path.normpath(os.path.join('items', img.get('src')))
                 if path not in names:
                     fail(where, f'image {img.get("src")} is not in the package')
-            # responses in the key's order
+            # responses in the key's order; after them, the fields this case does not ask (no
+            # correct response: marked for nothing, a feedback if answered all the same)
             qs = ex['questions']
-            if len(declared) != len(qs):
-                fail(where, f'{len(declared)} responses for {len(qs)} questions')
+            asked = [r for r, d in declared.items() if d.find(QTI + 'correctResponse') is not None]
+            not_asked = [r for r in declared if r not in asked]
+            if asked != [f'R{i + 1}' for i in range(len(qs))]:
+                fail(where, f'{len(asked)} responses for {len(qs)} questions, or not first in the key\'s order')
                 continue
             conditions = processing.findall(QTI + 'responseCondition')
-            total = 0.0
-            for i, (kq, cond) in enumerate(zip(qs, conditions)):
-                rid = f'R{i + 1}'
-                d = declared[rid]
-                e = kq['expected']
+            read_by = {}  # response → the condition whose first test reads it
+            for cond in conditions:
                 first = cond.find(QTI + 'responseIf')
-                score = first.find(f'.//{QTI}baseValue[@baseType="float"]')
-                total += float(score.text)
-                if abs(float(score.text) - kq['points']) > 1e-9:
-                    fail(f'{where} {kq["id"]}', f'{score.text} points, not {kq["points"]}')
+                for v in list(first)[0].iter(QTI + 'variable'):
+                    read_by.setdefault(v.get('identifier'), cond)
+            for r in not_asked:
+                cond = read_by.get(r)
+                test = list(cond.find(QTI + 'responseIf'))[0] if cond is not None else None
+                if test is None or test.tag != QTI + 'not' or cond.find(f'.//{QTI}baseValue[@baseType="float"]') is not None:
+                    fail(where, f'{r}: a field not asked is scored, or not read')
+            total = 0.0
+            seen = set()
+            for i, kq in enumerate(qs):
+                rid = f'R{i + 1}'
+                qwhere = f'{where} {kq["id"]}'
+                cond = read_by.get(rid)
+                if cond is None:
+                    fail(qwhere, 'no condition reads it')
+                    continue
+                first = cond.find(QTI + 'responseIf')
+                score = float(first.find(f'{QTI}setOutcomeValue//{QTI}baseValue').text)
+                test = list(first)[0]
+                e = kq['expected']
+                if test.tag == QTI + 'lte':
+                    # a point marked as a whole: (x − x₀)² + (y − y₀)² ≤ r², r within the key's distance
+                    if kq['tolerance']['rule'] != 'distance':
+                        fail(qwhere, 'marked as a whole point where the key marks coordinates')
+                    coords = [v.get('identifier') for v in test.iter(QTI + 'variable')]
+                    if id(cond) not in seen:
+                        seen.add(id(cond))
+                        group = [q for j, q in enumerate(qs) if f'R{j + 1}' in coords]
+                        total += score
+                        if abs(score - sum(q['points'] for q in group)) > 1e-9:
+                            fail(qwhere, f'{score} points for a point worth {sum(q["points"] for q in group)}')
+                        values = [float(b.text) for b in test.iter(QTI + 'baseValue') if b.get('baseType') == 'float']
+                        if values[:-1] != [float(q['expected']) for q in group]:
+                            fail(qwhere, f'the point {values[:-1]} is not the key\'s')
+                        r2 = values[-1]
+                        if r2 > kq['tolerance']['abs'] ** 2 or r2 < 0.98 * kq['tolerance']['abs'] ** 2:
+                            fail(qwhere, f'radius² {r2} against the key\'s {kq["tolerance"]["abs"]}²')
+                    continue
+                total += score
+                if abs(score - kq['points']) > 1e-9:
+                    fail(qwhere, f'{score} points, not {kq["points"]}')
+                d = declared[rid]
                 if isinstance(e, (int, float)) and not isinstance(e, bool):
                     if d.get('baseType') != 'float':
-                        fail(f'{where} {kq["id"]}', f'baseType {d.get("baseType")}')
+                        fail(qwhere, f'baseType {d.get("baseType")}')
                         continue
                     value = float(d.find(f'{QTI}correctResponse/{QTI}value').text)
                     if value != float(e):
-                        fail(f'{where} {kq["id"]}', f'correct {value!r} is not the key\'s {e!r}')
-                    eq = first.find(QTI + 'equal')
-                    if eq is None or eq.get('toleranceMode') != 'absolute' or list(eq)[0].tag != QTI + 'correct':
-                        fail(f'{where} {kq["id"]}', 'not an absolute <equal> with <correct> first')
+                        fail(qwhere, f'correct {value!r} is not the key\'s {e!r}')
+                    if test.tag != QTI + 'equal' or test.get('toleranceMode') != 'absolute' or list(test)[0].tag != QTI + 'correct':
+                        fail(qwhere, 'not an absolute <equal> with <correct> first')
                         continue
-                    t = [float(x) for x in eq.get('tolerance').split()]
+                    t = [float(x) for x in test.get('tolerance').split()]
                     if max(t) > rule_width(kq['tolerance'], e) or min(t) < 0.99 * rule_width(kq['tolerance'], e):
-                        fail(f'{where} {kq["id"]}', f'tolerance {t} against the key\'s {rule_width(kq["tolerance"], e)}')
+                        fail(qwhere, f'tolerance {t} against the key\'s {rule_width(kq["tolerance"], e)}')
+                elif isinstance(e, list):
+                    # a set of faces: the whole set matched, as the key marks it
+                    if d.get('cardinality') != 'multiple' or test.tag != QTI + 'match':
+                        fail(qwhere, 'a set of faces not matched as a whole')
+                    got = {v.text for v in d.iter(QTI + 'value')}
+                    want = {('F_p' if f[0] == '+' else 'F_m') + f[1:] for f in e} or {'F_none'}
+                    if got != want:
+                        fail(qwhere, f'correct {sorted(got)} is not the key\'s {e}')
+            if abs(total - sum(q['points'] for q in qs)) > 1e-9:
+                fail(where, f'the scores add up to {total}, the key\'s points to {sum(q["points"] for q in qs)}')
             set_ids = {b.text for b in processing.iter(QTI + 'baseValue') if b.get('baseType') == 'identifier'}
             for mf in item.findall(QTI + 'modalFeedback'):
                 if mf.get('identifier') not in set_ids:
