@@ -38,6 +38,7 @@
 
 #include "exercises/exact.h"
 #include "geometry/vec.h"
+#include "support/portable.h"
 
 namespace epure::method {
 
@@ -199,8 +200,9 @@ inline Traced sqrt(Traced x) { return {std::sqrt(x.v), x.deps}; }
 inline double sqrt(double x) { return std::sqrt(x); }
 
 // The angle of (c, s) in degrees, in (−180, 180]. Exact where the angle is a multiple of 45°
-// (the only ones a hand computation gives in whole degrees).
-inline double atan2_degrees(double s, double c) { return std::atan2(s, c) * (180.0 / std::numbers::pi); }
+// (the only ones a hand computation gives in whole degrees); correctly rounded, as the core's
+// angle (portable.h): the same bits natively and in the explorer's WebAssembly.
+inline double atan2_degrees(double s, double c) { return portable::atan2(s, c) * (180.0 / std::numbers::pi); }
 inline Traced atan2_degrees(Traced s, Traced c) { return {atan2_degrees(s.v, c.v), s.deps | c.deps}; }
 inline Dual atan2_degrees(const Dual& s, const Dual& c) {
   Dual r{atan2_degrees(s.v, c.v)};

@@ -52,7 +52,7 @@ VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v) {
   const double lengths = plain_norm(us) * plain_norm(vs);
   r.cos = std::clamp(dot(us, vs) / lengths, -1.0, 1.0);
   r.sin = std::clamp(norm(cross(us, vs)) / lengths, 0.0, 1.0);
-  r.angle_deg = std::atan2(r.sin, r.cos) * (180.0 / std::numbers::pi);
+  r.angle_deg = angle_degrees(r.cos, r.sin);  // correctly rounded, as in the plane
   r.collinear = r.sin <= kCollinearSin;
   r.orthogonal = std::abs(r.cos) <= kCollinearSin;
   return r;
