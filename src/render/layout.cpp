@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -39,6 +41,8 @@ constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fi
 // A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
 // much indented, when that wraps it less (a point or a value is then on one line).
 constexpr double kStackIndent = 12;
+// At most this many paragraphs before a figure are tried in the column beside it.
+constexpr std::size_t kMaxSideParagraphs = 8;
 // Wider than any line a page holds: what wrapping gives for this width is the text's own lines
 // (only its '\n' break it).
 constexpr double kUnbounded = 1e9;
@@ -130,6 +134,7 @@ struct Atom {
   // The blocks set beside a figure in this atom, with rectangles from the atom's top.
   std::vector<PlacedBlock> side_blocks;
   bool wrapped = false;  // a key's answer broken over lines it does not ask for
+  bool follows_heading = false;  // right after a heading: a page may not end before it
   Fragment content;
 };
 
@@ -158,6 +163,7 @@ class Builder {
 
   void push(Atom atom) {
     if (after_heading_) atom.break_before = false;  // a heading never ends a page
+    atom.follows_heading = after_heading_;
     if (after_figure_) atom.space_before = std::max(atom.space_before, s_.figure_space);
     after_heading_ = false;
     after_figure_ = false;
@@ -196,9 +202,33 @@ class Builder {
     if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);
   }
 
+  // A section's atoms; when a statement or steps went beside a figure, the section is also laid
+  // out without that, as the fallback open_section may take.
   void section(int si) {
+    const Mark start = mark();
+    side_used_ = false;
+    allow_side_ = true;
+    build_section(si);
+    if (!side_used_) return;
+    std::vector<Atom> preferred(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(start.atoms)),
+                                std::make_move_iterator(atoms_.end()));
+    const Mark end = mark();
+    undo(start);
+    allow_side_ = false;
+    build_section(si);
+    allow_side_ = true;
+    fallback_[si].assign(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(start.atoms)),
+                         std::make_move_iterator(atoms_.end()));
+    atoms_.resize(start.atoms);
+    atoms_.insert(atoms_.end(), std::make_move_iterator(preferred.begin()), std::make_move_iterator(preferred.end()));
+    after_heading_ = end.after_heading;
+    after_figure_ = end.after_figure;
+  }
+
+  void build_section(int si) {
     const auto& blocks = doc_.sections[static_cast<std::size_t>(si)].blocks;
     section_begin_ = atoms_.size();
+    marks_.clear();
     // The statement: from the heading to the first figure, or to the first field or answer.
     std::size_t head_end = 0;
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
@@ -207,20 +237,16 @@ class Builder {
       const int b = static_cast<int>(bi);
       const bool answers = std::holds_alternative<AnswerField>(block) || std::holds_alternative<AnswerLine>(block);
       if (head_end == 0 && answers) head_end = atoms_.size();
+      if (marks_.size() <= bi) marks_.resize(bi + 1);
+      marks_[bi] = mark();
       if (const auto* h = std::get_if<Heading>(&block)) {
         heading(si, b, *h);
       } else if (const auto* p = std::get_if<Paragraph>(&block)) {
         paragraph(si, b, p->text, p->emphasis);
       } else if (const auto* f = std::get_if<Figure>(&block)) {
-        const bool follows = before && std::holds_alternative<Paragraph>(*before);
-        const std::size_t run_end = answers_run_end(blocks, bi + 1);
-        if (run_end > bi + 1 && beside(si, b, *f, follows, blocks, bi + 1, run_end)) {
-          if (head_end == 0) head_end = atoms_.size();
-          bi = run_end - 1;  // the fields or answers are placed
-          continue;
-        }
-        figure(si, b, *f, follows);
-        if (head_end == 0) head_end = atoms_.size();
+        const std::size_t figure_atom = figure_with_neighbours(si, bi, *f, blocks);
+        if (head_end == 0) head_end = figure_atom;
+        bi = answers_run_end(blocks, bi + 1) - 1;  // the fields or answers are placed
       } else if (const auto* field = std::get_if<AnswerField>(&block)) {
         const bool follows = before && std::holds_alternative<AnswerField>(*before);
         if (!follows) field_column_ = field_prompt_column(blocks, bi);
@@ -235,6 +261,94 @@ class Builder {
       Atom& first = atoms_[section_begin_];
       first.section_start = true;
       first.head_atoms = (head_end > section_begin_ ? head_end : atoms_.size()) - section_begin_;
+    }
+  }
+
+  // The builder's state before a block: undoing a block's atoms goes back to it.
+  struct Mark {
+    std::size_t atoms = 0;
+    bool after_heading = false, after_figure = false;
+  };
+  Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
+  void undo(const Mark& m) {
+    atoms_.resize(m.atoms);
+    after_heading_ = m.after_heading;
+    after_figure_ = m.after_figure;
+  }
+
+  // A figure, the run of fields or answers after it, and the plain paragraphs just before it:
+  // the answers beside the figure when they fit (else under it), and, when that makes the whole
+  // shorter by more than a line, the last paragraphs before the figure in the column beside it
+  // too, above the answers (or with the answers under the figure): a statement read beside the
+  // figure it describes, a key's last steps beside their construction. The figure keeps the width
+  // its kind asks for. Returns the index of the atom after the figure's.
+  std::size_t figure_with_neighbours(int si, std::size_t fi, const Figure& f, const std::vector<Block>& blocks) {
+    const std::size_t run_end = answers_run_end(blocks, fi + 1);
+    // The plain paragraphs right before the figure (not the heading, not a shaded box).
+    std::size_t first = fi;
+    while (first > 0 && fi - first < kMaxSideParagraphs) {
+      const auto* p = std::get_if<Paragraph>(&blocks[first - 1]);
+      if (!p || p->emphasis) break;
+      --first;
+    }
+    const Mark start = marks_[first];
+    const bool follows = fi > 0 && std::holds_alternative<Paragraph>(blocks[fi - 1]);
+    // Option (k, answers_beside): the last k paragraphs beside the figure, with the answers in
+    // the column too or under the figure; k = 0 is the figure with its answers beside or under it.
+    auto emit = [&](std::size_t k, bool answers_beside) -> std::optional<std::size_t> {
+      undo(start);
+      for (std::size_t p = first; p < fi - k; ++p) {
+        const auto& para = std::get<Paragraph>(blocks[p]);
+        paragraph(si, static_cast<int>(p), para.text, para.emphasis);
+      }
+      std::vector<std::size_t> side;
+      for (std::size_t p = fi - k; p < fi; ++p) side.push_back(p);
+      const bool with_answers = k == 0 || answers_beside;
+      if (with_answers)
+        for (std::size_t a = fi + 1; a < run_end; ++a) side.push_back(a);
+      bool placed = false;
+      if (!side.empty()) placed = beside(si, static_cast<int>(fi), f, k > 0 ? false : follows, blocks, side, k > 0);
+      if (!placed) {
+        if (k > 0) return std::nullopt;
+        figure(si, static_cast<int>(fi), f, follows);
+      }
+      const std::size_t after_figure = atoms_.size();
+      if (!(placed && with_answers)) emit_answers(si, blocks, fi + 1, run_end);
+      return after_figure;
+    };
+    auto height = [&]() { return span(start.atoms, atoms_.size()) + (atoms_.size() > start.atoms ? atoms_[start.atoms].space_before : 0); };
+    double best = 0;
+    std::size_t best_k = 0;
+    bool best_beside = false;
+    if (!emit(0, false)) return atoms_.size();  // never: k = 0 always places
+    best = height() - body_line_;  // the paragraphs beside must save more than a line
+    for (std::size_t k = 1; allow_side_ && k <= fi - first; ++k) {
+      for (bool answers_beside : {true, false}) {
+        if (!answers_beside && run_end == fi + 1) continue;
+        if (!emit(k, answers_beside)) continue;
+        const double h = height();
+        if (h < best - kFitSlack) {
+          best = h;
+          best_k = k;
+          best_beside = answers_beside;
+        }
+      }
+    }
+    side_used_ = side_used_ || best_k > 0;
+    return *emit(best_k, best_beside);
+  }
+
+  // A run of fields or a key's answer lines, in the text column.
+  void emit_answers(int si, const std::vector<Block>& blocks, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      const int b = static_cast<int>(i);
+      if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
+        if (i == from) field_column_ = field_prompt_column(blocks, i);
+        answer_field(si, b, *field, i > from);
+      } else {
+        if (i == from) key_column_ = key_prompt_column(blocks, i);
+        answer_line(si, b, std::get<AnswerLine>(blocks[i]), i > from);
+      }
     }
   }
 
@@ -326,13 +440,15 @@ class Builder {
   // narrower, never below figure_min_share of the text width); false, with nothing pushed, when
   // the fields do not fit the column or would make the pair taller than a figure may be.
   bool beside(int si, int bi, const Figure& f, bool follows_paragraph, const std::vector<Block>& blocks,
-              std::size_t from, std::size_t to) {
+              const std::vector<std::size_t>& side_blocks, bool natural_only) {
     const double full_left = left_, full_right = right_, full_width = width_;
     const double natural = figure_size(f, full_width * std::clamp(f.width_fraction, 0.05, 1.0)).first;
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
     for (double column : {full_width - kSideGap - natural, full_width * 0.45, full_width * 0.5}) {
       const double figure_w = std::min(natural, full_width - kSideGap - column);
-      if (figure_w < full_width * s_.figure_min_share) break;
+      if (natural_only && figure_w < natural - kFitSlack) break;
+      // (a figure its height already narrows below that share is not narrowed further)
+      if (figure_w < std::min(natural, full_width * s_.figure_min_share) - kFitSlack) break;
       // Panels side by side (a world frame and a canonical one) share the figure's width: one
       // narrowed for a column would leave each a few centimetres wide, so it keeps its width
       // and the answers go under it when they do not fit beside it.
@@ -344,14 +460,18 @@ class Builder {
       width_ = full_right - left_;
       // A narrow column keeps its boxes whole and wraps its long prompts instead.
       prompt_share_ = kSidePromptShare;
-      for (std::size_t i = from; i < to; ++i) {
+      for (std::size_t n = 0; n < side_blocks.size(); ++n) {
+        const std::size_t i = side_blocks[n];
         const int b = static_cast<int>(i);
-        if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
-          if (i == from) field_column_ = field_prompt_column(blocks, i);
-          answer_field(si, b, *field, i > from);
+        const bool run_start = n == 0 || side_blocks[n - 1] + 1 != i || std::holds_alternative<Paragraph>(blocks[i - 1]);
+        if (const auto* p = std::get_if<Paragraph>(&blocks[i])) {
+          paragraph(si, b, p->text, p->emphasis);
+        } else if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
+          if (run_start) field_column_ = field_prompt_column(blocks, i);
+          answer_field(si, b, *field, !run_start);
         } else {
-          if (i == from) key_column_ = key_prompt_column(blocks, i);
-          answer_line(si, b, std::get<AnswerLine>(blocks[i]), i > from);
+          if (run_start) key_column_ = key_prompt_column(blocks, i);
+          answer_line(si, b, std::get<AnswerLine>(blocks[i]), !run_start);
         }
       }
       const double column_left = left_;
@@ -393,7 +513,10 @@ class Builder {
       double y = 0;
       for (std::size_t k = 0; k < side.size(); ++k) {
         if (k > 0) y += side[k].space_before;
-        a.side_blocks.push_back({{column_left, y, right_ - column_left, side[k].height}, si, side[k].block});
+        if (!a.side_blocks.empty() && a.side_blocks.back().block == side[k].block)
+          a.side_blocks.back().rect.height = y + side[k].height - a.side_blocks.back().rect.y;
+        else
+          a.side_blocks.push_back({{column_left, y, right_ - column_left, side[k].height}, si, side[k].block});
         a.content.append(std::move(side[k].content), y);
         y += side[k].height;
       }
@@ -654,10 +777,10 @@ class Builder {
     new_page();
     std::size_t group_end = 0;
     for (std::size_t i = 0; i < atoms_.size(); ++i) {
+      const double space = empty_ ? 0 : atoms_[i].space_before;
+      if (i >= group_end && !empty_ && atoms_[i].section_start) open_section(i, space);  // may replace the section's atoms
       Atom& atom = atoms_[i];
-      const double space = empty_ ? 0 : atom.space_before;
       if (i >= group_end) {
-        if (!empty_ && atom.section_start) open_section(i, space);
         // A new group: the atoms up to the next place a page may end.
         group_end = i + 1;
         while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
@@ -681,9 +804,25 @@ class Builder {
   // the page may end between the statement and its figure, so that the statement is read in one
   // piece rather than its last lines carried over with the figure.
   void open_section(std::size_t i, double space) {
-    const Atom& atom = atoms_[i];
     std::size_t end = i + 1;
     while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+    // A section whose statement was set beside its figure is one tall group: when it does not
+    // fit here and would leave much of this page empty, it is laid out as the statement above
+    // the figure instead, which may end this page between the two.
+    if (auto alt = fallback_.find(atoms_[i].section); alt != fallback_.end()) {
+      const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
+      std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
+      if (!fits(space + span(i, head_end)) && !little_left) {
+        std::vector<Atom> other = std::move(alt->second);
+        fallback_.erase(alt);
+        atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::size_t n = other.size();
+        atoms_.insert(atoms_.begin() + static_cast<std::ptrdiff_t>(i), std::make_move_iterator(other.begin()),
+                      std::make_move_iterator(other.end()));
+        end = i + n;
+      }
+    }
+    const Atom& atom = atoms_[i];
     std::size_t head_end = std::min(i + atom.head_atoms, end);
     if (head_end < end) {
       ++head_end;
@@ -698,7 +837,7 @@ class Builder {
     }
     const std::size_t figure = i + atom.head_atoms - 1;
     if (atom.head_atoms > 1 && figure < end && !atoms_[figure].content.figures.empty() &&
-        fits(space + span(i, figure)))
+        !atoms_[figure].follows_heading && fits(space + span(i, figure)))
       atoms_[figure].break_before = true;
   }
 
@@ -775,6 +914,9 @@ class Builder {
   bool after_heading_ = false;
   bool after_figure_ = false;
   std::size_t section_begin_ = 0;
+  std::vector<Mark> marks_;  // the state before each block of the section being measured
+  bool allow_side_ = true, side_used_ = false;
+  std::map<int, std::vector<Atom>> fallback_;  // by section: its atoms without paragraphs beside figures
   double field_column_ = 0, key_column_ = 0;
 
   std::vector<LaidOutPage> pages_;
