@@ -295,11 +295,25 @@ class Builder {
     const bool follows = fi > 0 && std::holds_alternative<Paragraph>(blocks[fi - 1]);
     // Option (k, answers_beside): the last k paragraphs beside the figure, with the answers in
     // the column too or under the figure; k = 0 is the figure with its answers beside or under it.
-    auto emit = [&](std::size_t k, bool answers_beside) -> std::optional<std::size_t> {
+    // With `split` lines, the paragraph just before the figure keeps its first `split` lines
+    // across the page and sets the rest in the column (k is then 1): the statement flows around
+    // the figure, into the room its answers leave.
+    std::vector<std::string> source;
+    auto joined = [&](std::size_t from, std::size_t to) {
+      std::string text;
+      for (std::size_t l = from; l < to; ++l) text += (l > from ? " " : "") + source[l];
+      return text;
+    };
+    auto emit = [&](std::size_t k, bool answers_beside, std::size_t split = 0) -> std::optional<std::size_t> {
       undo(start);
       for (std::size_t p = first; p < fi - k; ++p) {
         const auto& para = std::get<Paragraph>(blocks[p]);
         paragraph(si, static_cast<int>(p), para.text, para.emphasis);
+      }
+      std::optional<RichText> tail;
+      if (split > 0) {
+        paragraph(si, static_cast<int>(fi - 1), joined(0, split), false);
+        tail = joined(split, source.size());
       }
       std::vector<std::size_t> side;
       for (std::size_t p = fi - k; p < fi; ++p) side.push_back(p);
@@ -307,7 +321,8 @@ class Builder {
       if (with_answers)
         for (std::size_t a = fi + 1; a < run_end; ++a) side.push_back(a);
       bool placed = false;
-      if (!side.empty()) placed = beside(si, static_cast<int>(fi), f, k > 0 ? false : follows, blocks, side, k > 0);
+      if (!side.empty())
+        placed = beside(si, static_cast<int>(fi), f, k > 0 && split == 0 ? false : follows, blocks, side, k > 0 && split == 0, tail);
       if (!placed) {
         if (k > 0) return std::nullopt;
         figure(si, static_cast<int>(fi), f, follows);
@@ -334,8 +349,23 @@ class Builder {
         }
       }
     }
+    std::size_t best_split = 0;
+    if (allow_side_ && fi > first && run_end > fi + 1) {
+      const RichText& text = std::get<Paragraph>(blocks[fi - 1]).text;
+      if (text.find('\n') == RichText::npos) source = wrap_rich_source(text, s_.body_size, width_);
+      for (std::size_t split = 1; split + 1 < source.size(); ++split) {
+        if (!emit(1, true, split)) continue;  // the rest too tall for the column
+        const double h = height();
+        if (h < best - kFitSlack) {
+          best = h;
+          best_k = 1;
+          best_beside = true;
+          best_split = split;
+        }
+      }
+    }
     side_used_ = side_used_ || best_k > 0;
-    return *emit(best_k, best_beside);
+    return *emit(best_k, best_beside, best_split);
   }
 
   // A run of fields or a key's answer lines, in the text column.
@@ -440,7 +470,8 @@ class Builder {
   // narrower, never below figure_min_share of the text width); false, with nothing pushed, when
   // the fields do not fit the column or would make the pair taller than a figure may be.
   bool beside(int si, int bi, const Figure& f, bool follows_paragraph, const std::vector<Block>& blocks,
-              const std::vector<std::size_t>& side_blocks, bool natural_only) {
+              const std::vector<std::size_t>& side_blocks, bool natural_only,
+              const std::optional<RichText>& first_text = std::nullopt) {
     const double full_left = left_, full_right = right_, full_width = width_;
     const double natural = figure_size(f, full_width * std::clamp(f.width_fraction, 0.05, 1.0)).first;
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
@@ -465,7 +496,7 @@ class Builder {
         const int b = static_cast<int>(i);
         const bool run_start = n == 0 || side_blocks[n - 1] + 1 != i || std::holds_alternative<Paragraph>(blocks[i - 1]);
         if (const auto* p = std::get_if<Paragraph>(&blocks[i])) {
-          paragraph(si, b, p->text, p->emphasis);
+          paragraph(si, b, n == 0 && first_text ? *first_text : p->text, p->emphasis);
         } else if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
           if (run_start) field_column_ = field_prompt_column(blocks, i);
           answer_field(si, b, *field, !run_start);

@@ -722,6 +722,33 @@ TEST_CASE("layout: a statement beside its figure when that makes the exercise sh
     CHECK(rect_of(pages[0], 0, 1).bottom() <= fig.y + kPt);
   }
 
+  SUBCASE("2b. a statement too long for the column flows around the figure: its first lines across, the rest beside") {
+    Document doc = sample(1);
+    std::get<Paragraph>(doc.sections[0].blocks[1]).text = kText + " " + kText + " " + kText;
+    std::get<Figure>(doc.sections[0].blocks[2]) = Figure{square_scene(5, 7), 0.55};
+    const auto pages = layout_document(doc);
+    REQUIRE(pages.size() == 1);
+    const PageRect fig = pages[0].figures.at(0).rect;
+    int across = 0, beside_figure = 0;
+    for (const auto& b : pages[0].blocks) {
+      if (b.section != 0 || b.block != 1) continue;
+      if (b.rect.x >= fig.right() - kPt) {
+        ++beside_figure;
+        CHECK(b.rect.y >= fig.y - kPt);
+      } else {
+        ++across;
+        CHECK(b.rect.bottom() <= fig.y + kPt);
+      }
+    }
+    CHECK(across == 1);
+    CHECK(beside_figure == 1);
+    // Every word of the statement is printed once.
+    std::string printed;
+    for (const auto& t : pages[0].texts) printed += joined(t) + " ";
+    CHECK(printed.find("décimales. Les points") != std::string::npos);
+    check_inside(pages[0], style);
+  }
+
   SUBCASE("3. beside its figure when a page holds it; above it when it would leave a page much space") {
     // The first exercise fills most of a page; the second, a tall figure with its statement
     // beside it, would not fit in what is left.
