@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <variant>
 
@@ -161,6 +162,16 @@ class Builder {
  private:
   // ---- measuring: Document → atoms -------------------------------------------------------
 
+  // wrap_rich_text, remembered: the options tried for a figure and its neighbours (and a
+  // section's fallback) wrap the same texts at the same widths again and again.
+  std::vector<std::vector<TextRun>> wrap(const RichText& text, double size, double width) {
+    std::string key = fmt::format("{}|{}|", size, width);
+    key += text;
+    auto it = wrapped_.find(key);
+    if (it == wrapped_.end()) it = wrapped_.emplace(std::move(key), wrap_rich_text(text, size, width)).first;
+    return it->second;
+  }
+
   void push(Atom atom) {
     if (after_heading_) atom.break_before = false;  // a heading never ends a page
     atom.follows_heading = after_heading_;
@@ -202,27 +213,40 @@ class Builder {
     if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);
   }
 
-  // A section's atoms; when a statement or steps went beside a figure, the section is also laid
-  // out without that, as the fallback open_section may take.
+  // The builder's state before a block: undoing a block's atoms goes back to it.
+  struct Mark {
+    std::size_t atoms = 0;
+    bool after_heading = false, after_figure = false;
+  };
+  Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
+  void undo(const Mark& m) {
+    atoms_.resize(m.atoms);
+    after_heading_ = m.after_heading;
+    after_figure_ = m.after_figure;
+  }
+
+  // A section's atoms. When a statement or steps went beside a figure, open_section may lay the
+  // section out again without that (fallback), from the builder's state at its start.
   void section(int si) {
     const Mark start = mark();
     side_used_ = false;
     allow_side_ = true;
     build_section(si);
-    if (!side_used_) return;
-    std::vector<Atom> preferred(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(start.atoms)),
-                                std::make_move_iterator(atoms_.end()));
-    const Mark end = mark();
-    undo(start);
+    if (side_used_) fallback_.emplace(si, start);
+  }
+
+  // The section laid out with no paragraph beside a figure.
+  std::vector<Atom> fallback(int si, const Mark& start) {
+    const Mark now = mark();
+    after_heading_ = start.after_heading;
+    after_figure_ = start.after_figure;
     allow_side_ = false;
     build_section(si);
     allow_side_ = true;
-    fallback_[si].assign(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(start.atoms)),
-                         std::make_move_iterator(atoms_.end()));
-    atoms_.resize(start.atoms);
-    atoms_.insert(atoms_.end(), std::make_move_iterator(preferred.begin()), std::make_move_iterator(preferred.end()));
-    after_heading_ = end.after_heading;
-    after_figure_ = end.after_figure;
+    std::vector<Atom> atoms(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(now.atoms)),
+                            std::make_move_iterator(atoms_.end()));
+    undo(now);
+    return atoms;
   }
 
   void build_section(int si) {
@@ -262,18 +286,6 @@ class Builder {
       first.section_start = true;
       first.head_atoms = (head_end > section_begin_ ? head_end : atoms_.size()) - section_begin_;
     }
-  }
-
-  // The builder's state before a block: undoing a block's atoms goes back to it.
-  struct Mark {
-    std::size_t atoms = 0;
-    bool after_heading = false, after_figure = false;
-  };
-  Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
-  void undo(const Mark& m) {
-    atoms_.resize(m.atoms);
-    after_heading_ = m.after_heading;
-    after_figure_ = m.after_figure;
   }
 
   // A figure, the run of fields or answers after it, and the plain paragraphs just before it:
@@ -337,10 +349,13 @@ class Builder {
     bool best_beside = false;
     if (!emit(0, false)) return atoms_.size();  // never: k = 0 always places
     best = height() - body_line_;  // the paragraphs beside must save more than a line
+    // More paragraphs make the column only taller: once none fits beside the figure, stop.
     for (std::size_t k = 1; allow_side_ && k <= fi - first; ++k) {
+      bool any = false;
       for (bool answers_beside : {true, false}) {
         if (!answers_beside && run_end == fi + 1) continue;
         if (!emit(k, answers_beside)) continue;
+        any = true;
         const double h = height();
         if (h < best - kFitSlack) {
           best = h;
@@ -348,14 +363,22 @@ class Builder {
           best_beside = answers_beside;
         }
       }
+      if (!any) break;
     }
     std::size_t best_split = 0;
     if (allow_side_ && fi > first && run_end > fi + 1) {
       const RichText& text = std::get<Paragraph>(blocks[fi - 1]).text;
       if (text.find('\n') == RichText::npos) source = wrap_rich_source(text, s_.body_size, width_);
-      for (std::size_t split = 1; split + 1 < source.size(); ++split) {
-        if (!emit(1, true, split)) continue;  // the rest too tall for the column
+      // From the shortest rest up: a longer one only makes the column taller, so once it no
+      // longer fits beside the figure, stop.
+      double previous = 0;
+      for (std::size_t split = source.size() < 3 ? 0 : source.size() - 2; split >= 1; --split) {
+        if (!emit(1, true, split)) break;  // the rest too tall for the column
         const double h = height();
+        // Lines move from above the figure into the room beside it until the column outgrows
+        // the figure; past that the whole only grows.
+        if (previous > 0 && h > previous + kFitSlack) break;
+        previous = h;
         if (h < best - kFitSlack) {
           best = h;
           best_k = 1;
@@ -406,7 +429,7 @@ class Builder {
     const double size = s_.body_size;
     if (emphasis) {
       const double pad = s_.shade_padding;
-      auto lines = wrap_rich_text(text, size, width_ - 2 * pad);
+      auto lines = wrap(text, size, width_ - 2 * pad);
       Atom a;
       a.section = si;
       a.block = bi;
@@ -421,7 +444,7 @@ class Builder {
       push(std::move(a));
       return;
     }
-    auto lines = wrap_rich_text(text, size, width_);
+    auto lines = wrap(text, size, width_);
     const std::size_t n = lines.size();
     for (std::size_t i = 0; i < n; ++i) {
       Atom a;
@@ -439,7 +462,13 @@ class Builder {
   }
 
   // A figure's size at most `w` wide and figure_max_height of the page high.
-  std::pair<double, double> figure_size(const Figure& f, double w) const {
+  std::pair<double, double> figure_size(const Figure& f, double w) {
+    // remembered, like wrap: the options for a figure ask its size at the same widths
+    const std::pair<const Scene*, double> key{&f.scene, w};
+    if (auto it = figure_sizes_.find(key); it != figure_sizes_.end()) return it->second;
+    return figure_sizes_[key] = measure_figure(f, w);
+  }
+  std::pair<double, double> measure_figure(const Figure& f, double w) const {
     double h = scene_height(f.scene, w);
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
     // The panels' height is proportional to the width, the captions' is not: a few narrowings
@@ -665,10 +694,10 @@ class Builder {
     // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
     // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
     // ticks: it reads better, and takes less height, on lines of its own above them.
-    auto prompt_lines = wrap_rich_text(f.prompt, size, field_column_ - kPromptGap);
+    auto prompt_lines = wrap(f.prompt, size, field_column_ - kPromptGap);
     bool prompt_above = false;
     if (ticks && prompt_lines.size() > 2) {
-      auto wide = wrap_rich_text(f.prompt, size, limit - left_);
+      auto wide = wrap(f.prompt, size, limit - left_);
       if (wide.size() < prompt_lines.size()) {
         prompt_lines = std::move(wide);
         prompt_above = true;
@@ -748,13 +777,13 @@ class Builder {
     const double id_room = id_w > 0 ? id_w + kIdGap : 0;
     double answer_x = left_ + key_column_;
     double prompt_w = key_column_ - kPromptGap;
-    auto answer = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
-    const std::size_t own_lines = wrap_rich_text(l.answer, size, kUnbounded).size();
+    auto answer = wrap(l.answer, size, right_ - answer_x - id_room);
+    const std::size_t own_lines = wrap(l.answer, size, kUnbounded).size();
     bool stacked = false;
     if (answer.size() > own_lines) {
       // Prompt on its line, the answer under it with the column's whole width.
       answer_x = left_ + kStackIndent;
-      auto under = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+      auto under = wrap(l.answer, size, right_ - answer_x - id_room);
       if (under.size() < answer.size()) {
         answer = std::move(under);
         prompt_w = right_ - left_ - id_room;
@@ -767,7 +796,7 @@ class Builder {
 
     double y = pad + size * kBaseline;
     std::size_t rows = 0;
-    for (auto& runs : wrap_rich_text(l.prompt, size, prompt_w)) {
+    for (auto& runs : wrap(l.prompt, size, prompt_w)) {
       a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
     }
     const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
@@ -844,7 +873,7 @@ class Builder {
       const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
       std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
       if (!fits(space + span(i, head_end)) && !little_left) {
-        std::vector<Atom> other = std::move(alt->second);
+        std::vector<Atom> other = fallback(alt->first, alt->second);
         fallback_.erase(alt);
         atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
         const std::size_t n = other.size();
@@ -947,7 +976,9 @@ class Builder {
   std::size_t section_begin_ = 0;
   std::vector<Mark> marks_;  // the state before each block of the section being measured
   bool allow_side_ = true, side_used_ = false;
-  std::map<int, std::vector<Atom>> fallback_;  // by section: its atoms without paragraphs beside figures
+  std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
+  std::unordered_map<std::string, std::vector<std::vector<TextRun>>> wrapped_;
+  std::map<std::pair<const Scene*, double>, std::pair<double, double>> figure_sizes_;  // by section: its atoms without paragraphs beside figures
   double field_column_ = 0, key_column_ = 0;
 
   std::vector<LaidOutPage> pages_;
