@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <optional>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <variant>
 
@@ -39,6 +42,8 @@ constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fi
 // A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
 // much indented, when that wraps it less (a point or a value is then on one line).
 constexpr double kStackIndent = 12;
+// At most this many paragraphs before a figure are tried in the column beside it.
+constexpr std::size_t kMaxSideParagraphs = 8;
 // Wider than any line a page holds: what wrapping gives for this width is the text's own lines
 // (only its '\n' break it).
 constexpr double kUnbounded = 1e9;
@@ -130,6 +135,7 @@ struct Atom {
   // The blocks set beside a figure in this atom, with rectangles from the atom's top.
   std::vector<PlacedBlock> side_blocks;
   bool wrapped = false;  // a key's answer broken over lines it does not ask for
+  bool follows_heading = false;  // right after a heading: a page may not end before it
   Fragment content;
 };
 
@@ -156,8 +162,19 @@ class Builder {
  private:
   // ---- measuring: Document → atoms -------------------------------------------------------
 
+  // wrap_rich_text, remembered: the options tried for a figure and its neighbours (and a
+  // section's fallback) wrap the same texts at the same widths again and again.
+  std::vector<std::vector<TextRun>> wrap(const RichText& text, double size, double width) {
+    std::string key = fmt::format("{}|{}|", size, width);
+    key += text;
+    auto it = wrapped_.find(key);
+    if (it == wrapped_.end()) it = wrapped_.emplace(std::move(key), wrap_rich_text(text, size, width)).first;
+    return it->second;
+  }
+
   void push(Atom atom) {
     if (after_heading_) atom.break_before = false;  // a heading never ends a page
+    atom.follows_heading = after_heading_;
     if (after_figure_) atom.space_before = std::max(atom.space_before, s_.figure_space);
     after_heading_ = false;
     after_figure_ = false;
@@ -196,9 +213,46 @@ class Builder {
     if (!doc_.header_note.empty()) paragraph(-1, -1, doc_.header_note, false);
   }
 
+  // The builder's state before a block: undoing a block's atoms goes back to it.
+  struct Mark {
+    std::size_t atoms = 0;
+    bool after_heading = false, after_figure = false;
+  };
+  Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
+  void undo(const Mark& m) {
+    atoms_.resize(m.atoms);
+    after_heading_ = m.after_heading;
+    after_figure_ = m.after_figure;
+  }
+
+  // A section's atoms. When a statement or steps went beside a figure, open_section may lay the
+  // section out again without that (fallback), from the builder's state at its start.
   void section(int si) {
+    const Mark start = mark();
+    side_used_ = false;
+    allow_side_ = true;
+    build_section(si);
+    if (side_used_) fallback_.emplace(si, start);
+  }
+
+  // The section laid out with no paragraph beside a figure.
+  std::vector<Atom> fallback(int si, const Mark& start) {
+    const Mark now = mark();
+    after_heading_ = start.after_heading;
+    after_figure_ = start.after_figure;
+    allow_side_ = false;
+    build_section(si);
+    allow_side_ = true;
+    std::vector<Atom> atoms(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(now.atoms)),
+                            std::make_move_iterator(atoms_.end()));
+    undo(now);
+    return atoms;
+  }
+
+  void build_section(int si) {
     const auto& blocks = doc_.sections[static_cast<std::size_t>(si)].blocks;
     section_begin_ = atoms_.size();
+    marks_.clear();
     // The statement: from the heading to the first figure, or to the first field or answer.
     std::size_t head_end = 0;
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
@@ -207,20 +261,16 @@ class Builder {
       const int b = static_cast<int>(bi);
       const bool answers = std::holds_alternative<AnswerField>(block) || std::holds_alternative<AnswerLine>(block);
       if (head_end == 0 && answers) head_end = atoms_.size();
+      if (marks_.size() <= bi) marks_.resize(bi + 1);
+      marks_[bi] = mark();
       if (const auto* h = std::get_if<Heading>(&block)) {
         heading(si, b, *h);
       } else if (const auto* p = std::get_if<Paragraph>(&block)) {
         paragraph(si, b, p->text, p->emphasis);
       } else if (const auto* f = std::get_if<Figure>(&block)) {
-        const bool follows = before && std::holds_alternative<Paragraph>(*before);
-        const std::size_t run_end = answers_run_end(blocks, bi + 1);
-        if (run_end > bi + 1 && beside(si, b, *f, follows, blocks, bi + 1, run_end)) {
-          if (head_end == 0) head_end = atoms_.size();
-          bi = run_end - 1;  // the fields or answers are placed
-          continue;
-        }
-        figure(si, b, *f, follows);
-        if (head_end == 0) head_end = atoms_.size();
+        const std::size_t figure_atom = figure_with_neighbours(si, bi, *f, blocks);
+        if (head_end == 0) head_end = figure_atom;
+        bi = answers_run_end(blocks, bi + 1) - 1;  // the fields or answers are placed
       } else if (const auto* field = std::get_if<AnswerField>(&block)) {
         const bool follows = before && std::holds_alternative<AnswerField>(*before);
         if (!follows) field_column_ = field_prompt_column(blocks, bi);
@@ -235,6 +285,123 @@ class Builder {
       Atom& first = atoms_[section_begin_];
       first.section_start = true;
       first.head_atoms = (head_end > section_begin_ ? head_end : atoms_.size()) - section_begin_;
+    }
+  }
+
+  // A figure, the run of fields or answers after it, and the plain paragraphs just before it:
+  // the answers beside the figure when they fit (else under it), and, when that makes the whole
+  // shorter by more than a line, the last paragraphs before the figure in the column beside it
+  // too, above the answers (or with the answers under the figure): a statement read beside the
+  // figure it describes, a key's last steps beside their construction. The figure keeps the width
+  // its kind asks for. Returns the index of the atom after the figure's.
+  std::size_t figure_with_neighbours(int si, std::size_t fi, const Figure& f, const std::vector<Block>& blocks) {
+    const std::size_t run_end = answers_run_end(blocks, fi + 1);
+    // The plain paragraphs right before the figure (not the heading, not a shaded box).
+    std::size_t first = fi;
+    while (first > 0 && fi - first < kMaxSideParagraphs) {
+      const auto* p = std::get_if<Paragraph>(&blocks[first - 1]);
+      if (!p || p->emphasis) break;
+      --first;
+    }
+    const Mark start = marks_[first];
+    const bool follows = fi > 0 && std::holds_alternative<Paragraph>(blocks[fi - 1]);
+    // Option (k, answers_beside): the last k paragraphs beside the figure, with the answers in
+    // the column too or under the figure; k = 0 is the figure with its answers beside or under it.
+    // With `split` lines, the paragraph just before the figure keeps its first `split` lines
+    // across the page and sets the rest in the column (k is then 1): the statement flows around
+    // the figure, into the room its answers leave.
+    std::vector<std::string> source;
+    auto joined = [&](std::size_t from, std::size_t to) {
+      std::string text;
+      for (std::size_t l = from; l < to; ++l) text += (l > from ? " " : "") + source[l];
+      return text;
+    };
+    auto emit = [&](std::size_t k, bool answers_beside, std::size_t split = 0) -> std::optional<std::size_t> {
+      undo(start);
+      for (std::size_t p = first; p < fi - k; ++p) {
+        const auto& para = std::get<Paragraph>(blocks[p]);
+        paragraph(si, static_cast<int>(p), para.text, para.emphasis);
+      }
+      std::optional<RichText> tail;
+      if (split > 0) {
+        paragraph(si, static_cast<int>(fi - 1), joined(0, split), false);
+        tail = joined(split, source.size());
+      }
+      std::vector<std::size_t> side;
+      for (std::size_t p = fi - k; p < fi; ++p) side.push_back(p);
+      const bool with_answers = k == 0 || answers_beside;
+      if (with_answers)
+        for (std::size_t a = fi + 1; a < run_end; ++a) side.push_back(a);
+      bool placed = false;
+      if (!side.empty())
+        placed = beside(si, static_cast<int>(fi), f, k > 0 && split == 0 ? false : follows, blocks, side, k > 0 && split == 0, tail);
+      if (!placed) {
+        if (k > 0) return std::nullopt;
+        figure(si, static_cast<int>(fi), f, follows);
+      }
+      const std::size_t after_figure = atoms_.size();
+      if (!(placed && with_answers)) emit_answers(si, blocks, fi + 1, run_end);
+      return after_figure;
+    };
+    auto height = [&]() { return span(start.atoms, atoms_.size()) + (atoms_.size() > start.atoms ? atoms_[start.atoms].space_before : 0); };
+    double best = 0;
+    std::size_t best_k = 0;
+    bool best_beside = false;
+    if (!emit(0, false)) return atoms_.size();  // never: k = 0 always places
+    best = height() - body_line_;  // the paragraphs beside must save more than a line
+    // More paragraphs make the column only taller: once none fits beside the figure, stop.
+    for (std::size_t k = 1; allow_side_ && k <= fi - first; ++k) {
+      bool any = false;
+      for (bool answers_beside : {true, false}) {
+        if (!answers_beside && run_end == fi + 1) continue;
+        if (!emit(k, answers_beside)) continue;
+        any = true;
+        const double h = height();
+        if (h < best - kFitSlack) {
+          best = h;
+          best_k = k;
+          best_beside = answers_beside;
+        }
+      }
+      if (!any) break;
+    }
+    std::size_t best_split = 0;
+    if (allow_side_ && fi > first && run_end > fi + 1) {
+      const RichText& text = std::get<Paragraph>(blocks[fi - 1]).text;
+      if (text.find('\n') == RichText::npos) source = wrap_rich_source(text, s_.body_size, width_);
+      // From the shortest rest up: a longer one only makes the column taller, so once it no
+      // longer fits beside the figure, stop.
+      double previous = 0;
+      for (std::size_t split = source.size() < 3 ? 0 : source.size() - 2; split >= 1; --split) {
+        if (!emit(1, true, split)) break;  // the rest too tall for the column
+        const double h = height();
+        // Lines move from above the figure into the room beside it until the column outgrows
+        // the figure; past that the whole only grows.
+        if (previous > 0 && h > previous + kFitSlack) break;
+        previous = h;
+        if (h < best - kFitSlack) {
+          best = h;
+          best_k = 1;
+          best_beside = true;
+          best_split = split;
+        }
+      }
+    }
+    side_used_ = side_used_ || best_k > 0;
+    return *emit(best_k, best_beside, best_split);
+  }
+
+  // A run of fields or a key's answer lines, in the text column.
+  void emit_answers(int si, const std::vector<Block>& blocks, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      const int b = static_cast<int>(i);
+      if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
+        if (i == from) field_column_ = field_prompt_column(blocks, i);
+        answer_field(si, b, *field, i > from);
+      } else {
+        if (i == from) key_column_ = key_prompt_column(blocks, i);
+        answer_line(si, b, std::get<AnswerLine>(blocks[i]), i > from);
+      }
     }
   }
 
@@ -262,7 +429,7 @@ class Builder {
     const double size = s_.body_size;
     if (emphasis) {
       const double pad = s_.shade_padding;
-      auto lines = wrap_rich_text(text, size, width_ - 2 * pad);
+      auto lines = wrap(text, size, width_ - 2 * pad);
       Atom a;
       a.section = si;
       a.block = bi;
@@ -277,7 +444,7 @@ class Builder {
       push(std::move(a));
       return;
     }
-    auto lines = wrap_rich_text(text, size, width_);
+    auto lines = wrap(text, size, width_);
     const std::size_t n = lines.size();
     for (std::size_t i = 0; i < n; ++i) {
       Atom a;
@@ -295,7 +462,13 @@ class Builder {
   }
 
   // A figure's size at most `w` wide and figure_max_height of the page high.
-  std::pair<double, double> figure_size(const Figure& f, double w) const {
+  std::pair<double, double> figure_size(const Figure& f, double w) {
+    // remembered, like wrap: the options for a figure ask its size at the same widths
+    const std::pair<const Scene*, double> key{&f.scene, w};
+    if (auto it = figure_sizes_.find(key); it != figure_sizes_.end()) return it->second;
+    return figure_sizes_[key] = measure_figure(f, w);
+  }
+  std::pair<double, double> measure_figure(const Figure& f, double w) const {
     double h = scene_height(f.scene, w);
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
     // The panels' height is proportional to the width, the captions' is not: a few narrowings
@@ -326,13 +499,16 @@ class Builder {
   // narrower, never below figure_min_share of the text width); false, with nothing pushed, when
   // the fields do not fit the column or would make the pair taller than a figure may be.
   bool beside(int si, int bi, const Figure& f, bool follows_paragraph, const std::vector<Block>& blocks,
-              std::size_t from, std::size_t to) {
+              const std::vector<std::size_t>& side_blocks, bool natural_only,
+              const std::optional<RichText>& first_text = std::nullopt) {
     const double full_left = left_, full_right = right_, full_width = width_;
     const double natural = figure_size(f, full_width * std::clamp(f.width_fraction, 0.05, 1.0)).first;
     const double max_h = (bottom_ - top_) * s_.figure_max_height;
     for (double column : {full_width - kSideGap - natural, full_width * 0.45, full_width * 0.5}) {
       const double figure_w = std::min(natural, full_width - kSideGap - column);
-      if (figure_w < full_width * s_.figure_min_share) break;
+      if (natural_only && figure_w < natural - kFitSlack) break;
+      // (a figure its height already narrows below that share is not narrowed further)
+      if (figure_w < std::min(natural, full_width * s_.figure_min_share) - kFitSlack) break;
       // Panels side by side (a world frame and a canonical one) share the figure's width: one
       // narrowed for a column would leave each a few centimetres wide, so it keeps its width
       // and the answers go under it when they do not fit beside it.
@@ -344,14 +520,18 @@ class Builder {
       width_ = full_right - left_;
       // A narrow column keeps its boxes whole and wraps its long prompts instead.
       prompt_share_ = kSidePromptShare;
-      for (std::size_t i = from; i < to; ++i) {
+      for (std::size_t n = 0; n < side_blocks.size(); ++n) {
+        const std::size_t i = side_blocks[n];
         const int b = static_cast<int>(i);
-        if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
-          if (i == from) field_column_ = field_prompt_column(blocks, i);
-          answer_field(si, b, *field, i > from);
+        const bool run_start = n == 0 || side_blocks[n - 1] + 1 != i || std::holds_alternative<Paragraph>(blocks[i - 1]);
+        if (const auto* p = std::get_if<Paragraph>(&blocks[i])) {
+          paragraph(si, b, n == 0 && first_text ? *first_text : p->text, p->emphasis);
+        } else if (const auto* field = std::get_if<AnswerField>(&blocks[i])) {
+          if (run_start) field_column_ = field_prompt_column(blocks, i);
+          answer_field(si, b, *field, !run_start);
         } else {
-          if (i == from) key_column_ = key_prompt_column(blocks, i);
-          answer_line(si, b, std::get<AnswerLine>(blocks[i]), i > from);
+          if (run_start) key_column_ = key_prompt_column(blocks, i);
+          answer_line(si, b, std::get<AnswerLine>(blocks[i]), !run_start);
         }
       }
       const double column_left = left_;
@@ -393,7 +573,10 @@ class Builder {
       double y = 0;
       for (std::size_t k = 0; k < side.size(); ++k) {
         if (k > 0) y += side[k].space_before;
-        a.side_blocks.push_back({{column_left, y, right_ - column_left, side[k].height}, si, side[k].block});
+        if (!a.side_blocks.empty() && a.side_blocks.back().block == side[k].block)
+          a.side_blocks.back().rect.height = y + side[k].height - a.side_blocks.back().rect.y;
+        else
+          a.side_blocks.push_back({{column_left, y, right_ - column_left, side[k].height}, si, side[k].block});
         a.content.append(std::move(side[k].content), y);
         y += side[k].height;
       }
@@ -511,10 +694,10 @@ class Builder {
     // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
     // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
     // ticks: it reads better, and takes less height, on lines of its own above them.
-    auto prompt_lines = wrap_rich_text(f.prompt, size, field_column_ - kPromptGap);
+    auto prompt_lines = wrap(f.prompt, size, field_column_ - kPromptGap);
     bool prompt_above = false;
     if (ticks && prompt_lines.size() > 2) {
-      auto wide = wrap_rich_text(f.prompt, size, limit - left_);
+      auto wide = wrap(f.prompt, size, limit - left_);
       if (wide.size() < prompt_lines.size()) {
         prompt_lines = std::move(wide);
         prompt_above = true;
@@ -594,13 +777,13 @@ class Builder {
     const double id_room = id_w > 0 ? id_w + kIdGap : 0;
     double answer_x = left_ + key_column_;
     double prompt_w = key_column_ - kPromptGap;
-    auto answer = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
-    const std::size_t own_lines = wrap_rich_text(l.answer, size, kUnbounded).size();
+    auto answer = wrap(l.answer, size, right_ - answer_x - id_room);
+    const std::size_t own_lines = wrap(l.answer, size, kUnbounded).size();
     bool stacked = false;
     if (answer.size() > own_lines) {
       // Prompt on its line, the answer under it with the column's whole width.
       answer_x = left_ + kStackIndent;
-      auto under = wrap_rich_text(l.answer, size, right_ - answer_x - id_room);
+      auto under = wrap(l.answer, size, right_ - answer_x - id_room);
       if (under.size() < answer.size()) {
         answer = std::move(under);
         prompt_w = right_ - left_ - id_room;
@@ -613,7 +796,7 @@ class Builder {
 
     double y = pad + size * kBaseline;
     std::size_t rows = 0;
-    for (auto& runs : wrap_rich_text(l.prompt, size, prompt_w)) {
+    for (auto& runs : wrap(l.prompt, size, prompt_w)) {
       a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
     }
     const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
@@ -654,10 +837,10 @@ class Builder {
     new_page();
     std::size_t group_end = 0;
     for (std::size_t i = 0; i < atoms_.size(); ++i) {
+      const double space = empty_ ? 0 : atoms_[i].space_before;
+      if (i >= group_end && !empty_ && atoms_[i].section_start) open_section(i, space);  // may replace the section's atoms
       Atom& atom = atoms_[i];
-      const double space = empty_ ? 0 : atom.space_before;
       if (i >= group_end) {
-        if (!empty_ && atom.section_start) open_section(i, space);
         // A new group: the atoms up to the next place a page may end.
         group_end = i + 1;
         while (group_end < atoms_.size() && !atoms_[group_end].break_before) ++group_end;
@@ -681,9 +864,25 @@ class Builder {
   // the page may end between the statement and its figure, so that the statement is read in one
   // piece rather than its last lines carried over with the figure.
   void open_section(std::size_t i, double space) {
-    const Atom& atom = atoms_[i];
     std::size_t end = i + 1;
     while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+    // A section whose statement was set beside its figure is one tall group: when it does not
+    // fit here and would leave much of this page empty, it is laid out as the statement above
+    // the figure instead, which may end this page between the two.
+    if (auto alt = fallback_.find(atoms_[i].section); alt != fallback_.end()) {
+      const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
+      std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
+      if (!fits(space + span(i, head_end)) && !little_left) {
+        std::vector<Atom> other = fallback(alt->first, alt->second);
+        fallback_.erase(alt);
+        atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::size_t n = other.size();
+        atoms_.insert(atoms_.begin() + static_cast<std::ptrdiff_t>(i), std::make_move_iterator(other.begin()),
+                      std::make_move_iterator(other.end()));
+        end = i + n;
+      }
+    }
+    const Atom& atom = atoms_[i];
     std::size_t head_end = std::min(i + atom.head_atoms, end);
     if (head_end < end) {
       ++head_end;
@@ -698,7 +897,7 @@ class Builder {
     }
     const std::size_t figure = i + atom.head_atoms - 1;
     if (atom.head_atoms > 1 && figure < end && !atoms_[figure].content.figures.empty() &&
-        fits(space + span(i, figure)))
+        !atoms_[figure].follows_heading && fits(space + span(i, figure)))
       atoms_[figure].break_before = true;
   }
 
@@ -775,6 +974,11 @@ class Builder {
   bool after_heading_ = false;
   bool after_figure_ = false;
   std::size_t section_begin_ = 0;
+  std::vector<Mark> marks_;  // the state before each block of the section being measured
+  bool allow_side_ = true, side_used_ = false;
+  std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
+  std::unordered_map<std::string, std::vector<std::vector<TextRun>>> wrapped_;
+  std::map<std::pair<const Scene*, double>, std::pair<double, double>> figure_sizes_;  // by section: its atoms without paragraphs beside figures
   double field_column_ = 0, key_column_ = 0;
 
   std::vector<LaidOutPage> pages_;

@@ -14,7 +14,13 @@
 // paragraph alone, never inside a run of fields or a key's table that a page could hold.
 // A figure followed by fields or a key's answers has them beside it, in a column on its right,
 // when they fit there (half the paper of one above the other); a figure of several panels side
-// by side is never narrowed for that column.
+// by side is never narrowed for that column. The plain paragraphs just before a figure (a
+// statement, a key's last steps) go in that column too, above the answers or with the answers
+// under the figure, when that makes the whole shorter by more than a line; the figure keeps the
+// width its kind asks for. A statement too long for that column may flow around the figure: its
+// first lines across the page, the rest in the column above the fields. Such a section, when its opening does not fit in what is left of a
+// page and would leave more than a fifth of it empty, is set with its paragraphs above the figure
+// instead, so that the page may end between them.
 #include <string>
 #include <vector>
 
@@ -117,11 +123,11 @@ struct LayoutStyle {
   double name_row_height = 26;      // the first page's name and student number fields
   double qr_module = 1.3;           // side of a QR module: 21 modules + quiet zone ≈ 11 mm
 
-  double body_size = 10.5;
+  double body_size = 10;
   double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript
-  double heading1_size = 13, heading2_size = 11;
-  double heading1_space = 16, heading2_space = 10;  // above a heading (dropped at a page top)
-  double block_space = 7;           // between blocks
+  double heading1_size = 12.5, heading2_size = 11;
+  double heading1_space = 12, heading2_space = 9;  // above a heading (dropped at a page top)
+  double block_space = 6;           // between blocks
   double shade_padding = 5;         // around an emphasised paragraph's text
 
   double id_size = 6.5;             // question ids beside fields
@@ -141,7 +147,7 @@ struct LayoutStyle {
   // A figure never takes more than this share of a page's text height, so that the paragraph
   // it belongs to still fits above it.
   double figure_max_height = 0.55;
-  double figure_space = 10;         // above and below a figure (a frame needs more air than text)
+  double figure_space = 8;         // above and below a figure (a frame needs more air than text)
   // A figure followed by answer fields (or a key's answers) gets them in a column on its right
   // when they fit there; the figure is then narrowed, but never below this share of the text width.
   double figure_min_share = 0.42;

@@ -280,12 +280,18 @@ double text_width(std::string_view rich, double font_size, Weight weight) {
 std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double font_size,
                                                  double max_width, Weight weight) {
   std::vector<std::vector<TextRun>> lines;
+  for (const auto& line : wrap_rich_source(rich, font_size, max_width, weight))
+    lines.push_back(parse_rich_text(line, weight));
+  return lines;
+}
+
+std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
+                                          Weight weight) {
+  std::vector<std::string> lines;
   if (rich.empty()) return lines;
   const Face face = weight == Weight::bold ? Face::bold : Face::regular;
   const double space = advance_em(U' ', face) * font_size;
-  const auto finish = [&](const std::string& line) {
-    lines.push_back(parse_rich_text(line, weight));
-  };
+  const auto finish = [&](const std::string& line) { lines.push_back(line); };
 
   std::size_t start = 0;
   for (;;) {

@@ -66,5 +66,9 @@ TextExtent text_extent(std::span<const TextRun> runs, double font_size);
 // break (two in a row give an empty line). Empty text gives no line.
 std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double font_size,
                                                  double max_width, Weight weight = Weight::regular);
+// The same lines, as the markup each is set from: joined with spaces they give the text back
+// (but its '\n'), so that a paragraph can be split after its first lines.
+std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
+                                          Weight weight = Weight::regular);
 
 }  // namespace epure::render

@@ -62,9 +62,11 @@ for id in $ids; do
 done
 [ "$(grep -c '^page [0-9]*/[0-9]*$' "$tmp/sheets.txt")" -eq "$(pages "$tmp/a/sheets.pdf")" ] ||
   fail "not every page of sheets.pdf says 'page i/n'"
+# (a phrase may be broken over two lines, in a column beside a figure: the text's lines joined)
+tr '\n' ' ' < "$tmp/sheets.txt" > "$tmp/sheets-flat.txt"
 for words in "Name:" "Student number:" "Exercise 1" "Using only the dot product" "orthogonal projection" \
               "Intersection of a ray and a circle" "Give every numerical answer rounded to 2 decimals"; do
-  grep -q "$words" "$tmp/sheets.txt" || fail "sheets.pdf: no '$words' in pdftotext's output"
+  grep -q "$words" "$tmp/sheets-flat.txt" || fail "sheets.pdf: no '$words' in pdftotext's output"
 done
 grep -q "Worked solution\|answer key" "$tmp/keys.txt" || fail "keys.pdf: no key wording"
 grep -q "√" "$tmp/keys.txt" || fail "keys.pdf: no exact root (√) in the text"

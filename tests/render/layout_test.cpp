@@ -653,13 +653,23 @@ TEST_CASE("layout: a figure's fields and a key's answers beside it, when they fi
       if (t.ink == Ink::answer) CHECK(t.baseline.y > fig.bottom());
   }
 
-  SUBCASE("fields too many for the figure's height go below it, centred as before") {
+  SUBCASE("fields too many for the figure's height go below it; the statement beside it, or it is centred") {
     Document doc = sample(1);
     for (int k = 0; k < 30; ++k)
       doc.sections[0].add(AnswerField{fmt::format("1.x{}", k), "x =", AnswerField::Kind::number, {}});
     const auto pages = layout_document(doc);
     const PageRect fig = pages[0].figures[0].rect;
-    CHECK(fig.x + fig.width / 2 == doctest::Approx(left + width / 2));
+    // The statement is shorter in the column beside the figure than above it: it goes there.
+    const auto statement = std::find_if(pages[0].blocks.begin(), pages[0].blocks.end(),
+                                        [](const PlacedBlock& b) { return b.section == 0 && b.block == 1; });
+    REQUIRE(statement != pages[0].blocks.end());
+    CHECK(statement->rect.x >= fig.right() - kPt);
+    CHECK(fig.x == doctest::Approx(left));
+    // Without a statement before it, the figure is centred as before.
+    Document bare = doc;
+    bare.sections[0].blocks.erase(bare.sections[0].blocks.begin() + 1);
+    const PageRect centred = layout_document(bare)[0].figures[0].rect;
+    CHECK(centred.x + centred.width / 2 == doctest::Approx(left + width / 2));
     for (const auto& page : pages)
       for (const PlacedBox& b : page.boxes)
         if (b.kind == BoxKind::answer && page.number == 1) CHECK(b.rect.y >= fig.bottom() - kPt);
@@ -675,5 +685,84 @@ TEST_CASE("layout: a figure's fields and a key's answers beside it, when they fi
     const PageRect fig = pages[0].figures[0].rect;
     for (const PlacedBox& b : pages[0].boxes)
       if (b.kind == BoxKind::answer) CHECK(b.rect.y >= fig.bottom() - kPt);
+  }
+}
+
+TEST_CASE("layout: a statement beside its figure when that makes the exercise shorter") {
+  const LayoutStyle style;
+  auto with = [](Scene scene, double fraction) {
+    Document doc = sample(1);
+    std::get<Figure>(doc.sections[0].blocks[2]) = Figure{std::move(scene), fraction};
+    return doc;
+  };
+  auto rect_of = [](const LaidOutPage& page, int section, int block) {
+    for (const auto& b : page.blocks)
+      if (b.section == section && b.block == block) return b.rect;
+    FAIL("block not on the page");
+    return PageRect{};
+  };
+
+  SUBCASE("1. a tall figure: the statement and the fields in the column on its right") {
+    const Document doc = with(square_scene(4, 9), 0.45);
+    const auto pages = layout_document(doc);
+    REQUIRE(pages.size() == 1);
+    const PageRect fig = pages[0].figures.at(0).rect;
+    const PageRect statement = rect_of(pages[0], 0, 1);
+    CHECK(statement.x >= fig.right() - kPt);
+    CHECK(statement.y >= fig.y - kPt);
+    for (const PlacedBox& b : pages[0].boxes)
+      if (b.kind != BoxKind::shade) CHECK(b.rect.y >= statement.bottom() - kPt);  // fields under it
+    check_inside(pages[0], style);
+  }
+
+  SUBCASE("2. a wide, low figure: the statement stays above it") {
+    const Document doc = with(square_scene(9, 3), 0.9);
+    const auto pages = layout_document(doc);
+    const PageRect fig = pages[0].figures.at(0).rect;
+    CHECK(rect_of(pages[0], 0, 1).bottom() <= fig.y + kPt);
+  }
+
+  SUBCASE("2b. a statement too long for the column flows around the figure: its first lines across, the rest beside") {
+    Document doc = sample(1);
+    std::get<Paragraph>(doc.sections[0].blocks[1]).text = kText + " " + kText + " " + kText;
+    std::get<Figure>(doc.sections[0].blocks[2]) = Figure{square_scene(5, 7), 0.55};
+    const auto pages = layout_document(doc);
+    REQUIRE(pages.size() == 1);
+    const PageRect fig = pages[0].figures.at(0).rect;
+    int across = 0, beside_figure = 0;
+    for (const auto& b : pages[0].blocks) {
+      if (b.section != 0 || b.block != 1) continue;
+      if (b.rect.x >= fig.right() - kPt) {
+        ++beside_figure;
+        CHECK(b.rect.y >= fig.y - kPt);
+      } else {
+        ++across;
+        CHECK(b.rect.bottom() <= fig.y + kPt);
+      }
+    }
+    CHECK(across == 1);
+    CHECK(beside_figure == 1);
+    // Every word of the statement is printed once.
+    std::string printed;
+    for (const auto& t : pages[0].texts) printed += joined(t) + " ";
+    CHECK(printed.find("décimales. Les points") != std::string::npos);
+    check_inside(pages[0], style);
+  }
+
+  SUBCASE("3. beside its figure when a page holds it; above it when it would leave a page much space") {
+    // The first exercise fills most of a page; the second, a tall figure with its statement
+    // beside it, would not fit in what is left.
+    Document doc = sample(2);
+    doc.sections[0] = exercise(1, true, 6);
+    std::get<Figure>(doc.sections[1].blocks[2]) = Figure{square_scene(4, 9), 0.45};
+    const auto pages = layout_document(doc);
+    REQUIRE(pages.size() == 2);
+    // The second exercise opens on the first page (its heading and statement), its figure on
+    // the next: the first page is not left a third empty.
+    bool heading_on_first = false;
+    for (const auto& b : pages[0].blocks) heading_on_first = heading_on_first || (b.section == 1 && b.block == 0);
+    CHECK(heading_on_first);
+    CHECK(pages[1].figures.size() == 1);
+    for (const auto& page : pages) check_inside(page, style);
   }
 }

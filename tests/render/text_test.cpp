@@ -217,3 +217,21 @@ TEST_CASE("wrap_rich_text: greedy, at spaces, never inside a group") {
     CHECK(joined(lines[0]) == "a b");
   }
 }
+
+TEST_CASE("wrap_rich_source: the lines' markup, which joined gives the text back") {
+  const std::string text =
+      "A ray starts at A(5, 8) with direction \\vec{u} = (4, −2); let û = \\vec{u}/‖\\vec{u}‖, so that t "
+      "is a distance along the ray, t_{proj} = û·\\vec{AC} and d^{2} = ‖\\vec{CP}‖^{2}.";
+  for (double width : {60.0, 120.0, 240.0, 480.0}) {
+    CAPTURE(width);
+    const auto source = wrap_rich_source(text, 10, width);
+    const auto lines = wrap_rich_text(text, 10, width);
+    REQUIRE(source.size() == lines.size());
+    std::string joined;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+      joined += (i > 0 ? " " : "") + source[i];
+      CHECK(text_width(parse_rich_text(source[i]), 10) == doctest::Approx(text_width(lines[i], 10)));
+    }
+    CHECK(joined == text);
+  }
+}

@@ -140,7 +140,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
 
     // ---- the key
     inst.key = begin_key_section(ctx, "projection.title");
-    inst.key.add(render::Paragraph{T.format("projection.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("projection.data", data_vars)});
     const Vec2 AB = p.AB, AC = p.AC;
     inst.key.add(render::Paragraph{T.format(
         "projection.step.vectors", {{"AB", N.point(AB.x, AB.y)}, {"AC", N.point(AC.x, AC.y)}})});
@@ -151,7 +151,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
     inst.key.add(render::Paragraph{
         T.format("projection.step.P", {{"P", shown_point(ctx, p.P, key.exact_x("P"), key.exact_y("P"))}})});
     inst.key.add(render::Paragraph{T.get(fmt::format("projection.step.position.{}", geo::to_string(p.position)))});
-    inst.key.add(render::Figure{key_scene(d, p, ctx), 0.6});
+    inst.key.add(render::Figure{key_scene(d, p, ctx), 0.45});
     add_lines(inst.key, q);
     return inst;
   }

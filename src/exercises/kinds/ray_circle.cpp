@@ -221,7 +221,7 @@ class RayCircleKind final : public MethodKind<RayCircle> {
 
     // ---- the key, step by step as the course does it
     inst.key = begin_key_section(ctx, "ray_circle.title");
-    inst.key.add(render::Paragraph{T.format("ray_circle.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("ray_circle.data", data_vars)});
     auto step = [&](std::string_view key, const TextVars& vars = {}) {
       inst.key.add(render::Paragraph{T.format(fmt::format("ray_circle.step.{}", key), vars)});
     };
@@ -243,7 +243,7 @@ class RayCircleKind final : public MethodKind<RayCircle> {
       step("I", {{"I", point("I")}});
       step("N", {{"N", point("N")}});
     }
-    inst.key.add(render::Figure{key_scene(d, rc, branch, ctx), 0.6});
+    inst.key.add(render::Figure{key_scene(d, rc, branch, ctx), 0.45});
     add_lines(inst.key, q);
     return inst;
   }

@@ -273,7 +273,7 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
     add_fields(inst.sheet, q);
 
     inst.key = begin_key_section(ctx, "ray_cube.title");
-    inst.key.add(render::Paragraph{T.format("ray_cube.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("ray_cube.data", data_vars)});
     auto step = [&](std::string_view id, const TextVars& vars = {}) {
       inst.key.add(render::Paragraph{T.format(fmt::format("ray_cube.step.{}", id), vars)});
     };

@@ -145,7 +145,7 @@ class RayEllipseKind final : public MethodKind<RayEllipse> {
     add_fields(inst.sheet, q);
 
     inst.key = begin_key_section(ctx, "ray_ellipse.title");
-    inst.key.add(render::Paragraph{ctx.texts.format("ray_ellipse.statement", data)});
+    inst.key.add(render::Paragraph{ctx.texts.format("ray_ellipse.data", data)});
     frame_steps(inst.key, ctx, d, Shape::ellipse, key);
     circle_steps(inst.key, ctx, r, key);
     if (s.hit) world_steps(inst.key, ctx, key);

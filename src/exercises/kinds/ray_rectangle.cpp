@@ -211,7 +211,7 @@ class RayRectangleKind final : public MethodKind<RayRectangle> {
     add_fields(inst.sheet, q);
 
     inst.key = begin_key_section(ctx, "ray_rectangle.title");
-    inst.key.add(render::Paragraph{ctx.texts.format("ray_rectangle.statement", data)});
+    inst.key.add(render::Paragraph{ctx.texts.format("ray_rectangle.data", data)});
     frame_steps(inst.key, ctx, d, Shape::rectangle, key);
     square_steps(inst.key, ctx, r, key);
     if (s.hit) world_steps(inst.key, ctx, key);

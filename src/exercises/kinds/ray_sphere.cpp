@@ -215,7 +215,7 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     add_fields(inst.sheet, q);
 
     inst.key = begin_key_section(ctx, "ray_sphere.title");
-    inst.key.add(render::Paragraph{T.format("ray_sphere.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("ray_sphere.data", data_vars)});
     auto step = [&](std::string_view id, const TextVars& vars = {}) {
       inst.key.add(render::Paragraph{T.format(fmt::format("ray_sphere.step.{}", id), vars)});
     };

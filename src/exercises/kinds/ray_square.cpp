@@ -296,7 +296,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
 
     // ---- the key, as the course: candidate sides, then each one in turn
     inst.key = begin_key_section(ctx, "ray_square.title");
-    inst.key.add(render::Paragraph{T.format("ray_square.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("ray_square.data", data_vars)});
     auto step = [&](std::string_view key, const TextVars& vars = {}) {
       inst.key.add(render::Paragraph{T.format(fmt::format("ray_square.step.{}", key), vars)});
     };
@@ -360,7 +360,7 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
     } else {
       step("miss");
     }
-    inst.key.add(render::Figure{key_scene(d, rs, sides, ctx), 0.55});
+    inst.key.add(render::Figure{key_scene(d, rs, sides, ctx), 0.45});
     add_lines(inst.key, q);
     return inst;
   }

@@ -290,7 +290,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
 
     // ---- the key
     inst.key = begin_key_section(ctx, "segments.title");
-    inst.key.add(render::Paragraph{T.format("segments.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("segments.data", data_vars)});
     inst.key.add(render::Paragraph{T.format("segments.step.vectors", {{"AB", N.point(s.AB.x, s.AB.y)},
                                                                        {"CD", N.point(s.CD.x, s.CD.y)},
                                                                        {"AC", N.point(s.AC.x, s.AC.y)}})});
@@ -314,7 +314,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
       inst.key.add(render::Paragraph{T.format(fmt::format("segments.step.{}", geo::to_string(s.relation)),
                                               {{"ac_ab", N.datum(s.ac_cross_ab)}})});
     }
-    inst.key.add(render::Figure{key_scene(d, s, P, e, ctx), 0.6});
+    inst.key.add(render::Figure{key_scene(d, s, P, e, ctx), 0.45});
     add_lines(inst.key, q);
     return inst;
   }

@@ -208,7 +208,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
 
     // ---- the key
     inst.key = begin_key_section(ctx, "vectors.title");
-    inst.key.add(render::Paragraph{T.format("vectors.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("vectors.data", data_vars)});
     const TextVars factors = {{"ux", factor(N, d.u.x)}, {"uy", factor(N, d.u.y)},
                               {"vx", factor(N, d.v.x)}, {"vy", factor(N, d.v.y)}};
     // u·v, u∧v, ‖u‖² and ‖v‖² are exact decimals of the data: written out in full
@@ -231,7 +231,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
     const char* angle_case = std::abs(r.cos) <= kRightAngleCos ? "right" : r.cos > 0 ? "acute" : "obtuse";
     inst.key.add(render::Paragraph{T.get(fmt::format("vectors.step.{}", angle_case))});
     inst.key.add(render::Paragraph{T.get(r.cross > 0 ? "vectors.step.ccw" : "vectors.step.cw")});
-    inst.key.add(render::Figure{key_scene(d, r, ctx), 0.5});
+    inst.key.add(render::Figure{key_scene(d, r, ctx), 0.4});
     add_lines(inst.key, q);
     return inst;
   }

@@ -182,7 +182,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     add_fields(inst.sheet, q);
 
     inst.key = begin_key_section(ctx, "vectors_3d.title");
-    inst.key.add(render::Paragraph{T.format("vectors_3d.statement", data_vars)});
+    inst.key.add(render::Paragraph{T.format("vectors_3d.data", data_vars)});
     const TextVars f = {{"ux", factor(N, d.u.x)}, {"uy", factor(N, d.u.y)}, {"uz", factor(N, d.u.z)},
                         {"vx", factor(N, d.v.x)}, {"vy", factor(N, d.v.y)}, {"vz", factor(N, d.v.z)}};
     auto with = [&](TextVars vars, TextVars more) {
