@@ -46,25 +46,6 @@ void check(cairo_status_t status, const char* what) {
     throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(status)));
 }
 
-// A string in cairo's tag attributes: single-quoted, \ and \' escaped.
-std::string quoted(std::string_view s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\\' || c == '\'') out += '\\';
-    out += c;
-  }
-  return out + "'";
-}
-
-// A link annotation over `rect` (page coordinates), drawn nowhere: cairo's link tag with a rect.
-void add_link(cairo_t* cr, const PageLink& link) {
-  const PageRect& r = link.rect;
-  const std::string attributes = fmt::format("rect=[{:.2f} {:.2f} {:.2f} {:.2f}] uri={}", r.x, r.y, r.width, r.height,
-                                             quoted(link.uri));
-  cairo_tag_begin(cr, CAIRO_TAG_LINK, attributes.c_str());
-  cairo_tag_end(cr, CAIRO_TAG_LINK);
-}
-
 }  // namespace
 
 std::optional<std::int64_t> source_date_epoch() {
@@ -119,26 +100,8 @@ void PdfDocument::begin_page(PageSize size, std::string_view label) {
   ++pages_;
 }
 
-std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const Document& doc,
-                                    std::string_view base) {
-  std::vector<PageLink> links;
-  std::vector<bool> done(doc.sections.size(), false);
-  for (std::size_t i = 0; i < pages.size(); ++i)
-    for (const PlacedBlock& b : pages[i].blocks) {
-      if (b.section < 0 || b.block < 0 || static_cast<std::size_t>(b.section) >= doc.sections.size()) continue;
-      const Section& s = doc.sections[static_cast<std::size_t>(b.section)];
-      const auto block = static_cast<std::size_t>(b.block);
-      if (s.link.empty() || done[static_cast<std::size_t>(b.section)] || block >= s.blocks.size() ||
-          !std::holds_alternative<Heading>(s.blocks[block]))
-        continue;
-      done[static_cast<std::size_t>(b.section)] = true;
-      links.push_back({static_cast<int>(i), b.rect, std::string(base) + s.link});
-    }
-  return links;
-}
-
 void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
-                      const PageStyle& style, std::span<const PageLink> links) {
+                      const PageStyle& style) {
   if (outline && !label.empty()) {
     const std::string link = fmt::format("page={}", pages_ + 1);
     cairo_pdf_surface_add_outline(surface_, CAIRO_PDF_OUTLINE_ROOT, std::string(label).c_str(), link.c_str(),
@@ -147,9 +110,6 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
   for (const LaidOutPage& page : pages) {
     begin_page(page.size, label.empty() ? std::string() : fmt::format("{} {}/{}", label, page.number, page.count));
     paint_page(*canvas_, page, style);
-    const int index = static_cast<int>(&page - pages.data());
-    for (const PageLink& link : links)
-      if (link.page == index) add_link(cr_, link);
     cairo_show_page(cr_);
   }
   check(cairo_status(cr_), "cannot draw a PDF page");
@@ -170,11 +130,11 @@ void PdfDocument::finish() {
 }
 
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
-                         const PdfMetadata& metadata, const PageStyle& style, std::span<const PageLink> links) {
+                         const PdfMetadata& metadata, const PageStyle& style) {
   std::string bytes;
   PdfDocument pdf([&](std::string_view b) { bytes.append(b); }, metadata,
                   pages.empty() ? PageSize::a4() : pages.front().size);
-  pdf.add(pages, label, false, style, links);
+  pdf.add(pages, label, false, style);
   pdf.finish();
   return bytes;
 }

@@ -7,7 +7,6 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,20 +32,6 @@ struct PdfMetadata {
 // seconds, nothing otherwise. Throws std::runtime_error for a value that is not a number.
 std::optional<std::int64_t> source_date_epoch();
 
-// A link annotation: a rectangle of one of a document's pages (index in its laid-out pages) that
-// opens `uri`.
-struct PageLink {
-  int page = 0;
-  PageRect rect;
-  std::string uri;
-};
-
-// The links of a document's sections (Section::link), each on the sections' heading where it is
-// placed (a section split across pages: on its first part), the uri prefixed with `base` ("../"
-// for a PDF one directory below the set's).
-std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const Document& doc,
-                                    std::string_view base = {});
-
 // A PDF being written. It has its own font map, so that two documents can be drawn on two
 // threads (pango's font maps are not thread-safe); one document is used by one thread at a time.
 class PdfDocument {
@@ -60,9 +45,8 @@ class PdfDocument {
 
   // Appends the pages of one document. `label` names them in a viewer's page list ("<label>
   // 1/3") and, when `outline` is set, in the bookmarks, pointing at the first page.
-  // `links`: annotations on these pages (PageLink::page indexes `pages`).
   void add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
-           const PageStyle& style = {}, std::span<const PageLink> links = {});
+           const PageStyle& style = {});
   // An empty page, to make the next document start on an odd page for duplex printing.
   void add_blank(PageSize size, std::string_view label);
   int pages() const { return pages_; }
@@ -83,8 +67,7 @@ class PdfDocument {
 
 // The pages as one PDF in memory (tests and --split).
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
-                         const PdfMetadata& metadata, const PageStyle& style = {},
-                         std::span<const PageLink> links = {});
+                         const PdfMetadata& metadata, const PageStyle& style = {});
 
 // A page (or a scene) as a PNG image at `dpi`, for previews and the backends' pixel comparison.
 std::string page_to_png(const LaidOutPage& page, double dpi, const PageStyle& style = {});
