@@ -140,20 +140,23 @@ TEST_CASE("explore: the 3D views have a handle per datum; a drag moves a point i
   for (const auto& h : v["handles"]) ids.push_back(h["id"]);
   CHECK(ids == std::vector<std::string>{"A", "C", "u", "r"});
   const std::string frame = v["frame"].dump();
-  // Where would A be at (1, −2, 2)? Its handle there, read from the view of that instance, with
-  // the frame held still. Dragged there in the horizontal plane (z = 2 kept): A lands on it.
+  // Where would A be at (1, −2, 2)? Its handle there, in the view of that instance (the frame
+  // held still; the panel's place on the page follows the other panel, so the drag is given the
+  // frame that view returned, as the page does). Dragged there in the horizontal plane (z = 2
+  // kept), A lands on it.
   const json target = view_of(with_field(sphere, "A", {1, -2, 2}).dump(), "en", frame);
   const json at = handle(target, "A");
-  const json floor = json::parse(ex::drag(sphere, "A", at["x"], at["y"], frame, false));
+  const std::string frame2 = target["frame"].dump();
+  const json floor = json::parse(ex::drag(sphere, "A", at["x"], at["y"], frame2, false));
   CHECK(floor["A"] == json::array({1, -2, 2}));
   CHECK(floor["C"] == json::array({0, 0, 1}));
-  // The same page point in height mode: x and y kept, z such that A's image has that height on
-  // the page: the point (−5, 1, z) whose image is level with (1, −2, 2)'s.
-  const json height = json::parse(ex::drag(sphere, "A", at["x"], at["y"], frame, false, true));
-  CHECK(height["A"][0] == -5);
-  CHECK(height["A"][1] == 1);
-  const json level = view_of(height.dump(), "en", frame);
-  CHECK(handle(level, "A")["y"].get<double>() == doctest::Approx(at["y"].get<double>()).epsilon(0.02));
+  // In height mode, to where A would be at (−5, 1, 4): x and y kept, z = 4.
+  const json above = view_of(with_field(sphere, "A", {-5, 1, 4}).dump(), "en", frame);
+  const json at4 = handle(above, "A");
+  const json height = json::parse(ex::drag(sphere, "A", at4["x"], at4["y"], above["frame"].dump(), false, true));
+  CHECK(height["A"] == json::array({-5, 1, 4}));
+  // the same page point in the horizontal plane keeps z
+  CHECK(json::parse(ex::drag(sphere, "A", at4["x"], at4["y"], above["frame"].dump(), false))["A"][2] == 2);
   // straight up on the page: z grows, by the height the pointer moved over cos(elevation)
   const json a = handle(v, "A");
   const json up = json::parse(ex::drag(sphere, "A", a["x"], a["y"].get<double>() - 40, frame, true, true));
@@ -161,7 +164,7 @@ TEST_CASE("explore: the 3D views have a handle per datum; a drag moves a point i
   CHECK(up["A"][1] == 1);
   CHECK(up["A"][2].get<double>() > 2);
   // the tip of u: in its horizontal plane, u.z kept; the direction is never dragged to zero
-  const json tip = json::parse(ex::drag(sphere, "u", at["x"], at["y"], frame, false));
+  const json tip = json::parse(ex::drag(sphere, "u", at["x"], at["y"], frame2, false));
   CHECK(tip["u"] == json::array({6, -3, 0}));  // (1, −2, 2) − A, z kept at A's
   const json on_a = json::parse(ex::drag(R"({"kind":"ray_sphere","A":[-5,1,2],"u":[2,0,0],"C":[0,0,1],"r":3})", "u",
                                          a["x"], a["y"], frame, false));
