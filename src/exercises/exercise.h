@@ -109,7 +109,7 @@ class ExerciseKind {
   virtual ~ExerciseKind() = default;
   virtual std::string_view name() const = 0;
   // The solve contract's kind of its instances: its name, unless the contract says otherwise
-  // (vectors_3d's instances are the contract's `vectors` with three components).
+  // (the preamble in space writes its instances as the contract's `vectors`, with three components).
   virtual std::string_view contract_kind() const { return name(); }
   // The branches the kind can draw, and their default weights: under the defaults a class set
   // of 30 shows every branch (the schedule spreads them across consecutive sheets).

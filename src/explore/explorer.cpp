@@ -36,7 +36,7 @@ constexpr double kSnapStep = 1, kFreeStep = 0.1, kFreeScale = 100;
 constexpr double kSnapAngle = 15;  // degrees
 
 // The kind whose data the instance holds: the one of its contract kind that reads it (the
-// contract's `vectors` is the vectors kind in the plane, vectors_3d in space).
+// contract's `vectors` is one kind in the plane, another in space: the one that reads it).
 const ExerciseKind& kind_of(const json& instance) {
   if (!instance.is_object() || !instance.contains("kind") || !instance["kind"].is_string())
     throw std::runtime_error("field 'kind': missing");

@@ -20,8 +20,9 @@ namespace epure::explore {
 // What `epure solve` prints for that line (exact semantics), without the newline.
 std::string solve(std::string_view line);
 
-// The kinds that have a view (every exercise kind: the contract's, and vectors_3d, the
-// contract's vectors in space), in the course's order, as a JSON array of names.
+// The kinds that have a view (every exercise kind, the preamble in space too, whose instances
+// are the contract's vectors with three components), in the course's order, as a JSON array of
+// names.
 std::string kinds();
 
 // The page's own words in `language` (templates/text/<lang>/explore.toml), as a JSON object
