@@ -84,6 +84,9 @@ struct ExerciseContext {
   int widening = 0;
   // What the sheet calls it: "Exercise 2", or the spec's heading ("Preamble"). Empty: "Exercise n".
   std::string label{};
+  // Whether to build the sheet's section too; false for the explorer's views, which show the key
+  // only (ExerciseInstance::sheet is then left empty).
+  bool sheet = true;
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet
@@ -105,6 +108,9 @@ class ExerciseKind {
  public:
   virtual ~ExerciseKind() = default;
   virtual std::string_view name() const = 0;
+  // The solve contract's kind of its instances: its name, unless the contract says otherwise
+  // (the preamble in space writes its instances as the contract's `vectors`, with three components).
+  virtual std::string_view contract_kind() const { return name(); }
   // The branches the kind can draw, and their default weights: under the defaults a class set
   // of 30 shows every branch (the schedule spreads them across consecutive sheets).
   virtual std::vector<std::pair<std::string, double>> default_branches() const = 0;

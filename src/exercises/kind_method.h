@@ -124,6 +124,7 @@ class MethodKind : public ExerciseKind {
   using Data = typename Kind::Data;
 
   std::string_view name() const override { return Kind::kName; }
+  std::string_view contract_kind() const override { return solve_kind(); }
   std::vector<std::string> fields() const override { return detail::fields_of(Kind::kQuestions); }
   std::vector<SheetField> sheet_fields() const override { return detail::sheet_fields_of(Kind::kQuestions); }
   std::span<const method::QuestionDecl> questions() const override { return Kind::kQuestions; }

@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "exercises/exercise.h"
+#include "exercises/kinds/space_common.h"
 #include "exercises/numbers.h"
 #include "exercises/rng.h"
 #include "exercises/texts.h"
+#include "render/camera.h"
 #include "render/scene_painter.h"
 #include "render/svg_scene.h"
 #include "render/text.h"
@@ -33,13 +35,25 @@ constexpr double kFigureWidth = 520;
 constexpr double kSnapStep = 1, kFreeStep = 0.1, kFreeScale = 100;
 constexpr double kSnapAngle = 15;  // degrees
 
+// The kind whose data the instance holds: the one of its contract kind that reads it (the
+// contract's `vectors` is one kind in the plane, another in space: the one that reads it).
 const ExerciseKind& kind_of(const json& instance) {
   if (!instance.is_object() || !instance.contains("kind") || !instance["kind"].is_string())
     throw std::runtime_error("field 'kind': missing");
   const auto name = instance["kind"].get<std::string>();
-  const ExerciseKind* k = find_kind(name);
-  if (k == nullptr) throw std::runtime_error(fmt::format("field 'kind': no view for '{}'", name));
-  return *k;
+  const ExerciseKind* first = nullptr;
+  for (const ExerciseKind* k : all_kinds()) {
+    if (k->contract_kind() != name) continue;
+    if (first == nullptr) first = k;
+    try {
+      k->read_instance(instance);
+      return *k;
+    } catch (const std::exception&) {
+      // another kind of that contract kind may read it
+    }
+  }
+  if (first == nullptr) throw std::runtime_error(fmt::format("field 'kind': no view for '{}'", name));
+  return *first;  // its key_of names the field at fault
 }
 
 json parse(std::string_view text) {
@@ -52,15 +66,42 @@ json parse(std::string_view text) {
 // A point field (A, B, C, D) is its own handle; a direction (u) is held by its tip, drawn from A
 // (from the origin when the figure has no A: the vectors kind); a radius r by the point C + (r, 0);
 // a pair of sizes with an angle (radii, half) by the ends of the two axes, the first also turning
-// the figure. Fields that are not plane data (3D) have no handle.
+// the figure.
+//
+// Data in space (three components) are held where the key's 3D view (its first panel, drawn by
+// kinds::space::camera()) projects them: A, C, the tip of u (from A, or of u and v from the
+// origin), and r at C's projection + (r, 0), on the sphere's outline (orthographic: the outline is
+// a circle of radius r). A projected point has a line of points in space behind it, so a drag
+// moves it in a plane: by default the horizontal plane through it (z kept, x and y under the
+// pointer), the plane of the floor grid the view draws, so that the point's dashed drop line
+// slides on the grid with its foot under the pointer; in `height` mode (Shift, or the page's
+// toggle) along its vertical (x and y kept, z under the pointer), along that drop line. Either
+// way a move changes the coordinates one reads on the view's grid, never all three at once, as a
+// drag in the plane parallel to the screen would (that plane is tilted in x, y and z).
 
 bool is_pair(const json& j) { return j.is_array() && j.size() == 2 && j[0].is_number() && j[1].is_number(); }
 P2 pair_of(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
+bool is_triple(const json& j) {
+  return j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number();
+}
+render::P3 triple_of(const json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
 
 struct Handle {
   std::string id;
-  P2 at;  // math coordinates
+  P2 at;  // math coordinates (of the 3D view: the camera's projection)
 };
+
+// Whether the instance's data are in space (the view's first panel is the camera's).
+bool in_space(const json& instance) {
+  for (const char* f : {"A", "C", "u", "v"})
+    if (instance.contains(f) && is_triple(instance[f])) return true;
+  return false;
+}
+
+const render::Camera& camera() {
+  static const render::Camera cam = kinds::space::camera();
+  return cam;
+}
 
 double degrees_of(const json& instance) {
   return instance.contains("angle") && instance["angle"].is_number() ? instance["angle"].get<double>() : 0.0;
@@ -76,7 +117,28 @@ P2 anchor_of(const json& instance, std::string_view field) {
   return {0, 0};
 }
 
+render::P3 anchor3_of(const json& instance, std::string_view field) {
+  if (field == "u" && instance.contains("A") && is_triple(instance["A"])) return triple_of(instance["A"]);
+  return {0, 0, 0};
+}
+
+std::vector<Handle> handles3_of(const json& instance) {
+  const render::Camera& cam = camera();
+  std::vector<Handle> out;
+  for (const char* f : {"A", "B", "C", "D"})
+    if (instance.contains(f) && is_triple(instance[f])) out.push_back({f, cam.project(triple_of(instance[f]))});
+  for (const char* f : {"u", "v"})
+    if (instance.contains(f) && is_triple(instance[f]))
+      out.push_back({f, cam.project(anchor3_of(instance, f) + triple_of(instance[f]))});
+  if (instance.contains("C") && is_triple(instance["C"]) && instance.contains("r") && instance["r"].is_number()) {
+    const P2 c = cam.project(triple_of(instance["C"]));
+    out.push_back({"r", {c.x + instance["r"].get<double>(), c.y}});
+  }
+  return out;
+}
+
 std::vector<Handle> handles_of(const json& instance) {
+  if (in_space(instance)) return handles3_of(instance);
   std::vector<Handle> out;
   for (const char* f : {"A", "B", "C", "D"})
     if (instance.contains(f) && is_pair(instance[f])) out.push_back({f, pair_of(instance[f])});
@@ -109,8 +171,59 @@ double quantise(double x, bool snap) {
 
 double rounded_size(double x, bool snap) { return quantise(x, snap); }
 
+// The point of space that projects to m: in the horizontal plane through p, or (height) on the
+// vertical through p. The projection is linear: m = x·X + y·Y + z·Z with X, Y, Z the axes' images.
+render::P3 unprojected(render::P3 p, P2 m, bool height) {
+  const render::Camera& cam = camera();
+  const P2 X = cam.project({1, 0, 0}), Y = cam.project({0, 1, 0}), Z = cam.project({0, 0, 1});
+  if (height) {
+    // the vertical's image is a vertical line (Z.x = 0: the camera keeps z upright)
+    const P2 foot = cam.project({p.x, p.y, 0});
+    return {p.x, p.y, (m.y - foot.y) / Z.y};
+  }
+  // x·X + y·Y = m − z·Z, by Cramer's rule (X ∧ Y = sin(elevation) ≠ 0)
+  const P2 r{m.x - p.z * Z.x, m.y - p.z * Z.y};
+  const double det = X.x * Y.y - Y.x * X.y;
+  return {(r.x * Y.y - Y.x * r.y) / det, (X.x * r.y - r.x * X.y) / det, p.z};
+}
+
+json triple_json(render::P3 p) { return json::array({p.x, p.y, p.z}); }
+
+// The 3D instance with handle `id` moved to figure point m (math coordinates of the 3D view).
+json moved3(json instance, std::string_view id, P2 m, bool snap, bool height) {
+  const auto placed = [&](render::P3 p) {
+    const render::P3 q = unprojected(p, m, height);
+    // only the coordinates the move changes are rounded; the others stay as they were
+    return height ? render::P3{p.x, p.y, quantise(q.z, snap)} : render::P3{quantise(q.x, snap), quantise(q.y, snap), p.z};
+  };
+  const std::string f(id);
+  if (id == "A" || id == "B" || id == "C" || id == "D") {
+    if (!instance.contains(f) || !is_triple(instance[f])) return instance;
+    instance[f] = triple_json(placed(triple_of(instance[f])));
+    return instance;
+  }
+  if (id == "u" || id == "v") {
+    if (!instance.contains(f) || !is_triple(instance[f])) return instance;
+    const render::P3 o = anchor3_of(instance, f), u = triple_of(instance[f]);
+    const render::P3 tip = placed(o + u);
+    const render::P3 w = height ? render::P3{u.x, u.y, quantise(tip.z - o.z, snap)}
+                                : render::P3{quantise(tip.x - o.x, snap), quantise(tip.y - o.y, snap), u.z};
+    if (w.x == 0 && w.y == 0 && w.z == 0) return instance;  // a direction is never zero
+    instance[f] = triple_json(w);
+    return instance;
+  }
+  if (id == "r" && instance.contains("C") && is_triple(instance["C"])) {
+    // the outline is a circle of radius r around C's image
+    const P2 c = camera().project(triple_of(instance["C"]));
+    const double r = rounded_size(std::hypot(m.x - c.x, m.y - c.y), snap);
+    if (r > 0) instance["r"] = r;
+  }
+  return instance;
+}
+
 // The instance with handle `id` at math point m; unchanged when that would zero a datum.
-json moved(json instance, std::string_view id, P2 m, bool snap) {
+json moved(json instance, std::string_view id, P2 m, bool snap, bool height = false) {
+  if (in_space(instance)) return moved3(std::move(instance), id, m, snap, height);
   const P2 q{quantise(m.x, snap), quantise(m.y, snap)};
   const auto set_pair = [&](const char* f, double a, double b) { instance[f] = json::array({a, b}); };
   if (id == "A" || id == "B" || id == "C" || id == "D") {
@@ -161,6 +274,33 @@ json moved(json instance, std::string_view id, P2 m, bool snap) {
   return instance;
 }
 
+// A keyboard step in space: (dx, dy), an arrow's direction on the screen, moves along the floor
+// axis (±x or ±y) whose image points most nearly that way (with the view's camera: → +y, ↑ −x);
+// dz moves along z. A step of `step` on that coordinate, rounded as a drag rounds.
+json nudged3(json instance, std::string_view id, int dx, int dy, int dz, double step, bool snap) {
+  const std::string f(id);
+  if (id == "r") {
+    if (!instance.contains("r") || !instance["r"].is_number()) return instance;
+    const double r = rounded_size(instance["r"].get<double>() + (dx != 0 ? dx : dy != 0 ? dy : dz) * step, snap);
+    if (r > 0) instance["r"] = r;
+    return instance;
+  }
+  if (!instance.contains(f) || !is_triple(instance[f])) return instance;
+  render::P3 p = triple_of(instance[f]);
+  if (dz != 0) {
+    p.z = quantise(p.z + dz * step, snap);
+  } else if (dx != 0 || dy != 0) {
+    const P2 X = camera().project({1, 0, 0}), Y = camera().project({0, 1, 0});
+    const double along_x = (dx * X.x + dy * X.y) / std::hypot(X.x, X.y);
+    const double along_y = (dx * Y.x + dy * Y.y) / std::hypot(Y.x, Y.y);
+    if (std::abs(along_x) >= std::abs(along_y)) p.x = quantise(p.x + (along_x > 0 ? step : -step), snap);
+    else p.y = quantise(p.y + (along_y > 0 ? step : -step), snap);
+  }
+  if ((id == "u" || id == "v") && p.x == 0 && p.y == 0 && p.z == 0) return instance;
+  instance[f] = triple_json(p);
+  return instance;
+}
+
 // ---- the first panel's frame: math <-> figure (SVG user units) -------------------------------
 
 struct FrameData {
@@ -208,6 +348,27 @@ void escape_into(std::string& out, std::string_view s) {
   }
 }
 
+// `s` as a JSON string (UTF-8 kept as it is: the texts and figures are valid UTF-8).
+void append_json_string(std::string& out, std::string_view s) {
+  out += '"';
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c != '"' && c != '\\' && c >= 0x20) continue;
+    out.append(s, run, i - run);
+    run = i + 1;
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default: out += fmt::format("\\u{:04x}", c);
+    }
+  }
+  out.append(s, run, std::string_view::npos);
+  out += '"';
+}
+
 // The label markup (t_{ab}, r^{2}, \vec{AB}) as HTML, through the parser every backend uses.
 std::string rich_html(std::string_view rich) {
   std::string out;
@@ -225,12 +386,12 @@ std::string rich_html(std::string_view rich) {
 
 struct KeyView {
   std::string steps;
-  const render::Scene* figure = nullptr;
+  render::Scene* figure = nullptr;  // in the section
 };
 
-KeyView key_view(const render::Section& key) {
+KeyView key_view(render::Section& key) {
   KeyView v;
-  for (const auto& block : key.blocks) {
+  for (auto& block : key.blocks) {
     if (const auto* h = std::get_if<render::Heading>(&block)) {
       v.steps += fmt::format("<h{0}>{1}</h{0}>\n", h->level + 1, rich_html(h->text));
     } else if (const auto* p = std::get_if<render::Paragraph>(&block)) {
@@ -238,7 +399,7 @@ KeyView key_view(const render::Section& key) {
     } else if (const auto* a = std::get_if<render::AnswerLine>(&block)) {
       v.steps += fmt::format("<p class=\"answer\" data-question=\"{}\"><span class=\"prompt\">{}</span> {}</p>\n",
                              a->question_id, rich_html(a->prompt), rich_html(a->answer));
-    } else if (const auto* f = std::get_if<render::Figure>(&block)) {
+    } else if (auto* f = std::get_if<render::Figure>(&block)) {
       if (v.figure == nullptr) v.figure = &f->scene;
       v.steps += "<div class=\"figure-here\"></div>\n";
     }
@@ -283,9 +444,16 @@ std::string solve(std::string_view line) {
 
 std::string kinds() {
   json names = json::array();
-  for (std::string_view k : solve::kKinds)
-    if (find_kind(k) != nullptr) names.push_back(k);
+  for (const ExerciseKind* k : all_kinds()) names.push_back(k->name());
   return names.dump();
+}
+
+std::string words(std::string_view language) {
+  constexpr std::string_view prefix = "explore.";
+  json out = json::object();
+  for (const auto& [key, text] : Texts::builtin(language).all())
+    if (key.starts_with(prefix)) out[key.substr(prefix.size())] = text;
+  return out.dump();
 }
 
 std::string starting_instance(std::string_view kind_name) {
@@ -304,52 +472,63 @@ std::string starting_instance(std::string_view kind_name) {
 }
 
 std::string view(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
-  json out = json::object();
   try {
     const json instance = parse(instance_text);
     const ExerciseKind& kind = kind_of(instance);
-    out["kind"] = kind.name();
-    out["instance"] = instance.dump();
     const ExerciseSpec spec = exercise_spec(kind.name());
     const Texts& texts = Texts::builtin(language);
-    const ExerciseContext ctx{n, spec, texts, NumberStyle::for_language(language), 2, ""};
-    const ExerciseInstance key = kind.key_of(instance, ctx);
-    out["instance"] = key.instance;
-    out["solution"] = json::parse(key.solution);
+    ExerciseContext ctx{n, spec, texts, NumberStyle::for_language(language), 2, ""};
+    ctx.sheet = false;  // the view shows the key only
+    ExerciseInstance key = kind.key_of(instance, ctx);
     KeyView kv = key_view(key.key);
     if (kv.figure == nullptr || kv.figure->panels.empty()) throw std::logic_error("explore: the key has no figure");
-    render::Scene scene = *kv.figure;
+    render::Scene& scene = *kv.figure;
     if (auto f = frame_from(frozen)) scene.panels[0].view = f->view;
     const auto layout = render::layout_scene(scene, 0, 0, kFigureWidth);
     const FrameData frame{scene.panels[0].view, layout.panels[0]};
-    const auto handles = handles_of(json::parse(key.instance));
-    out["svg"] = with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame);
-    out["steps"] = kv.steps;
-    out["frame"] = frame_json(frame);
+    const auto handles = handles_of(instance);
     json hs = json::array();
     const render::Frame map(frame.view, frame.rect);
     for (const auto& h : handles) {
       const P2 p = map.to_page(h.at);
       hs.push_back({{"id", h.id}, {"x", p.x}, {"y", p.y}});
     }
-    out["handles"] = hs;
+    // Written by hand around the two long texts (the figure, the steps), which go through a
+    // plain escaper: nlohmann's validating one was a quarter of the view's time.
+    std::string out = "{\"kind\":";
+    append_json_string(out, kind.name());
+    out += ",\"instance\":";
+    append_json_string(out, key.instance);
+    out += ",\"solution\":";
+    out += key.solution;  // JSON already: the solve output
+    out += ",\"frame\":";
+    out += frame_json(frame).dump();
+    out += ",\"handles\":";
+    out += hs.dump();
+    out += in_space(instance) ? ",\"space\":true" : ",\"space\":false";
+    out += ",\"svg\":";
+    append_json_string(out, with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame));
+    out += ",\"steps\":";
+    append_json_string(out, kv.steps);
+    out += '}';
+    return out;
   } catch (const std::exception& e) {
-    out["error"] = e.what();
+    return json{{"error", e.what()}}.dump();
   }
-  return out.dump();
 }
 
 std::string drag(std::string_view instance_text, std::string_view handle, double x, double y,
-                 std::string_view frame_text, bool snap) {
+                 std::string_view frame_text, bool snap, bool height) {
   const json instance = parse(instance_text);
   const auto frame = frame_from(frame_text);
   if (!frame || !std::isfinite(x) || !std::isfinite(y)) return std::string(instance_text);
-  return moved(instance, handle, to_math(*frame, {x, y}), snap).dump();
+  return moved(instance, handle, to_math(*frame, {x, y}), snap, height).dump();
 }
 
-std::string nudge(std::string_view instance_text, std::string_view handle, int dx, int dy, bool snap) {
+std::string nudge(std::string_view instance_text, std::string_view handle, int dx, int dy, int dz, bool snap) {
   const json instance = parse(instance_text);
   const double step = snap ? kSnapStep : kFreeStep;
+  if (in_space(instance)) return nudged3(instance, handle, dx, dy, dz, step, snap).dump();
   for (const auto& h : handles_of(instance))
     if (h.id == handle) return moved(instance, handle, {h.at.x + dx * step, h.at.y + dy * step}, snap).dump();
   return std::string(instance_text);

@@ -20,8 +20,14 @@ namespace epure::explore {
 // What `epure solve` prints for that line (exact semantics), without the newline.
 std::string solve(std::string_view line);
 
-// The kinds that have a view, in the contract's order, as a JSON array of names.
+// The kinds that have a view (every exercise kind, the preamble in space too, whose instances
+// are the contract's vectors with three components), in the course's order, as a JSON array of
+// names.
 std::string kinds();
+
+// The page's own words in `language` (templates/text/<lang>/explore.toml), as a JSON object
+// {"title": …, "snap": …, …}. Throws std::invalid_argument for a language without texts.
+std::string words(std::string_view language);
 
 // A well-posed instance of `kind` to start from (its generator's first draw at seed 1), as a
 // solve input. Throws std::runtime_error for a kind without a view.
@@ -31,8 +37,9 @@ std::string starting_instance(std::string_view kind);
 // sheet (1 outside one), as a JSON object:
 //   {"kind", "instance" (canonical text), "solution" (the key's solve output), "svg" (the figure with its handles),
 //    "steps" (HTML of the worked solution), "frame" (the map of the figure's first panel, to be
-//    handed back to drag), "handles": [{"id", "x", "y"}], "error" (only when the data cannot be
-//    solved: then no svg nor steps)}.
+//    handed back to drag), "handles": [{"id", "x", "y"}], "space" (true when the data are in
+//    space: the first panel is the 3D view, and a drag has two modes, see drag), "error" (only
+//    when the data cannot be solved: then no svg nor steps)}.
 // With `frozen` (a frame this function returned), the first panel keeps that view, so that
 // the figure stays still under a dragging pointer; the kind's own framing comes back on release.
 std::string view(std::string_view instance, std::string_view language, int n = 1,
@@ -42,11 +49,17 @@ std::string view(std::string_view instance, std::string_view language, int n = 1
 // view's figure, `frame` as view returned it). With `snap`, points land on the integer grid,
 // sizes on whole numbers and angles on multiples of 15°; otherwise on hundredths. A move that
 // would leave a direction or a size zero is refused (the instance comes back unchanged).
+// Data in space (a 3D view): a point moves in the horizontal plane through it (z kept: its drop
+// line's foot follows the pointer on the floor grid), or with `height` along its vertical (x and
+// y kept, z under the pointer); r is the distance from C's image to the pointer (the outline).
 std::string drag(std::string_view instance, std::string_view handle, double x, double y,
-                 std::string_view frame, bool snap);
+                 std::string_view frame, bool snap, bool height = false);
 
-// The instance with handle `handle` moved by (dx, dy) grid steps (the arrow keys): one unit
-// with `snap`, a tenth without, in the figure's math coordinates.
-std::string nudge(std::string_view instance, std::string_view handle, int dx, int dy, bool snap);
+// The instance with handle `handle` moved by grid steps (the arrow keys): one unit with `snap`, a
+// tenth without. In the plane, by (dx, dy) in the figure's math coordinates (dz ignored). In
+// space, (dx, dy) is an arrow's direction on the screen and moves one step along the floor axis
+// whose image points most nearly that way (→ +y, ← −y, ↑ −x, ↓ +x with the views' camera), dz
+// one step along z (PageUp/PageDown); r grows with → and ↑.
+std::string nudge(std::string_view instance, std::string_view handle, int dx, int dy, int dz, bool snap);
 
 }  // namespace epure::explore

@@ -24,24 +24,24 @@ json handle(const json& v, const std::string& id) {
 }
 }  // namespace
 
-TEST_CASE("explore: every 2D kind has a view with its handles, steps and the key's figure") {
+TEST_CASE("explore: every kind has a view with its handles, steps and the key's figure") {
   const json kinds = json::parse(ex::kinds());
-  CHECK(kinds.size() >= 7);
+  CHECK(kinds.size() >= 10);
   for (const auto& k : kinds) {
     const std::string kind = k.get<std::string>();
     CAPTURE(kind);
-    const json v = view_of(ex::starting_instance(kind));
+    const std::string start = ex::starting_instance(kind);
+    const json v = view_of(start);
     REQUIRE_FALSE(v.contains("error"));
     CHECK(v["kind"] == kind);
-    // The 3D views have no drag handles yet (a drag on a projected view needs a plane to move in).
-    if (kind == "ray_sphere" || kind == "ray_cube") CHECK(v["handles"].empty());
-    else CHECK(v["handles"].size() >= 2);
+    CHECK(v["handles"].size() >= 2);
     const std::string svg = v["svg"];
     for (const auto& h : v["handles"]) CHECK(svg.find("data-handle=\"" + h["id"].get<std::string>() + "\"") != std::string::npos);
     CHECK(svg.find("<svg") != std::string::npos);
     CHECK(std::string(v["steps"]).size() > 100);
-    // the key's solution is the one `epure solve` gives the same data (worksheet semantics)
-    CHECK(v["solution"]["kind"] == kind);
+    // the key's solution is the one `epure solve` gives the same data (worksheet semantics), of
+    // the instance's contract kind (vectors_3d's is the contract's vectors)
+    CHECK(v["solution"]["kind"] == json::parse(start)["kind"]);
   }
 }
 
@@ -71,7 +71,7 @@ TEST_CASE("explore: a drag puts the point under the pointer, on hundredths or on
 TEST_CASE("explore: a frozen frame keeps the figure still; the branch follows the data") {
   const std::string start = R"({"kind":"projection","A":[0,0],"B":[4,0],"C":[2,3]})";
   const json v = view_of(start);
-  const json far = json::parse(ex::nudge(start, "C", 3, 0, true));  // C to (5, 3): P after B
+  const json far = json::parse(ex::nudge(start, "C", 3, 0, 0, true));  // C to (5, 3): P after B
   CHECK(far["C"] == json::array({5, 3}));
   const json w = view_of(far.dump(), "en", v["frame"].dump());
   CHECK(w["frame"] == v["frame"]);
@@ -87,10 +87,10 @@ TEST_CASE("explore: directions and sizes are never dragged to zero; sizes and an
   // the tip of u dragged onto A: refused
   CHECK(json::parse(ex::drag(circle, "u", a["x"], a["y"], v["frame"].dump(), true)) == json::parse(circle));
   // r grows by one grid step
-  CHECK(json::parse(ex::nudge(circle, "r", 1, 0, true))["r"] == 4);
+  CHECK(json::parse(ex::nudge(circle, "r", 1, 0, 0, true))["r"] == 4);
   const std::string ellipse = R"({"kind":"ray_ellipse","A":[-6,1],"u":[1,0],"C":[0,0],"radii":[3,2],"angle":0})";
   // the first axis's end moved to (0, 3): a = 3, angle 90
-  const json e = json::parse(ex::nudge(ellipse, "radii.0", -3, 3, true));
+  const json e = json::parse(ex::nudge(ellipse, "radii.0", -3, 3, 0, true));
   CHECK(e["radii"] == json::array({3, 2}));
   CHECK(e["angle"] == 90);
 }
@@ -109,4 +109,99 @@ TEST_CASE("explore: solve is epure solve's line, exact semantics") {
   fmt::memory_buffer out;
   epure::solve::solve_line(line, out, epure::solve::Semantics::exact);
   CHECK(ex::solve(line) == std::string(out.data(), out.size()));
+}
+
+namespace {
+// The instance with one field replaced.
+json with_field(std::string instance, const char* field, const json& value) {
+  json j = json::parse(instance);
+  j[field] = value;
+  return j;
+}
+}  // namespace
+
+TEST_CASE("explore: the 3D views have a handle per datum; a drag moves a point in its horizontal plane, or in height") {
+  for (const char* kind : {"vectors_3d", "ray_sphere", "ray_cube"}) {
+    CAPTURE(kind);
+    const json v = view_of(ex::starting_instance(kind));
+    REQUIRE_FALSE(v.contains("error"));
+    CHECK(v["kind"] == kind);
+    CHECK(v["space"] == true);
+    CHECK(v["handles"].size() >= 2);
+  }
+  CHECK(view_of(ex::starting_instance("projection"))["space"] == false);
+  // the contract's vectors with three components are vectors_3d's view
+  CHECK(view_of(R"({"kind":"vectors","u":[1,2,3],"v":[-2,0,1]})")["kind"] == "vectors_3d");
+  CHECK(view_of(R"({"kind":"vectors","u":[1,2],"v":[-2,0]})")["kind"] == "vectors");
+
+  const std::string sphere = R"({"kind":"ray_sphere","A":[-5,1,2],"u":[2,0,0],"C":[0,0,1],"r":3})";
+  const json v = view_of(sphere);
+  std::vector<std::string> ids;
+  for (const auto& h : v["handles"]) ids.push_back(h["id"]);
+  CHECK(ids == std::vector<std::string>{"A", "C", "u", "r"});
+  const std::string frame = v["frame"].dump();
+  // Where would A be at (1, −2, 2)? Its handle there, in the view of that instance (the frame
+  // held still; the panel's place on the page follows the other panel, so the drag is given the
+  // frame that view returned, as the page does). Dragged there in the horizontal plane (z = 2
+  // kept), A lands on it.
+  const json target = view_of(with_field(sphere, "A", {1, -2, 2}).dump(), "en", frame);
+  const json at = handle(target, "A");
+  const std::string frame2 = target["frame"].dump();
+  const json floor = json::parse(ex::drag(sphere, "A", at["x"], at["y"], frame2, false));
+  CHECK(floor["A"] == json::array({1, -2, 2}));
+  CHECK(floor["C"] == json::array({0, 0, 1}));
+  // In height mode, to where A would be at (−5, 1, 4): x and y kept, z = 4.
+  const json above = view_of(with_field(sphere, "A", {-5, 1, 4}).dump(), "en", frame);
+  const json at4 = handle(above, "A");
+  const json height = json::parse(ex::drag(sphere, "A", at4["x"], at4["y"], above["frame"].dump(), false, true));
+  CHECK(height["A"] == json::array({-5, 1, 4}));
+  // the same page point in the horizontal plane keeps z
+  CHECK(json::parse(ex::drag(sphere, "A", at4["x"], at4["y"], above["frame"].dump(), false))["A"][2] == 2);
+  // straight up on the page: z grows, by the height the pointer moved over cos(elevation)
+  const json a = handle(v, "A");
+  const json up = json::parse(ex::drag(sphere, "A", a["x"], a["y"].get<double>() - 40, frame, true, true));
+  CHECK(up["A"][0] == -5);
+  CHECK(up["A"][1] == 1);
+  CHECK(up["A"][2].get<double>() > 2);
+  // the tip of u: in its horizontal plane, u.z kept; the direction is never dragged to zero
+  const json tip = json::parse(ex::drag(sphere, "u", at["x"], at["y"], frame2, false));
+  CHECK(tip["u"] == json::array({6, -3, 0}));  // (1, −2, 2) − A, z kept at A's
+  const json on_a = json::parse(ex::drag(R"({"kind":"ray_sphere","A":[-5,1,2],"u":[2,0,0],"C":[0,0,1],"r":3})", "u",
+                                         a["x"], a["y"], frame, false));
+  CHECK(on_a["u"] == json::array({2, 0, 0}));
+  // r: the distance from C's image to the pointer (the outline is a circle of radius r)
+  const json r = handle(v, "r"), c = handle(v, "C");
+  const double scale = (r["x"].get<double>() - c["x"].get<double>()) / 3;
+  const json grown = json::parse(ex::drag(sphere, "r", c["x"].get<double>() + 4.5 * scale, c["y"], frame, false));
+  CHECK(grown["r"] == 4.5);
+}
+
+TEST_CASE("explore: keyboard in space: arrows along the floor axes as the screen shows them, PageUp/PageDown along z") {
+  const std::string cube = R"({"kind":"ray_cube","A":[3,-2,1.5],"u":[-1,0.5,0]})";
+  // with the views' camera (azimuth 30°): y goes right, x comes down towards the viewer
+  CHECK(json::parse(ex::nudge(cube, "A", 1, 0, 0, false))["A"] == json::array({3, -1.9, 1.5}));
+  CHECK(json::parse(ex::nudge(cube, "A", -1, 0, 0, false))["A"] == json::array({3, -2.1, 1.5}));
+  CHECK(json::parse(ex::nudge(cube, "A", 0, 1, 0, false))["A"] == json::array({2.9, -2, 1.5}));
+  CHECK(json::parse(ex::nudge(cube, "A", 0, -1, 0, true))["A"] == json::array({4, -2, 1.5}));
+  CHECK(json::parse(ex::nudge(cube, "A", 0, 0, 1, false))["A"] == json::array({3, -2, 1.6}));
+  CHECK(json::parse(ex::nudge(cube, "u", 0, 0, -1, true))["u"] == json::array({-1, 0.5, -1}));
+  // never a zero direction
+  CHECK(json::parse(ex::nudge(R"({"kind":"ray_cube","A":[3,0,0],"u":[0,0,0.1]})", "u", 0, 0, -1, false))["u"] ==
+        json::array({0, 0, 0.1}));
+  // r grows with → and shrinks with ←, never to zero
+  const std::string sphere = R"({"kind":"ray_sphere","A":[-5,1,2],"u":[2,0,0],"C":[0,0,1],"r":0.1})";
+  CHECK(json::parse(ex::nudge(sphere, "r", 1, 0, 0, false))["r"] == 0.2);
+  CHECK(json::parse(ex::nudge(sphere, "r", -1, 0, 0, false))["r"] == 0.1);
+}
+
+TEST_CASE("explore: the page's words come from the templates, in both languages") {
+  const json en = json::parse(ex::words("en")), fr = json::parse(ex::words("fr"));
+  CHECK(en["snap"] == "snap to grid");
+  CHECK(fr["snap"] == "grille magnétique");
+  CHECK(en.size() == fr.size());
+  for (const auto& [key, text] : en.items()) {
+    CAPTURE(key);
+    CHECK(fr.contains(key));
+  }
+  CHECK(std::string(en["hint_space"]).find("Shift") != std::string::npos);
 }

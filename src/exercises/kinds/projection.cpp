@@ -133,10 +133,12 @@ class Projection final : public MethodKind<ProjectionMethod> {
                                 {"B", N.point(d.B.x, d.B.y)},
                                 {"C", N.point(d.C.x, d.C.y)}};
     // ---- the sheet
-    inst.sheet = begin_sheet_section(ctx, "projection.title");
-    inst.sheet.add(render::Paragraph{T.format("projection.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "projection.title");
+      inst.sheet.add(render::Paragraph{T.format("projection.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
+      add_fields(inst.sheet, q);
+    }
 
     // ---- the key
     inst.key = begin_key_section(ctx, "projection.title");

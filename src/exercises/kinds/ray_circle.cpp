@@ -214,10 +214,12 @@ class RayCircleKind final : public MethodKind<RayCircle> {
                                 {"C", N.point(d.C.x, d.C.y)},
                                 {"r", N.datum(d.r)}};
     // ---- the sheet
-    inst.sheet = begin_sheet_section(ctx, "ray_circle.title");
-    inst.sheet.add(render::Paragraph{T.format("ray_circle.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, rc, ctx), 0.55});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_circle.title");
+      inst.sheet.add(render::Paragraph{T.format("ray_circle.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, rc, ctx), 0.55});
+      add_fields(inst.sheet, q);
+    }
 
     // ---- the key, step by step as the course does it
     inst.key = begin_key_section(ctx, "ray_circle.title");

@@ -267,10 +267,12 @@ class RayCubeKind final : public MethodKind<RayCubeMethod> {
     auto point = [&](const Names3& ids) { return space::step_point3(ctx, key, ids); };
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y, d.A.z)}, {"u", N.point(d.u.x, d.u.y, d.u.z)}};
-    inst.sheet = begin_sheet_section(ctx, "ray_cube.title");
-    inst.sheet.add(render::Paragraph{T.format("ray_cube.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.5});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_cube.title");
+      inst.sheet.add(render::Paragraph{T.format("ray_cube.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.5});
+      add_fields(inst.sheet, q);
+    }
 
     inst.key = begin_key_section(ctx, "ray_cube.title");
     inst.key.add(render::Paragraph{T.format("ray_cube.data", data_vars)});

@@ -139,10 +139,12 @@ class RayEllipseKind final : public MethodKind<RayEllipse> {
     inst.questions = key.questions.take_questions();
 
     const TextVars data = data_vars(ctx, d, Shape::ellipse);
-    inst.sheet = begin_sheet_section(ctx, "ray_ellipse.title");
-    inst.sheet.add(render::Paragraph{ctx.texts.format("ray_ellipse.statement", data)});
-    inst.sheet.add(render::Figure{question_scene(ctx, d, Shape::ellipse, s), 0.55});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_ellipse.title");
+      inst.sheet.add(render::Paragraph{ctx.texts.format("ray_ellipse.statement", data)});
+      inst.sheet.add(render::Figure{question_scene(ctx, d, Shape::ellipse, s), 0.55});
+      add_fields(inst.sheet, q);
+    }
 
     inst.key = begin_key_section(ctx, "ray_ellipse.title");
     inst.key.add(render::Paragraph{ctx.texts.format("ray_ellipse.data", data)});

@@ -205,10 +205,12 @@ class RayRectangleKind final : public MethodKind<RayRectangle> {
     inst.questions = key.questions.take_questions();
 
     const TextVars data = data_vars(ctx, d, Shape::rectangle);
-    inst.sheet = begin_sheet_section(ctx, "ray_rectangle.title");
-    inst.sheet.add(render::Paragraph{ctx.texts.format("ray_rectangle.statement", data)});
-    inst.sheet.add(render::Figure{question_scene(ctx, d, Shape::rectangle, s), 0.55});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_rectangle.title");
+      inst.sheet.add(render::Paragraph{ctx.texts.format("ray_rectangle.statement", data)});
+      inst.sheet.add(render::Figure{question_scene(ctx, d, Shape::rectangle, s), 0.55});
+      add_fields(inst.sheet, q);
+    }
 
     inst.key = begin_key_section(ctx, "ray_rectangle.title");
     inst.key.add(render::Paragraph{ctx.texts.format("ray_rectangle.data", data)});

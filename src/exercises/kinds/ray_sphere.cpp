@@ -209,10 +209,12 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
                                 {"u", N.point(d.u.x, d.u.y, d.u.z)},
                                 {"C", N.point(d.C.x, d.C.y, d.C.z)},
                                 {"r", N.datum(d.r)}};
-    inst.sheet = begin_sheet_section(ctx, "ray_sphere.title");
-    inst.sheet.add(render::Paragraph{T.format("ray_sphere.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, rs, ctx), 0.5});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_sphere.title");
+      inst.sheet.add(render::Paragraph{T.format("ray_sphere.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, rs, ctx), 0.5});
+      add_fields(inst.sheet, q);
+    }
 
     inst.key = begin_key_section(ctx, "ray_sphere.title");
     inst.key.add(render::Paragraph{T.format("ray_sphere.data", data_vars)});

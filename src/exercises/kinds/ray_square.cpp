@@ -289,10 +289,12 @@ class RaySquareKind final : public MethodKind<RaySquareMethod> {
 
     const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)}, {"u", N.point(d.u.x, d.u.y)}};
     // ---- the sheet
-    inst.sheet = begin_sheet_section(ctx, "ray_square.title");
-    inst.sheet.add(render::Paragraph{T.format("ray_square.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.5});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "ray_square.title");
+      inst.sheet.add(render::Paragraph{T.format("ray_square.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.5});
+      add_fields(inst.sheet, q);
+    }
 
     // ---- the key, as the course: candidate sides, then each one in turn
     inst.key = begin_key_section(ctx, "ray_square.title");

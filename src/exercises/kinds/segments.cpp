@@ -283,10 +283,12 @@ class Segments final : public MethodKind<SegmentsMethod> {
                                 {"C", N.point(d.C.x, d.C.y)},
                                 {"D", N.point(d.D.x, d.D.y)}};
     // ---- the sheet
-    inst.sheet = begin_sheet_section(ctx, "segments.title");
-    inst.sheet.add(render::Paragraph{T.format("segments.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "segments.title");
+      inst.sheet.add(render::Paragraph{T.format("segments.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
+      add_fields(inst.sheet, q);
+    }
 
     // ---- the key
     inst.key = begin_key_section(ctx, "segments.title");

@@ -201,10 +201,12 @@ class Vectors final : public MethodKind<VectorsMethod> {
 
     const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y)}, {"v", N.point(d.v.x, d.v.y)}};
     // ---- the sheet
-    inst.sheet = begin_sheet_section(ctx, "vectors.title");
-    inst.sheet.add(render::Paragraph{T.format("vectors.statement", data_vars)});
-    inst.sheet.add(render::Figure{question_scene(d, ctx), 0.45});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "vectors.title");
+      inst.sheet.add(render::Paragraph{T.format("vectors.statement", data_vars)});
+      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.45});
+      add_fields(inst.sheet, q);
+    }
 
     // ---- the key
     inst.key = begin_key_section(ctx, "vectors.title");

@@ -176,10 +176,12 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     inst.questions = key.questions.take_questions();
 
     const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y, d.u.z)}, {"v", N.point(d.v.x, d.v.y, d.v.z)}};
-    inst.sheet = begin_sheet_section(ctx, "vectors_3d.title");
-    inst.sheet.add(render::Paragraph{T.format("vectors_3d.statement", data_vars)});
-    inst.sheet.add(render::Figure{scene(d, r, ctx, false), 0.45});
-    add_fields(inst.sheet, q);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, "vectors_3d.title");
+      inst.sheet.add(render::Paragraph{T.format("vectors_3d.statement", data_vars)});
+      inst.sheet.add(render::Figure{scene(d, r, ctx, false), 0.45});
+      add_fields(inst.sheet, q);
+    }
 
     inst.key = begin_key_section(ctx, "vectors_3d.title");
     inst.key.add(render::Paragraph{T.format("vectors_3d.data", data_vars)});
