@@ -188,36 +188,53 @@ class VariantBuilder {
     p.asked = false;
     p.points = 0;
     using Kind = render::AnswerField::Kind;
+    const std::string field_name = id.substr(id.find('.') + 1);
     switch (field.kind) {
       case Kind::number:
       case Kind::point:
       case Kind::point3: p.type = Part::Type::number; break;
       case Kind::boolean:
         p.type = Part::Type::choice;
-        p.options = {{"yes", html_of(feedback_.texts().get("common.yes")), false},
-                     {"no", html_of(feedback_.texts().get("common.no")), false}};
+        p.options = yes_no();
         break;
       case Kind::choice:
-      case Kind::faces: {
-        const std::string field_name = id.substr(id.find('.') + 1);
-        const auto* d = decl_of(kind, field_name);
-        if (field.kind == Kind::choice) {
-          p.type = Part::Type::choice;
-          if (d)
-            for (auto w : d->choices) p.options.push_back({std::string(w), wording(w), false});
-        } else {
-          p.type = Part::Type::faces;
-          if (d)
-            for (auto w : d->choices) p.options.push_back({std::string(w), xml_escape(kinds::face_label(w)), false});
-          p.options.push_back({"none", html_of(feedback_.texts().get("common.none")), false});
-        }
+        p.type = Part::Type::choice;
+        p.options = choice_options(kind, field_name);
         if (p.options.empty())
           throw ExportError(fmt::format("question {}: a field of kind {} without its choices", id,
                                         kind ? kind->name() : std::string_view("?")));
         break;
-      }
+      case Kind::faces:
+        p.type = Part::Type::faces;
+        p.options = side_options(kind, field_name);
+        break;
     }
     return p;
+  }
+
+  // A list's options as the sheet prints them, none marked right yet.
+  std::vector<Option> yes_no() const {
+    return {{"yes", html_of(feedback_.texts().get("common.yes")), false},
+            {"no", html_of(feedback_.texts().get("common.no")), false}};
+  }
+  std::vector<Option> choice_options(const ExerciseKind* kind, std::string_view field) const {
+    std::vector<Option> out;
+    if (const auto* d = decl_of(kind, field))
+      for (auto w : d->choices) out.push_back({std::string(w), wording(w), false});
+    return out;
+  }
+  // The kind's sides or faces (the square's when the kind is unknown), then "none": the candidates
+  // may be none (a ray from inside), offered on every variant so that the list does not tell the case.
+  std::vector<Option> side_options(const ExerciseKind* kind, std::string_view field) const {
+    std::vector<std::string> names;
+    if (const auto* d = decl_of(kind, field))
+      for (auto w : d->choices) names.emplace_back(w);
+    else
+      for (const char* f : {"+x", "+y", "-x", "-y"}) names.emplace_back(f);
+    std::vector<Option> out;
+    for (const auto& f : names) out.push_back({f, xml_escape(kinds::face_label(f)), false});
+    out.push_back({"none", html_of(feedback_.texts().get("common.none")), false});
+    return out;
   }
 
   std::string wording(std::string_view word) const {
@@ -255,18 +272,17 @@ class VariantBuilder {
       case AnswerType::boolean: {
         // a yes/no answer is wrong, not diagnosed (as on paper)
         p.type = Part::Type::choice;
-        p.options = {{"yes", html_of(feedback_.texts().get("common.yes")), q.boolean},
-                     {"no", html_of(feedback_.texts().get("common.no")), !q.boolean}};
+        p.options = yes_no();
+        p.options[0].right = q.boolean;
+        p.options[1].right = !q.boolean;
         break;
       }
       case AnswerType::word: {
         p.type = Part::Type::choice;
-        const auto* d = decl_of(kind, q.field);
-        std::vector<std::string_view> words;
-        if (d)
-          for (auto w : d->choices) words.push_back(w);
-        if (std::find(words.begin(), words.end(), std::string_view(q.word)) == words.end()) words.push_back(q.word);
-        for (auto w : words) p.options.push_back({std::string(w), wording(w), w == q.word});
+        p.options = choice_options(kind, q.field);
+        if (std::none_of(p.options.begin(), p.options.end(), [&](const Option& o) { return o.id == q.word; }))
+          p.options.push_back({q.word, wording(q.word), false});
+        for (auto& o : p.options) o.right = o.id == q.word;
         for (const auto& [code, run] : runs.mistakes) {
           const auto* a = find_answer(run, q.field);
           const auto* b = find_answer(runs.key, q.field);
@@ -280,16 +296,8 @@ class VariantBuilder {
       }
       case AnswerType::faces: {
         p.type = Part::Type::faces;
-        const auto* d = decl_of(kind, q.field);
-        std::vector<std::string> names;
-        if (d)
-          for (auto w : d->choices) names.emplace_back(w);
-        else
-          for (const char* f : {"+x", "+y", "-x", "-y"}) names.emplace_back(f);
-        for (const auto& f : names) p.options.push_back({f, xml_escape(kinds::face_label(f)), (q.faces & grading::face_bit(f)) != 0});
-        // the candidates may be none (a ray from inside): offered on every variant, so that the
-        // question does not tell which case it is
-        p.options.push_back({"none", html_of(feedback_.texts().get("common.none")), q.faces == 0});
+        p.options = side_options(kind, q.field);
+        for (auto& o : p.options) o.right = o.id == "none" ? q.faces == 0 : (q.faces & grading::face_bit(o.id)) != 0;
         for (const auto& [code, run] : runs.mistakes) {
           const auto* a = find_answer(run, q.field);
           const auto* b = find_answer(runs.key, q.field);
