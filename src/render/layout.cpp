@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string_view>
@@ -12,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "render/scene_painter.h"
+#include "support/portable.h"
 
 namespace epure::render {
 namespace {
@@ -68,14 +71,45 @@ struct Fragment {
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
   std::vector<PlacedQr> codes;
+  // A layout option only measured (its height, whether it fits a column) keeps no text: the
+  // options tried for a figure and its neighbours would otherwise copy every run of every line
+  // again for each one. What the fit test needs of the texts is kept as two extents.
+  bool keep_texts = true;
+  bool track_extents = false;       // set for the atoms of a column beside a figure
+  double text_right_edge = -1e300;  // the right end of the furthest text that is not muted
+  double muted_left = 1e300;        // the left end of the first muted text (a question id)
+  double box_right_edge = -1e300;   // the right end of the furthest box
 
-  void text(std::vector<TextRun> runs, double x, double baseline, double size, Ink ink = Ink::text) {
-    texts.push_back({{x, baseline}, size, std::move(runs), ink});
+  void box(PlacedBox b) {
+    box_right_edge = std::max(box_right_edge, b.rect.right());
+    if (keep_texts) boxes.push_back(std::move(b));
+  }
+
+  void text(const std::vector<TextRun>& runs, double x, double baseline, double size, Ink ink = Ink::text) {
+    note_extent(runs, x, size, ink);
+    if (keep_texts) texts.push_back({{x, baseline}, size, runs, ink});
+  }
+  void text(std::vector<TextRun>&& runs, double x, double baseline, double size, Ink ink = Ink::text) {
+    note_extent(runs, x, size, ink);
+    if (keep_texts) texts.push_back({{x, baseline}, size, std::move(runs), ink});
   }
   // Right-aligned on `right`.
   void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
     const double width = text_width(runs, size);
-    texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
+    if (ink == Ink::muted) {
+      muted_left = std::min(muted_left, right - width);
+    } else {
+      text_right_edge = std::max(text_right_edge, right);
+    }
+    if (keep_texts) texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
+  }
+  void note_extent(const std::vector<TextRun>& runs, double x, double size, Ink ink) {
+    if (!track_extents) return;
+    if (ink == Ink::muted) {
+      muted_left = std::min(muted_left, x);
+    } else {
+      text_right_edge = std::max(text_right_edge, x + text_width(runs, size));
+    }
   }
 
   // Appends `other`'s content, moved down by dy.
@@ -97,6 +131,9 @@ struct Fragment {
       t.baseline.y += dy;
       texts.push_back(std::move(t));
     }
+    text_right_edge = std::max(text_right_edge, other.text_right_edge);
+    box_right_edge = std::max(box_right_edge, other.box_right_edge);
+    muted_left = std::min(muted_left, other.muted_left);
   }
 
   void move_into(LaidOutPage& page, double dy) {
@@ -139,6 +176,51 @@ struct Atom {
   Fragment content;
 };
 
+// What a wrapped text is remembered by: the text, its size and its width. Looked up through a view,
+// so that a lookup copies nothing.
+struct WrapView {
+  std::string_view text;
+  double size = 0, width = 0;
+};
+// The same width is the same bits: a memo, not a tolerance (the options ask the widths they
+// computed the same way).
+inline std::uint64_t bits(double x) { return portable::bit_cast<std::uint64_t>(x); }
+inline bool operator==(const WrapView& a, const WrapView& b) {
+  return a.text == b.text && bits(a.size) == bits(b.size) && bits(a.width) == bits(b.width);
+}
+struct WrapKey {
+  std::string text;
+  double size = 0, width = 0;
+  operator WrapView() const { return {text, size, width}; }
+  friend bool operator==(const WrapKey& a, const WrapKey& b) { return WrapView(a) == WrapView(b); }
+};
+struct WrapHash {
+  using is_transparent = void;
+  std::size_t operator()(const WrapView& k) const {
+    std::size_t h = std::hash<std::string_view>{}(k.text);
+    h ^= std::hash<std::uint64_t>{}(bits(k.size)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h ^= std::hash<std::uint64_t>{}(bits(k.width)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h;
+  }
+  std::size_t operator()(const WrapKey& k) const { return (*this)(WrapView(k)); }
+};
+
+// A row of fields or of a key's answers, measured with a given geometry (see Builder::replay).
+struct RowKey {
+  const void* block = nullptr;
+  std::uint64_t left = 0, width = 0, column = 0;
+  bool follows = false, in_column = false;
+  friend bool operator==(const RowKey&, const RowKey&) = default;
+};
+struct RowHash {
+  std::size_t operator()(const RowKey& k) const {
+    std::size_t h = std::hash<const void*>{}(k.block);
+    for (std::uint64_t v : {k.left, k.width, k.column, std::uint64_t{k.follows} * 2 + k.in_column})
+      h ^= std::hash<std::uint64_t>{}(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h;
+  }
+};
+
 class Builder {
  public:
   Builder(const Document& doc, const LayoutStyle& style)
@@ -164,12 +246,52 @@ class Builder {
 
   // wrap_rich_text, remembered: the options tried for a figure and its neighbours (and a
   // section's fallback) wrap the same texts at the same widths again and again.
-  std::vector<std::vector<TextRun>> wrap(const RichText& text, double size, double width) {
-    std::string key = fmt::format("{}|{}|", size, width);
-    key += text;
-    auto it = wrapped_.find(key);
-    if (it == wrapped_.end()) it = wrapped_.emplace(std::move(key), wrap_rich_text(text, size, width)).first;
+  const std::vector<std::vector<TextRun>>& wrap(const RichText& text, double size, double width) {
+    const WrapView view{text, size, width};
+    auto it = wrapped_.find(view);
+    if (it == wrapped_.end()) it = wrapped_.emplace(WrapKey{text, size, width}, wrap_measured_text(measured(text, size), width)).first;
     return it->second;
+  }
+  // A text's words and their widths, measured once for all the widths it is wrapped at.
+  const MeasuredText& measured(const RichText& text, double size) {
+    const WrapView view{text, size, 0};
+    auto it = measured_.find(view);
+    if (it == measured_.end()) it = measured_.emplace(WrapKey{text, size, 0}, measure_text(text, size)).first;
+    return it->second;
+  }
+  // wrap_rich_source at the text width, remembered for the same reason.
+  const std::vector<std::string>& wrap_source(const RichText& text) {
+    const WrapView view{text, s_.body_size, width_};
+    auto it = sources_.find(view);
+    if (it == sources_.end())
+      it = sources_.emplace(WrapKey{text, s_.body_size, width_}, wrap_measured(measured(text, s_.body_size), width_)).first;
+    return it->second;
+  }
+
+  // An option only measured keeps no text, so the atom of a row of fields or answers is the
+  // same each time the same block is measured with the same geometry: the options for a figure
+  // and its neighbours measure the same rows many times. True when the row was pushed again.
+  RowKey row_key(const void* block, double column, bool follows) const {
+    return {block, bits(left_), bits(width_), bits(column), follows, in_column_};
+  }
+  bool replay(const RowKey& key) {
+    if (!measuring_) return false;
+    auto it = measured_rows_.find(key);
+    if (it == measured_rows_.end()) return false;
+    push(it->second);
+    return true;
+  }
+  void remember(const RowKey& key, const Atom& a) {
+    if (measuring_) measured_rows_.emplace(key, a);
+  }
+
+  // An atom for the current mode: a measured option keeps no text, a column's atoms note how far
+  // their texts reach.
+  Atom new_atom() const {
+    Atom a;
+    a.content.keep_texts = !measuring_;
+    a.content.track_extents = in_column_;
+    return a;
   }
 
   void push(Atom atom) {
@@ -183,7 +305,7 @@ class Builder {
 
   void first_page() {
     if (doc_.student_fields) {
-      Atom a;
+      Atom a = new_atom();
       a.height = s_.name_row_height;
       // The sheet id's QR code at the right end of the row (its quiet zone is its margin), the
       // writing lines in what is left.
@@ -347,7 +469,12 @@ class Builder {
     double best = 0;
     std::size_t best_k = 0;
     bool best_beside = false;
-    if (!emit(0, false)) return atoms_.size();  // never: k = 0 always places
+    // Every option is built only to be measured (no text kept); the best is then built in full.
+    measuring_ = true;
+    if (!emit(0, false)) {  // never: k = 0 always places
+      measuring_ = false;
+      return atoms_.size();
+    }
     best = height() - body_line_;  // the paragraphs beside must save more than a line
     // More paragraphs make the column only taller: once none fits beside the figure, stop.
     for (std::size_t k = 1; allow_side_ && k <= fi - first; ++k) {
@@ -368,7 +495,7 @@ class Builder {
     std::size_t best_split = 0;
     if (allow_side_ && fi > first && run_end > fi + 1) {
       const RichText& text = std::get<Paragraph>(blocks[fi - 1]).text;
-      if (text.find('\n') == RichText::npos) source = wrap_rich_source(text, s_.body_size, width_);
+      if (text.find('\n') == RichText::npos) source = wrap_source(text);
       // From the shortest rest up: a longer one only makes the column taller, so once it no
       // longer fits beside the figure, stop.
       double previous = 0;
@@ -388,6 +515,7 @@ class Builder {
       }
     }
     side_used_ = side_used_ || best_k > 0;
+    measuring_ = false;
     return *emit(best_k, best_beside, best_split);
   }
 
@@ -409,7 +537,7 @@ class Builder {
     const bool major = h.level <= 1;
     const double size = major ? s_.heading1_size : s_.heading2_size;
     const double line = size * s_.line_height;
-    Atom a;
+    Atom a = new_atom();
     a.section = si;
     a.block = bi;
     a.space_before = major ? s_.heading1_space : s_.heading2_space;
@@ -429,25 +557,25 @@ class Builder {
     const double size = s_.body_size;
     if (emphasis) {
       const double pad = s_.shade_padding;
-      auto lines = wrap(text, size, width_ - 2 * pad);
-      Atom a;
+      const auto& lines = wrap(text, size, width_ - 2 * pad);
+      Atom a = new_atom();
       a.section = si;
       a.block = bi;
       a.space_before = s_.block_space;
       a.height = static_cast<double>(lines.size()) * body_line_ + 2 * pad;
-      a.content.boxes.push_back({{left_, 0, width_, a.height}, BoxKind::shade, {}, {}});
+      a.content.box({{left_, 0, width_, a.height}, BoxKind::shade, {}, {}});
       double y = pad;
-      for (auto& runs : lines) {
-        a.content.text(std::move(runs), left_ + pad, y + size * kBaseline, size);
+      for (const auto& runs : lines) {
+        a.content.text(runs, left_ + pad, y + size * kBaseline, size);
         y += body_line_;
       }
       push(std::move(a));
       return;
     }
-    auto lines = wrap(text, size, width_);
+    const auto& lines = wrap(text, size, width_);
     const std::size_t n = lines.size();
     for (std::size_t i = 0; i < n; ++i) {
-      Atom a;
+      Atom a = new_atom();
       a.section = si;
       a.block = bi;
       a.height = body_line_;
@@ -456,7 +584,7 @@ class Builder {
       } else {
         a.break_before = i >= 2 && n - i >= 2;  // no orphan, no widow
       }
-      a.content.text(std::move(lines[i]), left_, size * kBaseline, size);
+      a.content.text(lines[i], left_, size * kBaseline, size);
       push(std::move(a));
     }
   }
@@ -520,6 +648,7 @@ class Builder {
       width_ = full_right - left_;
       // A narrow column keeps its boxes whole and wraps its long prompts instead.
       prompt_share_ = kSidePromptShare;
+      in_column_ = true;
       for (std::size_t n = 0; n < side_blocks.size(); ++n) {
         const std::size_t i = side_blocks[n];
         const int b = static_cast<int>(i);
@@ -538,6 +667,7 @@ class Builder {
       left_ = full_left;
       width_ = full_width;
       prompt_share_ = s_.prompt_column_max;
+      in_column_ = false;
       std::vector<Atom> side(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(mark)),
                              std::make_move_iterator(atoms_.end()));
       atoms_.resize(mark);
@@ -549,13 +679,9 @@ class Builder {
       for (std::size_t k = 0; k < side.size(); ++k) {
         height += (k > 0 ? side[k].space_before : 0) + side[k].height;
         // Everything left of the question id (the one muted text of a row), set flush right.
-        double room = right_;
-        for (const PlacedText& t : side[k].content.texts)
-          if (t.ink == Ink::muted) room = std::min(room, t.baseline.x - kIdGap / 2);
-        for (const PlacedBox& box : side[k].content.boxes) fits = fits && box.rect.right() <= room + kFitSlack;
-        for (const PlacedText& t : side[k].content.texts)
-          if (!(t.ink == Ink::muted))
-            fits = fits && t.baseline.x + text_width(t.runs, t.size) <= room + kFitSlack;
+        const Fragment& content = side[k].content;
+        const double room = std::min(right_, content.muted_left - kIdGap / 2);
+        fits = fits && content.box_right_edge <= room + kFitSlack && content.text_right_edge <= room + kFitSlack;
       }
       // A value wrapped to fit the column is worse than the answers under the figure.
       for (const Atom& atom : side) fits = fits && !atom.wrapped;
@@ -563,7 +689,7 @@ class Builder {
       const auto [w, h] = figure_size(f, figure_w);
       if (height > std::max(h, max_h)) return false;  // a wider column would not be shorter by much
 
-      Atom a;
+      Atom a = new_atom();
       a.section = si;
       a.block = bi;
       a.space_before = s_.figure_space;
@@ -589,7 +715,7 @@ class Builder {
 
   void figure(int si, int bi, const Figure& f, bool follows_paragraph) {
     const auto [w, h] = figure_size(f, width_ * std::clamp(f.width_fraction, 0.05, 1.0));
-    Atom a;
+    Atom a = new_atom();
     a.section = si;
     a.block = bi;
     a.space_before = s_.figure_space;
@@ -601,7 +727,18 @@ class Builder {
   }
 
   // The prompt column shared by a run of consecutive fields, so that their boxes line up.
-  double field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+  // The prompt columns depend on the run and the column's width only: remembered.
+  double field_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
+    const RowKey key{&blocks[from], 0, bits(width_), bits(prompt_share_), false, false};
+    if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
+    return prompt_columns_[key] = measure_field_prompt_column(blocks, from);
+  }
+  double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
+    const RowKey key{&blocks[from], 0, bits(width_), 0, true, false};
+    if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
+    return prompt_columns_[key] = measure_key_prompt_column(blocks, from);
+  }
+  double measure_field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
     double widest = 0;
     // What the run's boxes need right of the prompts: a point's "( □ ; □ )", a number's box, a
     // single tick option (options wrap to more rows), and the question id at the right edge.
@@ -635,7 +772,7 @@ class Builder {
     return std::min(widest + kPromptGap, room);
   }
 
-  double key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+  double measure_key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
     double widest = 0;
     for (std::size_t i = from; i < blocks.size(); ++i) {
       const auto* l = std::get_if<AnswerLine>(&blocks[i]);
@@ -646,8 +783,10 @@ class Builder {
   }
 
   void answer_field(int si, int bi, const AnswerField& f, bool follows_field) {
+    const RowKey key = row_key(&f, field_column_, follows_field);
+    if (replay(key)) return;
     const double size = s_.body_size;
-    Atom a;
+    Atom a = new_atom();
     a.section = si;
     a.block = bi;
     a.space_before = follows_field ? s_.row_space : s_.block_space;
@@ -667,7 +806,7 @@ class Builder {
     if (!ticks) {
       const double bh = s_.field_box_height;
       auto box = [&](double x, double w, std::string value) {
-        a.content.boxes.push_back({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
+        a.content.box({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
       };
       auto glyph = [&](const char* s, double x) {
         auto runs = plain(s);
@@ -694,16 +833,16 @@ class Builder {
     // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
     // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
     // ticks: it reads better, and takes less height, on lines of its own above them.
-    auto prompt_lines = wrap(f.prompt, size, field_column_ - kPromptGap);
+    const auto* prompt_lines = &wrap(f.prompt, size, field_column_ - kPromptGap);
     bool prompt_above = false;
-    if (ticks && prompt_lines.size() > 2) {
-      auto wide = wrap(f.prompt, size, limit - left_);
-      if (wide.size() < prompt_lines.size()) {
-        prompt_lines = std::move(wide);
+    if (ticks && prompt_lines->size() > 2) {
+      const auto& wide = wrap(f.prompt, size, limit - left_);
+      if (wide.size() < prompt_lines->size()) {
+        prompt_lines = &wide;
         prompt_above = true;
       }
     }
-    const double ticks_top = prompt_above ? static_cast<double>(prompt_lines.size()) * body_line_ : 0;
+    const double ticks_top = prompt_above ? static_cast<double>(prompt_lines->size()) * body_line_ : 0;
 
     if (ticks) {
       std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
@@ -743,7 +882,7 @@ class Builder {
         }
         const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
         const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
-        a.content.boxes.push_back({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
+        a.content.box({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
                                    std::move(options[i].second)});
         a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
       }
@@ -753,20 +892,23 @@ class Builder {
 
     double prompt_h = 0;
     double y = prompt_above ? size * kBaseline : baseline;
-    for (auto& runs : prompt_lines) {
-      a.content.text(std::move(runs), left_, y, size);
+    for (const auto& runs : *prompt_lines) {
+      a.content.text(runs, left_, y, size);
       prompt_h = y + size * (s_.line_height - kBaseline);
       y += body_line_;
     }
     if (id_w > 0) a.content.text_right(std::move(id), right_, prompt_above ? size * kBaseline : baseline, s_.id_size, Ink::muted);
     a.height = std::max(body_h, prompt_h);
+    remember(key, a);
     push(std::move(a));
   }
 
   void answer_line(int si, int bi, const AnswerLine& l, bool follows_line) {
+    const RowKey key = row_key(&l, key_column_, follows_line);
+    if (replay(key)) return;
     const double size = s_.body_size;
     const double pad = s_.key_row_padding;
-    Atom a;
+    Atom a = new_atom();
     a.section = si;
     a.block = bi;
     a.space_before = follows_line ? 0 : s_.block_space;
@@ -777,32 +919,32 @@ class Builder {
     const double id_room = id_w > 0 ? id_w + kIdGap : 0;
     double answer_x = left_ + key_column_;
     double prompt_w = key_column_ - kPromptGap;
-    auto answer = wrap(l.answer, size, right_ - answer_x - id_room);
+    const auto* answer = &wrap(l.answer, size, right_ - answer_x - id_room);
     const std::size_t own_lines = wrap(l.answer, size, kUnbounded).size();
     bool stacked = false;
-    if (answer.size() > own_lines) {
+    if (answer->size() > own_lines) {
       // Prompt on its line, the answer under it with the column's whole width.
       answer_x = left_ + kStackIndent;
-      auto under = wrap(l.answer, size, right_ - answer_x - id_room);
-      if (under.size() < answer.size()) {
-        answer = std::move(under);
+      const auto& under = wrap(l.answer, size, right_ - answer_x - id_room);
+      if (under.size() < answer->size()) {
+        answer = &under;
         prompt_w = right_ - left_ - id_room;
         stacked = true;
       } else {
         answer_x = left_ + key_column_;
       }
     }
-    a.wrapped = answer.size() > own_lines;
+    a.wrapped = answer->size() > own_lines;
 
     double y = pad + size * kBaseline;
     std::size_t rows = 0;
-    for (auto& runs : wrap(l.prompt, size, prompt_w)) {
-      a.content.text(std::move(runs), left_, y + static_cast<double>(rows++) * body_line_, size);
+    for (const auto& runs : wrap(l.prompt, size, prompt_w)) {
+      a.content.text(runs, left_, y + static_cast<double>(rows++) * body_line_, size);
     }
     const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
     std::size_t answer_rows = first_answer_row;
-    for (auto& runs : answer) {
-      a.content.text(std::move(runs), answer_x, y + static_cast<double>(answer_rows++) * body_line_,
+    for (const auto& runs : *answer) {
+      a.content.text(runs, answer_x, y + static_cast<double>(answer_rows++) * body_line_,
                      size, Ink::answer);
     }
     if (id_w > 0) a.content.text_right(std::move(id), right_, y, s_.id_size, Ink::muted);
@@ -810,6 +952,7 @@ class Builder {
     // A table: a rule above the first row and under every row.
     if (!follows_line) a.content.rules.push_back({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
     a.content.rules.push_back({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});
+    remember(key, a);
     push(std::move(a));
   }
 
@@ -977,7 +1120,13 @@ class Builder {
   std::vector<Mark> marks_;  // the state before each block of the section being measured
   bool allow_side_ = true, side_used_ = false;
   std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
-  std::unordered_map<std::string, std::vector<std::vector<TextRun>>> wrapped_;
+  std::unordered_map<WrapKey, std::vector<std::vector<TextRun>>, WrapHash, std::equal_to<>> wrapped_;
+  std::unordered_map<WrapKey, std::vector<std::string>, WrapHash, std::equal_to<>> sources_;
+  std::unordered_map<WrapKey, MeasuredText, WrapHash, std::equal_to<>> measured_;
+  bool measuring_ = false;  // building an option only to measure it
+  std::unordered_map<RowKey, Atom, RowHash> measured_rows_;
+  std::unordered_map<RowKey, double, RowHash> prompt_columns_;
+  bool in_column_ = false;  // building the column beside a figure
   std::map<std::pair<const Scene*, double>, std::pair<double, double>> figure_sizes_;  // by section: its atoms without paragraphs beside figures
   double field_column_ = 0, key_column_ = 0;
 

@@ -285,22 +285,39 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
   return lines;
 }
 
-std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
-                                          Weight weight) {
-  std::vector<std::string> lines;
-  if (rich.empty()) return lines;
+MeasuredText measure_text(std::string_view rich, double font_size, Weight weight) {
+  MeasuredText m;
+  m.text = std::string(rich);
+  if (rich.empty()) return m;
   const Face face = weight == Weight::bold ? Face::bold : Face::regular;
-  const double space = advance_em(U' ', face) * font_size;
-  const auto finish = [&](const std::string& line) { lines.push_back(line); };
-
+  m.space = advance_em(U' ', face) * font_size;
+  const std::string_view text = m.text;
   std::size_t start = 0;
   for (;;) {
     // A '\n' is a hard break: each piece between them is wrapped on its own.
-    const std::size_t nl = rich.find('\n', start);
-    const std::string_view piece = rich.substr(start, nl == npos ? npos : nl - start);
+    const std::size_t nl = text.find('\n', start);
+    const std::string_view piece = text.substr(start, nl == npos ? npos : nl - start);
+    auto& out = m.pieces.emplace_back();
+    for (const Word& w : words(piece))
+      out.push_back({static_cast<std::size_t>(w.text.data() - text.data()), w.text.size(),
+                     word_width(w.text, font_size, face), w.glued});
+    if (nl == npos) break;
+    start = nl + 1;
+  }
+  return m;
+}
+
+std::vector<std::string> wrap_measured(const MeasuredText& m, double max_width) {
+  std::vector<std::string> lines;
+  if (m.text.empty()) return lines;
+  const double space = m.space;
+  const std::string_view text = m.text;
+  const auto finish = [&](const std::string& line) { lines.push_back(line); };
+  for (const auto& ws : m.pieces) {
     std::string line;
     double line_width = 0;
     bool any = false;
+    const auto word = [&](const MeasuredText::Word& w) { return text.substr(w.offset, w.size); };
     const auto place = [&](std::string_view w, double ww) {
       if (any && line_width + space + ww > max_width) {
         finish(line);
@@ -318,16 +335,11 @@ std::vector<std::string> wrap_rich_source(std::string_view rich, double font_siz
     };
     // Glued words move to the next line together, as one chunk; a chunk wider than a whole line
     // falls back to breaking at its own spaces.
-    const std::vector<Word> ws = words(piece);
     for (std::size_t i = 0; i < ws.size();) {
       std::size_t j = i + 1;
       while (j < ws.size() && ws[j].glued) ++j;
       double chunk = 0;
-      std::vector<double> widths;
-      for (std::size_t k = i; k < j; ++k) {
-        widths.push_back(word_width(ws[k].text, font_size, face));
-        chunk += widths.back() + (k > i ? space : 0);
-      }
+      for (std::size_t k = i; k < j; ++k) chunk += ws[k].width + (k > i ? space : 0);
       if (j - i > 1 && chunk <= max_width && any && line_width + space + chunk > max_width) {
         finish(line);
         line.clear();
@@ -337,19 +349,28 @@ std::vector<std::string> wrap_rich_source(std::string_view rich, double font_siz
       for (std::size_t k = i; k < j; ++k) {
         if (chunk <= max_width && k > i) {  // within a chunk that fits a line: never a break
           line += ' ';
-          line += ws[k].text;
-          line_width += space + widths[k - i];
+          line += word(ws[k]);
+          line_width += space + ws[k].width;
         } else {
-          place(ws[k].text, widths[k - i]);
+          place(word(ws[k]), ws[k].width);
         }
       }
       i = j;
     }
     finish(line);  // an empty piece (two '\n' in a row) gives an empty line
-    if (nl == npos) break;
-    start = nl + 1;
   }
   return lines;
+}
+
+std::vector<std::vector<TextRun>> wrap_measured_text(const MeasuredText& m, double max_width, Weight weight) {
+  std::vector<std::vector<TextRun>> lines;
+  for (const auto& line : wrap_measured(m, max_width)) lines.push_back(parse_rich_text(line, weight));
+  return lines;
+}
+
+std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
+                                          Weight weight) {
+  return wrap_measured(measure_text(rich, font_size, weight), max_width);
 }
 
 }  // namespace epure::render

@@ -71,4 +71,22 @@ std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double f
 std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
                                           Weight weight = Weight::regular);
 
+// A text cut into the words a line may break between, each measured once: wrapping the same
+// text at several widths (a layout trying options) then costs only the breaking.
+struct MeasuredText {
+  struct Word {
+    std::size_t offset = 0, size = 0;  // in `text`
+    double width = 0;
+    bool glued = false;  // the space before it is not a place to break the line
+  };
+  std::string text;
+  double space = 0;                      // a space's width
+  std::vector<std::vector<Word>> pieces;  // the text's pieces between '\n's
+};
+MeasuredText measure_text(std::string_view rich, double font_size, Weight weight = Weight::regular);
+// wrap_rich_source and wrap_rich_text of a measured text: the same lines.
+std::vector<std::string> wrap_measured(const MeasuredText& text, double max_width);
+std::vector<std::vector<TextRun>> wrap_measured_text(const MeasuredText& text, double max_width,
+                                                     Weight weight = Weight::regular);
+
 }  // namespace epure::render
