@@ -16,11 +16,12 @@
 // when they fit there (half the paper of one above the other); a figure of several panels side
 // by side is never narrowed for that column. The plain paragraphs just before a figure (a
 // statement, a key's last steps) go in that column too, above the answers or with the answers
-// under the figure, when that makes the whole shorter by more than a line; the figure keeps the
-// width its kind asks for. A statement too long for that column may flow around the figure: its
-// first lines across the page, the rest in the column above the fields. Such a section, when its opening does not fit in what is left of a
-// page and would leave more than a fifth of it empty, is set with its paragraphs above the figure
-// instead, so that the page may end between them.
+// under the figure, when that makes the whole shorter by more than half a line; the figure keeps
+// the width its kind asks for. A statement too long for that column may flow around the figure:
+// its first lines across the page, the rest in the column above the fields. Such a section, when
+// its opening does not fit in what is left of a page and would leave more than a tenth of it
+// empty, is set with its paragraphs above the figure instead, so that the page may end between
+// them.
 #include <string>
 #include <vector>
 
