@@ -210,6 +210,13 @@ struct WrapHash {
   std::size_t operator()(const WrapKey& k) const { return (*this)(WrapView(k)); }
 };
 
+// A text wrapped at a width: its lines' markup, enough to count them, and their runs once a
+// line is set.
+struct Wrapped {
+  std::vector<std::string> lines;
+  std::optional<std::vector<std::vector<TextRun>>> runs;
+};
+
 // A row of fields or of a key's answers, measured with a given geometry (see Builder::replay).
 struct RowKey {
   const void* block = nullptr;
@@ -251,11 +258,24 @@ class Builder {
 
   // wrap_rich_text, remembered: the options tried for a figure and its neighbours (and a
   // section's fallback) wrap the same texts at the same widths again and again.
-  const std::vector<std::vector<TextRun>>& wrap(const RichText& text, double size, double width) {
+  // The lines' markup is enough to count them; their runs are parsed when a line is set.
+  Wrapped& wrapped(const RichText& text, double size, double width) {
     const WrapView view{text, size, width};
     auto it = wrapped_.find(view);
-    if (it == wrapped_.end()) it = wrapped_.emplace(WrapKey{text, size, width}, wrap_measured_text(measured(text, size), width)).first;
+    if (it == wrapped_.end())
+      it = wrapped_.emplace(WrapKey{text, size, width}, Wrapped{wrap_measured(measured(text, size), width), {}}).first;
     return it->second;
+  }
+  std::size_t line_count(const RichText& text, double size, double width) {
+    return wrapped(text, size, width).lines.size();
+  }
+  const std::vector<std::vector<TextRun>>& wrap(const RichText& text, double size, double width) {
+    Wrapped& w = wrapped(text, size, width);
+    if (!w.runs) {
+      w.runs.emplace();
+      for (const auto& line : w.lines) w.runs->push_back(parse_rich_text(line));
+    }
+    return *w.runs;
   }
   // A text's words and their widths, measured once for all the widths it is wrapped at.
   const MeasuredText& measured(const RichText& text, double size) {
@@ -451,7 +471,10 @@ class Builder {
       }
       std::optional<RichText> tail;
       if (split > 0) {
-        paragraph(si, static_cast<int>(fi - 1), joined(0, split), false);
+        // Its first `split` lines are the paragraph's own first lines: measured, they are only
+        // counted.
+        if (measuring_) line_atoms(si, static_cast<int>(fi - 1), split, nullptr);
+        else paragraph(si, static_cast<int>(fi - 1), joined(0, split), false);
         tail = joined(split, source.size());
       }
       std::vector<std::size_t> side;
@@ -577,8 +600,14 @@ class Builder {
       push(std::move(a));
       return;
     }
-    const auto& lines = wrap(text, size, width_);
-    const std::size_t n = lines.size();
+    // An option only measured, outside a column, needs the lines' number and nothing of them.
+    const auto* lines = measuring_ && !in_column_ ? nullptr : &wrap(text, size, width_);
+    line_atoms(si, bi, lines ? lines->size() : line_count(text, size, width_), lines);
+  }
+
+  // A plain paragraph's `n` lines as atoms; set from `lines` when given.
+  void line_atoms(int si, int bi, std::size_t n, const std::vector<std::vector<TextRun>>* lines) {
+    const double size = s_.body_size;
     for (std::size_t i = 0; i < n; ++i) {
       Atom a = new_atom();
       a.section = si;
@@ -589,7 +618,7 @@ class Builder {
       } else {
         a.break_before = i >= 2 && n - i >= 2;  // no orphan, no widow
       }
-      a.content.text(lines[i], left_, size * kBaseline, size);
+      if (lines) a.content.text((*lines)[i], left_, size * kBaseline, size);
       push(std::move(a));
     }
   }
@@ -925,7 +954,7 @@ class Builder {
     double answer_x = left_ + key_column_;
     double prompt_w = key_column_ - kPromptGap;
     const auto* answer = &wrap(l.answer, size, right_ - answer_x - id_room);
-    const std::size_t own_lines = wrap(l.answer, size, kUnbounded).size();
+    const std::size_t own_lines = line_count(l.answer, size, kUnbounded);
     bool stacked = false;
     if (answer->size() > own_lines) {
       // Prompt on its line, the answer under it with the column's whole width.
@@ -1125,7 +1154,7 @@ class Builder {
   std::vector<Mark> marks_;  // the state before each block of the section being measured
   bool allow_side_ = true, side_used_ = false;
   std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
-  std::unordered_map<WrapKey, std::vector<std::vector<TextRun>>, WrapHash, std::equal_to<>> wrapped_;
+  std::unordered_map<WrapKey, Wrapped, WrapHash, std::equal_to<>> wrapped_;
   std::unordered_map<WrapKey, std::vector<std::string>, WrapHash, std::equal_to<>> sources_;
   std::unordered_map<WrapKey, MeasuredText, WrapHash, std::equal_to<>> measured_;
   bool measuring_ = false;  // building an option only to measure it
