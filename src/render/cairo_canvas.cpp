@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include "render/font_metrics.h"
 #include "render/text.h"
+#include "render/utf8.h"
 
 namespace epure::render {
 namespace {
@@ -40,7 +42,7 @@ CairoCanvas::CairoCanvas(cairo_t* cr, PangoFontMap* fonts)
   cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
   cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
   pango_cairo_context_set_font_options(context_, options);
-  cairo_font_options_destroy(options);
+  font_options_ = options;
   // One user-space unit is a point: a font size in points is a size in user units.
   pango_cairo_context_set_resolution(context_, 72);
   // Pango rounds glyph positions to whole units by default, here whole points: letters would
@@ -53,6 +55,11 @@ CairoCanvas::CairoCanvas(cairo_t* cr, PangoFontMap* fonts)
 
 CairoCanvas::~CairoCanvas() {
   for (auto& [key, layout] : shaped_) g_object_unref(layout);
+  for (LoadedFace& f : faces_) {
+    if (f.face != nullptr) cairo_font_face_destroy(f.face);
+    if (f.font != nullptr) g_object_unref(f.font);
+  }
+  cairo_font_options_destroy(font_options_);
   g_object_unref(context_);
 }
 
@@ -133,6 +140,62 @@ double CairoCanvas::set_width(const TextRun& run, double size) {
   return logical.width / static_cast<double>(PANGO_SCALE);
 }
 
+CairoCanvas::LoadedFace& CairoCanvas::face(bool bold) {
+  LoadedFace& f = faces_[bold ? 1 : 0];
+  if (f.font == nullptr) {
+    PangoFontDescription* font = pango_font_description_new();
+    pango_font_description_set_family_static(font, "DejaVu Sans");
+    pango_font_description_set_weight(font, bold ? PANGO_WEIGHT_BOLD : PANGO_WEIGHT_NORMAL);
+    pango_font_description_set_absolute_size(font, 10 * PANGO_SCALE);
+    f.font = pango_context_load_font(context_, font);
+    pango_font_description_free(font);
+    if (f.font != nullptr && PANGO_IS_CAIRO_FONT(f.font)) {
+      f.scaled = pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(f.font));
+      if (f.scaled != nullptr) f.face = cairo_font_face_reference(cairo_scaled_font_get_font_face(f.scaled));
+    }
+  }
+  return f;
+}
+
+bool CairoCanvas::set_glyphs(const TextRun& run, double size, double x, double baseline) {
+  LoadedFace& f = face(run.bold);
+  if (f.face == nullptr) return false;
+  const std::string_view text = run.text;
+  const Face face_kind = run.bold ? Face::bold : Face::regular;
+  glyph_buffer_.clear();
+  cluster_buffer_.clear();
+  for (std::size_t i = 0; i < text.size();) {
+    const utf8::Decoded d = utf8::decode(text, i);
+    auto it = f.glyphs.find(d.cp);
+    if (it == f.glyphs.end()) {
+      unsigned long index = 0;
+      cairo_glyph_t* glyphs = nullptr;
+      int count = 0;
+      const std::string one(text.substr(i, d.length));
+      if (d.valid && has_glyph(d.cp) &&
+          cairo_scaled_font_text_to_glyphs(f.scaled, 0, 0, one.data(), static_cast<int>(one.size()), &glyphs, &count,
+                                           nullptr, nullptr, nullptr) == CAIRO_STATUS_SUCCESS &&
+          count == 1)
+        index = glyphs[0].index;
+      cairo_glyph_free(glyphs);
+      it = f.glyphs.emplace(d.cp, index).first;
+    }
+    if (it->second == 0) return false;
+    glyph_buffer_.push_back({it->second, x, baseline});
+    cluster_buffer_.push_back({static_cast<int>(d.length), 1});
+    x += advance_em(d.cp, face_kind) * size;
+    i += d.length;
+  }
+  cairo_set_font_face(cr_, f.face);
+  cairo_set_font_size(cr_, size);
+  cairo_set_font_options(cr_, font_options_);
+  // With the characters each glyph stands for: a PDF's text can be searched and copied.
+  cairo_show_text_glyphs(cr_, text.data(), static_cast<int>(text.size()), glyph_buffer_.data(),
+                         static_cast<int>(glyph_buffer_.size()), cluster_buffer_.data(),
+                         static_cast<int>(cluster_buffer_.size()), cairo_text_cluster_flags_t{});
+  return true;
+}
+
 void CairoCanvas::text(const TextLine& line) {
   const std::vector<RunPlacement> placed = place_runs(line.runs, line.size);
   double left = line.at.x;
@@ -145,6 +208,7 @@ void CairoCanvas::text(const TextLine& line) {
     const TextRun& run = line.runs[i];
     if (run.text.empty()) continue;
     const RunPlacement& p = placed[i];
+    if (set_glyphs(run, p.size, left + p.x, line.at.y - p.rise)) continue;
     PangoLayout* layout = shaped(run, p.size);
     const double baseline = pango_layout_get_baseline(layout) / static_cast<double>(PANGO_SCALE);
     cairo_move_to(cr_, left + p.x, line.at.y - p.rise - baseline);

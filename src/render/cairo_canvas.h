@@ -1,20 +1,24 @@
 #pragma once
-// The cairo backend: the painter's calls (canvas.h) drawn with cairo, text set with pango in
-// DejaVu Sans. It draws on whatever surface the cairo context targets: a PDF page
+// The cairo backend: the painter's calls (canvas.h) drawn with cairo, text in DejaVu Sans set
+// glyph by glyph at font_metrics.h's advances (pango loads the font, and sets the rare character
+// DejaVu Sans lacks from a fallback font). It draws on whatever surface the cairo context targets: a PDF page
 // (pdf_document.h) or an image for PNG previews. Like the SVG canvas it decides nothing: every
 // position comes from the painter and every width from font_metrics.h, so both backends draw the
 // same figure.
 #include <cairo.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "render/canvas.h"
 
 typedef struct _PangoContext PangoContext;
 typedef struct _PangoFontMap PangoFontMap;
 typedef struct _PangoLayout PangoLayout;
+typedef struct _PangoFont PangoFont;
 
 namespace epure::render {
 
@@ -44,6 +48,25 @@ class CairoCanvas final : public Canvas {
  private:
   void fill_and_stroke(const Paint& paint);
   PangoLayout* shaped(const TextRun& run, double size);
+  // A run set glyph by glyph at font_metrics.h's advances; false (nothing drawn) when the face
+  // lacks one of its characters, which pango then sets from a fallback font.
+  bool set_glyphs(const TextRun& run, double size, double x, double baseline);
+
+  // DejaVu Sans (regular, bold) as pango chose it, and its glyph for each character met so far
+  // (0: none). Text is set from these directly: shaping through pango costs more than all the
+  // rest of a page, and with no kerning nor ligature (see shaped) it gives the same glyphs at
+  // the same advances.
+  struct LoadedFace {
+    PangoFont* font = nullptr;
+    cairo_font_face_t* face = nullptr;
+    cairo_scaled_font_t* scaled = nullptr;
+    std::unordered_map<char32_t, unsigned long> glyphs;
+  };
+  LoadedFace& face(bool bold);
+  std::array<LoadedFace, 2> faces_;
+  cairo_font_options_t* font_options_ = nullptr;
+  std::vector<cairo_glyph_t> glyph_buffer_;
+  std::vector<cairo_text_cluster_t> cluster_buffer_;
 
   cairo_t* cr_;
   PangoContext* context_ = nullptr;

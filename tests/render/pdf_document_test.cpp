@@ -2,9 +2,11 @@
 
 #include <cairo.h>
 #include <doctest/doctest.h>
+#include <pango/pangocairo.h>
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <vector>
 #include <stdexcept>
 #include <variant>
 #include <string>
@@ -104,6 +106,70 @@ TEST_CASE("pdf: pango sets every run at the width font_metrics measured") {
   }
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
+}
+
+// Ink of a text line drawn by the canvas (glyph by glyph) and by a plain pango layout with the
+// same font and options, on two grey images: the same glyphs at the same places.
+TEST_CASE("pdf: text set glyph by glyph looks as pango sets it, and pango still sets what DejaVu lacks") {
+  constexpr int kW = 420, kH = 40;
+  auto draw = [&](const std::string& text, bool with_canvas) {
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_A8, kW, kH);
+    cairo_t* cr = cairo_create(surface);
+    cairo_scale(cr, 2, 2);  // 144 dpi: half a pixel here is a quarter of a point
+    {
+      CairoCanvas canvas(cr);
+      const std::vector<TextRun> runs{TextRun{text, Shift::none, false, false}};
+      if (with_canvas) {
+        canvas.text(TextLine{{2, 14}, Anchor::start, 10, runs, Colour{0, 0, 0}});
+      } else {
+        PangoLayout* layout = pango_cairo_create_layout(cr);
+        cairo_font_options_t* options = cairo_font_options_create();
+        cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+        cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+        pango_cairo_context_set_font_options(pango_layout_get_context(layout), options);
+        cairo_font_options_destroy(options);
+        pango_cairo_context_set_resolution(pango_layout_get_context(layout), 72);
+        pango_context_set_round_glyph_positions(pango_layout_get_context(layout), FALSE);
+        pango_layout_context_changed(layout);
+        PangoFontDescription* font = pango_font_description_from_string("DejaVu Sans");
+        pango_font_description_set_absolute_size(font, 10 * PANGO_SCALE);
+        pango_layout_set_font_description(layout, font);
+        pango_font_description_free(font);
+        PangoAttrList* attrs = pango_attr_list_new();
+        pango_attr_list_insert(attrs, pango_attr_font_features_new("kern 0, liga 0, clig 0"));
+        pango_layout_set_attributes(layout, attrs);
+        pango_attr_list_unref(attrs);
+        pango_layout_set_text(layout, text.data(), static_cast<int>(text.size()));
+        cairo_move_to(cr, 2, 14 - pango_layout_get_baseline(layout) / double(PANGO_SCALE));
+        pango_cairo_show_layout(cr, layout);
+        g_object_unref(layout);
+      }
+    }
+    cairo_surface_flush(surface);
+    std::vector<int> ink;
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) ink.push_back(data[y * stride + x]);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    return ink;
+  };
+  // Latin, accents, French punctuation, Greek, the course's symbols, and (last) a character
+  // DejaVu Sans has no glyph for, which pango takes from another font.
+  for (const std::string text : {"AV To Wa ffi", "Numéro d’étudiant : « aucun »", "‖AB‖ = √(x² + y²) ≈ 2,17",
+                                  "u∧v · t ≤ 1 → θ = −45° ∘ ↦", "中"}) {
+    CAPTURE(text);
+    const std::vector<int> glyphs = draw(text, true);
+    const std::vector<int> pango = draw(text, false);
+    long total = 0, differ = 0;
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+      total += pango[i];
+      differ += std::abs(glyphs[i] - pango[i]) > 96;
+    }
+    CHECK(total > 1000);             // something was drawn
+    CHECK(differ * 50 < total / 255);  // and where pango draws it: antialiasing apart
+  }
 }
 
 TEST_CASE("png: a page and a scene drawn as PNG images of the asked size") {
