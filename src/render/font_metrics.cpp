@@ -20,13 +20,13 @@ static_assert(std::is_sorted(std::begin(kAdvances), std::end(kAdvances),
                              }),
               "the generated table must be sorted for the binary search");
 
-const GlyphAdvance* find(char32_t cp) {
+constexpr const GlyphAdvance* find(char32_t cp) {
   const auto* it = std::lower_bound(std::begin(kAdvances), std::end(kAdvances), cp,
                                     [](const GlyphAdvance& g, char32_t c) { return g.cp < c; });
   return it != std::end(kAdvances) && it->cp == cp ? it : nullptr;
 }
 
-double advance_from_table(char32_t cp, Face face) {
+constexpr double advance_from_table(char32_t cp, Face face) {
   const GlyphAdvance* g = find(cp);
   if (g == nullptr) return kFallbackAdvanceEm;
   return (face == Face::bold ? g->bold : g->regular) / double(kUnitsPerEm);
@@ -54,13 +54,26 @@ const FlatAdvances& flat_advances() {
 
 }  // namespace
 
-double advance_em(char32_t cp, Face face) {
+namespace detail {
+
+constexpr std::array<std::array<double, 128>, 2> kAsciiAdvanceEm = [] {
+  std::array<std::array<double, 128>, 2> a{};
+  for (char32_t cp = 0; cp < 128; ++cp) {
+    a[0][cp] = advance_from_table(cp, Face::regular);
+    a[1][cp] = advance_from_table(cp, Face::bold);
+  }
+  return a;
+}();
+
+double advance_em_from_table(char32_t cp, Face face) {
   if (cp < kFlatEnd) {
     const FlatAdvances& f = flat_advances();
     return face == Face::bold ? f.bold[cp] : f.regular[cp];
   }
   return advance_from_table(cp, face);
 }
+
+}  // namespace detail
 
 bool has_glyph(char32_t cp) { return find(cp) != nullptr; }
 

@@ -7,14 +7,26 @@
 // Widths are per glyph, without kerning: backends set text unkerned so that what they draw is
 // exactly what was measured.
 
+#include <array>
+
 namespace epure::render {
 
 enum class Face { regular, bold };
 
+namespace detail {
+// The advances of ASCII, read straight from an array: measuring runs once per glyph and most
+// glyphs are ASCII. The same doubles as the table gives (filled from it at compile time).
+extern const std::array<std::array<double, 128>, 2> kAsciiAdvanceEm;  // [bold][cp]
+double advance_em_from_table(char32_t cp, Face face);
+}  // namespace detail
+
 // Advance width of `cp` in em (× font size gives the width). A code point missing from the
 // table gets kFallbackAdvanceEm, a typical glyph's width, so that unknown text is never measured
 // as empty.
-double advance_em(char32_t cp, Face face = Face::regular);
+inline double advance_em(char32_t cp, Face face = Face::regular) {
+  if (cp < 128) return detail::kAsciiAdvanceEm[face == Face::bold ? 1 : 0][cp];
+  return detail::advance_em_from_table(cp, face);
+}
 
 // True when the table has `cp` (the tests check the characters the templates use).
 bool has_glyph(char32_t cp);
