@@ -6,8 +6,10 @@
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/exponent.h"
 #include "geometry/predicates.h"
 #include "geometry/tolerance.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -27,7 +29,7 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   p.AC = C - A;
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   const ExactVec2 AB = exact_difference(times_pow2(B, -e), times_pow2(A, -e));
   const ExactVec2 AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
   const double ab_length = plain_norm(AB.hi);
@@ -59,7 +61,7 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   return p;
 }
 
-Projection project_exact(Point2 A, Point2 B, Point2 C) {
+EPURE_FMA_KERNEL Projection project_exact(Point2 A, Point2 B, Point2 C) {
   Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y});
   Projection p{};
   p.AB = B - A;
@@ -69,7 +71,7 @@ Projection project_exact(Point2 A, Point2 B, Point2 C) {
   if (!(p.AB.x != 0 || p.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   const Point2 a = times_pow2(A, -e), b = times_pow2(B, -e), c = times_pow2(C, -e);
   const ExactVec2 AB = exact_difference(b, a), AC = exact_difference(c, a);
 
