@@ -6,6 +6,7 @@
 
 #include "geometry/degenerate.h"
 #include "geometry/exact.h"
+#include "support/sin_cos.h"
 
 namespace epure::geo {
 
@@ -77,7 +78,7 @@ CosSin cos_sin_degrees(double degrees) {
   const double rest = turns - 90.0 * quarter;
   const double radians = rest * (std::numbers::pi / 180.0);
   double c, s;
-  portable::sin_cos_quarter(radians, s, c);  // correctly rounded: the same bits everywhere
+  portable::sin_cos_quarter_fast(radians, s, c);  // correctly rounded: the same bits everywhere
   switch (((static_cast<int>(quarter) % 4) + 4) % 4) {
     case 0: return {c, s};
     case 1: return {-s, c};

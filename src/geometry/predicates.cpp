@@ -1,6 +1,7 @@
 #include "geometry/predicates.h"
 
 #include "geometry/expansion.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -103,7 +104,7 @@ Certain exact_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, d
 
 }  // namespace detail
 
-Certain certain_discriminant(Vec2 u, const ExactVec2& v, double r) {
+EPURE_FMA_CLONES Certain certain_discriminant(Vec2 u, const ExactVec2& v, double r) {
   // c = u∧v as a double-double, then ‖u‖²·r² − c²
   const DD c = dd_product(u.x, v.hi.y) + -dd_product(u.y, v.hi.x) +
                dd(u.x * v.lo.y - u.y * v.lo.x);
@@ -126,7 +127,7 @@ Certain certain_discriminant(Vec2 u, const ExactVec2& v, double r) {
                 &data);
 }
 
-Certain certain_discriminant(Vec3 u, const ExactVec3& v, double r) {
+EPURE_FMA_CLONES Certain certain_discriminant(Vec3 u, const ExactVec3& v, double r) {
   auto pair = [](double ui, double uj, double vi_hi, double vi_lo, double vj_hi, double vj_lo) {
     // ui·vj − uj·vi
     return dd_product(ui, vj_hi) + -dd_product(uj, vi_hi) + dd(ui * vj_lo - uj * vi_lo);

@@ -6,8 +6,10 @@
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/exponent.h"
 #include "geometry/predicates.h"
 #include "geometry/tolerance.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -27,7 +29,7 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   p.AC = C - A;
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   const ExactVec2 AB = exact_difference(times_pow2(B, -e), times_pow2(A, -e));
   const ExactVec2 AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
   const double ab_length = plain_norm(AB.hi);
@@ -59,7 +61,7 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   return p;
 }
 
-Projection project_exact(Point2 A, Point2 B, Point2 C) {
+EPURE_FMA_KERNEL Projection project_exact(Point2 A, Point2 B, Point2 C) {
   Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y});
   Projection p{};
   p.AB = B - A;
@@ -69,7 +71,7 @@ Projection project_exact(Point2 A, Point2 B, Point2 C) {
   if (!(p.AB.x != 0 || p.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   const Point2 a = times_pow2(A, -e), b = times_pow2(B, -e), c = times_pow2(C, -e);
   const ExactVec2 AB = exact_difference(b, a), AC = exact_difference(c, a);
 
@@ -89,43 +91,39 @@ Projection project_exact(Point2 A, Point2 B, Point2 C) {
     return Point2{from.x + std::fma(k, times_pow2(by.hi.x, e), k * times_pow2(by.lo.x, e)),
                   from.y + std::fma(k, times_pow2(by.hi.y, e), k * times_pow2(by.lo.y, e))};
   };
+  // Both signs and both quotients are computed whatever the case, and the case then selects
+  // among them: the same values as taking each case's own path, without a hard-to-predict
+  // branch between them (the figures come before, between and after alike).
+  const double t = ratio(ab_dot_ac);
+  // the sign of AB·BC places t against 1; t − 1 = AB·BC / AB·AB keeps its own digits near B
+  const Certain ab_dot_bc = certain_dot(AB, exact_difference(c, b));
+  const double beyond = ratio(ab_dot_bc);
   if (ab_dot_ac.sign < 0) {
     p.position = Position::before;
     // of AB·AC's sign: negative unless the quotient underflows
-    p.t = std::min(ratio(ab_dot_ac), -std::numeric_limits<double>::denorm_min());
-    p.P = along(A, AB, p.t);
-    return p;
-  }
-  if (ab_dot_ac.sign == 0) {
+    p.t = std::min(t, -std::numeric_limits<double>::denorm_min());
+  } else if (ab_dot_ac.sign == 0) {
     p.position = Position::between;
     p.t = 0;
-    p.P = A;
-    return p;
-  }
-  const double t = ratio(ab_dot_ac);
-  if (t < 0.5) {  // AB·BC < 0 for sure: between, and t from AB·AC keeps its digits near 0
+  } else if (t < 0.5) {  // AB·BC < 0 for sure: between, and t from AB·AC keeps its digits near 0
     p.position = Position::between;
     p.t = t;
-    p.P = along(A, AB, t);
-    return p;
-  }
-  // Near B and beyond: the sign of AB·BC places t against 1.
-  const Certain ab_dot_bc = certain_dot(AB, exact_difference(c, b));
-  const double beyond = ratio(ab_dot_bc);  // t − 1, to its own digits
-  // t itself from AB·AC (rounded about once), kept on its side of 1 as the position says
-  if (ab_dot_bc.sign > 0) {
+  } else if (ab_dot_bc.sign > 0) {
+    // t itself from AB·AC (rounded about once), kept on its side of 1 as the position says
     p.position = Position::after;
     p.t = std::max(t, std::nextafter(1.0, 2.0));
   } else {
     p.position = Position::between;
     p.t = ab_dot_bc.sign == 0 ? 1.0 : std::min(t, 1.0);
   }
-  // P = B + (t − 1)·AB within 2^-20 of B: A + t·AB would carry t's rounding (ε·‖AB‖) into a
-  // point that B's own digits place better; elsewhere A + t·AB, as `project` computes it
+  // P = B + (t − 1)·AB within 2^-20 of B (from t ≥ 1/2 on): A + t·AB would carry t's rounding
+  // (ε·‖AB‖) into a point that B's own digits place better; elsewhere A + t·AB, as `project`
+  // computes it. A and B themselves where t is exactly 0 or 1.
   constexpr double kNearB = 0x1p-20;
-  p.P = ab_dot_bc.sign == 0            ? B
-        : std::abs(beyond) < kNearB    ? along(B, AB, beyond)
-                                       : along(A, AB, p.t);
+  const bool near_b = ab_dot_ac.sign > 0 && !(t < 0.5) && std::abs(beyond) < kNearB;
+  p.P = along(near_b ? B : A, AB, near_b ? beyond : p.t);
+  if (ab_dot_ac.sign == 0) p.P = A;
+  else if (ab_dot_ac.sign > 0 && !(t < 0.5) && ab_dot_bc.sign == 0) p.P = B;
   return p;
 }
 

@@ -2,6 +2,7 @@
 
 #include "geometry/ray_ball.h"
 #include "geometry/ray_box.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -29,11 +30,11 @@ RayCube intersect_canonical_cube(const Ray3& ray) {
   return cube_result(detail::intersect_box<3>({A.x, A.y, A.z}, {u.x, u.y, u.z}));
 }
 
-RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere) {
+EPURE_FMA_KERNEL RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere) {
   return detail::intersect_ball_exact<RaySphere, Hit3>(ray, sphere.C, sphere.r);
 }
 
-RayCube intersect_canonical_cube_exact(const Ray3& ray) {
+EPURE_FMA_KERNEL RayCube intersect_canonical_cube_exact(const Ray3& ray) {
   const Point3 A = ray.origin;
   const Vec3 u = ray.direction;
   return cube_result(detail::intersect_box_exact<3>({A.x, A.y, A.z}, {u.x, u.y, u.z}));

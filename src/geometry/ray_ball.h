@@ -6,6 +6,7 @@
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/exponent.h"
 #include "geometry/predicates.h"
 #include "geometry/tolerance.h"
 #include "geometry/vec.h"
@@ -68,8 +69,8 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
 
   // The figure (A, C, r) brought near unit size by 2^-e and the direction by 2^-f: exact, and
   // every t below is in units of the scaled direction, t_world = t·2^(e−f).
-  const int e = std::ilogb(std::max({max_abs(A), max_abs(C), r}));
-  const int f = std::ilogb(largest_u);
+  const int e = binary_exponent(std::max({max_abs(A), max_abs(C), r}));
+  const int f = binary_exponent(largest_u);
   const auto u = times_pow2(ray.direction, -f);
   const double rs = times_pow2(r, -e);
   const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
@@ -155,8 +156,8 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
 
   // The figure (A, C, r) brought near unit size by 2^-e and the direction by 2^-f: exact, and
   // every t below is in units of the scaled direction, t_world = t·2^(e−f).
-  const int e = std::ilogb(std::max({max_abs(A), max_abs(C), r}));
-  const int f = std::ilogb(largest_u);
+  const int e = binary_exponent(std::max({max_abs(A), max_abs(C), r}));
+  const int f = binary_exponent(largest_u);
   const auto u = times_pow2(ray.direction, -f);
   const double rs = times_pow2(r, -e);
   const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));

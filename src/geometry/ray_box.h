@@ -9,6 +9,7 @@
 #include "geometry/box_faces.h"
 #include "geometry/degenerate.h"
 #include "geometry/exact.h"
+#include "geometry/exponent.h"
 #include "geometry/predicates.h"
 #include "geometry/tolerance.h"
 #include "geometry/vec.h"
@@ -51,7 +52,7 @@ BoxResult<Dim> intersect_box(const std::array<double, Dim>& A,
 
   // The direction brought near unit size by 2^-f (exact), so that no product below overflows or
   // underflows whatever its length; t is found in units of it and returned as t·2^-f.
-  const int f = std::ilogb(largest_u);
+  const int f = binary_exponent(largest_u);
   std::array<double, Dim> u;
   for (int k = 0; k < Dim; ++k) u[k] = times_pow2(direction[k], -f);
   largest_u = times_pow2(largest_u, -f);
@@ -124,7 +125,7 @@ BoxResult<Dim> intersect_box_exact(const std::array<double, Dim>& A,
 
   // The direction brought near unit size by 2^-f (exact), so that no product below overflows or
   // underflows whatever its length; t is found in units of it and returned as t·2^-f.
-  const int f = std::ilogb(largest_u);
+  const int f = binary_exponent(largest_u);
   std::array<double, Dim> u;
   for (int k = 0; k < Dim; ++k) u[k] = times_pow2(direction[k], -f);
   largest_u = times_pow2(largest_u, -f);

@@ -1,6 +1,7 @@
 #include "geometry/ray_circle.h"
 
 #include "geometry/ray_ball.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -12,7 +13,7 @@ RayCircle intersect(const Ray2& ray, const Circle& circle) {
 
 RayCircle intersect_canonical_circle(const Ray2& ray) { return intersect(ray, Circle{{0, 0}, 1.0}); }
 
-RayCircle intersect_exact(const Ray2& ray, const Circle& circle) {
+EPURE_FMA_KERNEL RayCircle intersect_exact(const Ray2& ray, const Circle& circle) {
   return detail::intersect_ball_exact<RayCircle, Hit2>(ray, circle.C, circle.r);
 }
 

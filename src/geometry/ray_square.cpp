@@ -1,6 +1,7 @@
 #include "geometry/ray_square.h"
 
 #include "geometry/ray_box.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -30,7 +31,7 @@ RaySquare intersect_canonical_square(const Ray2& ray) {
   return square_result(detail::intersect_box<2>({A.x, A.y}, {u.x, u.y}));
 }
 
-RaySquare intersect_canonical_square_exact(const Ray2& ray) {
+EPURE_FMA_KERNEL RaySquare intersect_canonical_square_exact(const Ray2& ray) {
   const Point2 A = ray.origin;
   const Vec2 u = ray.direction;
   return square_result(detail::intersect_box_exact<2>({A.x, A.y}, {u.x, u.y}));

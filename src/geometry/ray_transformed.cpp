@@ -5,6 +5,8 @@
 #include <type_traits>
 
 #include "geometry/exact_vec.h"
+#include "geometry/exponent.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -81,7 +83,7 @@ void refine_from_nearby(RayTransformed<Canonical>& res, Point2 centre, double si
                         Solve solve) {
   if (!res.hit) return;
   // t_proj = u·AC / u·u in units of u, u rescaled by a power of two against overflow
-  const int f = std::ilogb(max_abs(ray.direction));
+  const int f = binary_exponent(max_abs(ray.direction));
   const Vec2 u = times_pow2(ray.direction, -f);
   const ExactVec2 AC = exact_difference(centre, ray.origin);
   const double length_u = plain_norm(u);
@@ -142,10 +144,10 @@ RayEllipse intersect(const Ray2& ray, const Ellipse& ellipse) {
 RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle) {
   return rectangle_by(ray, rectangle, intersect_canonical_square);
 }
-RayEllipse intersect_exact(const Ray2& ray, const Ellipse& ellipse) {
+EPURE_FMA_KERNEL RayEllipse intersect_exact(const Ray2& ray, const Ellipse& ellipse) {
   return ellipse_by(ray, ellipse, intersect_canonical_circle_exact);
 }
-RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle) {
+EPURE_FMA_KERNEL RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle) {
   return rectangle_by(ray, rectangle, intersect_canonical_square_exact);
 }
 

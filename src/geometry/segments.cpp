@@ -6,8 +6,10 @@
 
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
+#include "geometry/exponent.h"
 #include "geometry/predicates.h"
 #include "geometry/tolerance.h"
+#include "support/fma_clones.h"
 
 namespace epure::geo {
 
@@ -44,7 +46,7 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D) {
 
   // The parameters are ratios: computed on the figure brought near unit size by a power of two
   // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   auto down = [e](Point2 p) { return times_pow2(p, -e); };
   const ExactVec2 AB = exact_difference(down(B), down(A));
   const ExactVec2 CD = exact_difference(down(D), down(C));
@@ -147,7 +149,7 @@ Parameter parameter(const Certain& n, const Certain& den, Complement m) {
 
 }  // namespace
 
-SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D) {
+EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D) {
   Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y, D.x, D.y});
   SegmentIntersection s{};
   s.AB = B - A;
@@ -160,7 +162,7 @@ SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point
 
   // The parameters are ratios: computed on the figure brought near unit size by a power of two
   // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
-  const int e = scale.value > 0 ? std::ilogb(scale.value) : 0;
+  const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
   auto down = [e](Point2 p) { return times_pow2(p, -e); };
   const Point2 a = down(A), b = down(B), c = down(C), d = down(D);
   const ExactVec2 AB = exact_difference(b, a);

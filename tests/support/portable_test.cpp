@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/portable.h"
+#include "support/sin_cos.h"
 
 namespace {
 
@@ -30,6 +31,7 @@ struct Draw {
       if (std::isfinite(x)) return x;
     }
   }
+  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }  // [0, 1)
   double moderate() {  // a mantissa at a scale from 2^-40 to 2^40
     return static_cast<double>(next() >> 11) * 0x1p-53 * std::ldexp(1.0, static_cast<int>(next() % 80) - 40);
   }
@@ -112,4 +114,56 @@ TEST_CASE("portable: sin, cos and atan2 correctly rounded (values from mpmath at
   CHECK(p::atan2(0.0, -1.0) == std::atan2(0.0, -1.0));
   CHECK(bits(p::atan2(-0.0, 1.0)) == bits(-0.0));
   CHECK(p::atan2(1.0, 0.0) == std::atan2(1.0, 0.0));
+}
+
+// support/sin_cos.h: the certified cheap path gives sin_cos_quarter's bits, whether it certifies
+// an argument or hands it to the series.
+namespace {
+
+void check_fast_sin_cos(double x) {
+  namespace p = epure::portable;
+  double s0 = 2, c0 = 2, s1 = 3, c1 = 3;
+  p::sin_cos_quarter(x, s0, c0);
+  p::sin_cos_quarter_fast(x, s1, c1);
+  CAPTURE(x);
+  CHECK(bits(s1) == bits(s0));
+  CHECK(bits(c1) == bits(c0));
+}
+
+}  // namespace
+
+TEST_CASE("sin_cos_quarter_fast: sin_cos_quarter's bits") {
+  SUBCASE("1. zeros keep their sign, tiny arguments give x and 1") {
+    for (double x : {0.0, -0.0, 0x1p-1074, -0x1p-1074, 1e-300, 0x1.fffffffffffffp-31, -0x1p-30,
+                     0x1p-30, 0x1.0000000000001p-30})
+      check_fast_sin_cos(x);
+  }
+  SUBCASE("2. where glibc rounds the other way, and at the ends of the quarter") {
+    for (double x : {-0x1.bf0b19459991fp-4, 0x1.0ba1b83214863p-1, 0.78539816339744828,
+                     -0.78539816339744828, 45 * (3.141592653589793 / 180)})
+      check_fast_sin_cos(x);
+  }
+  SUBCASE("3. random arguments, decimal angles, and those the cheap path does not certify") {
+    namespace p = epure::portable;
+    Draw draw;
+    int uncertified = 0;
+    constexpr int n = 100000;
+    for (int i = 0; i < n; ++i) {
+      double x;
+      switch (i % 3) {
+        case 0: x = (2 * draw.unit() - 1) * 0.78539816339744828; break;
+        case 1: x = std::ldexp(0.5 + draw.unit() / 2, -static_cast<int>(draw.next() % 31)); break;
+        default:  // a decimal angle in [−45°, 45°], as cos_sin_degrees reduces them
+          x = (static_cast<double>(draw.next() % 9001) - 4500) / 100 * (3.141592653589793 / 180);
+      }
+      if (std::fabs(x) >= 0x1p-30) {
+        double s, c;
+        uncertified += p::detail::sin_cos_quarter_certified(x, s, c) ? 0 : 1;
+      }
+      check_fast_sin_cos(x);
+    }
+    // about one in 300: both paths run, and the cheap one carries the load
+    CHECK(uncertified > 0);
+    CHECK(uncertified < n / 100);
+  }
 }
