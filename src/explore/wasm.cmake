@@ -48,7 +48,11 @@ list(APPEND wasm_sources
 list(SORT wasm_sources)
 
 # The same floating-point rule as the native build (no fma contraction): the same bits.
-set(wasm_flags -std=c++20 -O2 -fexceptions -ffp-contract=off -DFMT_HEADER_ONLY -DTOML_HEADER_ONLY=1
+# WebAssembly's own exceptions (try/catch in the module, Chromium 95 and later): with emscripten's
+# default JavaScript-based ones, every call that may throw inside a try goes out through a
+# JavaScript trampoline (invoke_*), and the core is full of them.
+set(wasm_eh -fwasm-exceptions)
+set(wasm_flags -std=c++20 -O2 ${wasm_eh} -ffp-contract=off -DFMT_HEADER_ONLY -DTOML_HEADER_ONLY=1
   -I${CMAKE_CURRENT_SOURCE_DIR} -isystem ${wasm_include} -Wno-deprecated-declarations)
 set(wasm_env ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
 set(wasm_objects "")
@@ -72,7 +76,7 @@ endforeach()
 set(EPURE_EXPLORE_PAGE ${wasm_dir}/explore.html)
 add_custom_command(
   OUTPUT ${EPURE_EXPLORE_PAGE}
-  COMMAND ${wasm_env} ${EPURE_EMXX} -O2 -fexceptions --bind -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1
+  COMMAND ${wasm_env} ${EPURE_EMXX} -O2 ${wasm_eh} --bind -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1
           -sENVIRONMENT=web -sMINIFY_HTML=0 -sINCOMING_MODULE_JS_API=[onRuntimeInitialized,print,printErr]
           --shell-file ${CMAKE_CURRENT_SOURCE_DIR}/explore/page.html
           ${wasm_objects} -o ${EPURE_EXPLORE_PAGE}

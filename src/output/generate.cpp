@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <memory>
+#include <span>
 #include <thread>
 #include <utility>
 
@@ -24,10 +25,12 @@ namespace {
 // stays flat whatever the size of the set.
 constexpr int kBatch = 64;
 
-// A sheet's two documents and their pages; the pages point into the documents' scenes.
+// A sheet's two documents and their pages; the pages point into the documents' scenes. The
+// key's links (to explore.html, when the set has it) go into the class set's keys.pdf.
 struct Printed {
   render::Document sheet, key;
   std::vector<render::LaidOutPage> sheet_pages, key_pages;
+  std::vector<render::PageLink> sheet_links, key_links;
 };
 
 render::PdfMetadata pdf_metadata(const WorksheetSpec& spec, const std::string& title,
@@ -41,20 +44,28 @@ render::PdfMetadata pdf_metadata(const WorksheetSpec& spec, const std::string& t
   return m;
 }
 
-// A class-set PDF written as it is drawn, committed at the end (never a half file).
+// A class-set PDF written as it is drawn, committed at the end (never a half file). With links,
+// the committed file is then read again by qpdf and replaced by its linked copy (the file is
+// streamed: the set's PDF is never held in memory whole).
 struct ClassSetPdf {
+  std::filesystem::path path;
   AtomicFile file;
   render::PdfDocument pdf;
   ClassSetPdf(const std::filesystem::path& path, const render::PdfMetadata& metadata, render::PageSize page)
-      : file(path), pdf([this](std::string_view bytes) { file.write(bytes); }, metadata, page) {}
+      : path(path), file(path), pdf([this](std::string_view bytes) { file.write(bytes); }, metadata, page) {}
 
-  void add(const std::vector<render::LaidOutPage>& pages, const std::string& id, bool duplex) {
-    pdf.add(pages, id, true);
+  void add(const std::vector<render::LaidOutPage>& pages, const std::string& id, bool duplex,
+           std::span<const render::PageLink> links) {
+    pdf.add(pages, id, true, {}, links);
     if (duplex && pdf.pages() % 2 == 1) pdf.add_blank(pages.back().size, id);
   }
   void commit() {
     pdf.finish();
     file.commit();
+    if (pdf.links().empty()) return;
+    AtomicFile linked(path);
+    render::add_links_to_file(path, pdf.links(), [&](std::string_view bytes) { linked.write(bytes); });
+    linked.commit();
   }
 };
 
@@ -80,12 +91,14 @@ class ClassSetWriter {
     wait();
     batch_ = std::move(batch);
     if (!threaded_) {
-      draw(sheets_, &Printed::sheet_pages);
-      draw(keys_, &Printed::key_pages);
+      draw(sheets_, &Printed::sheet_pages, &Printed::sheet_links);
+      draw(keys_, &Printed::key_pages, &Printed::key_links);
       return;
     }
-    sheets_thread_ = std::jthread([this] { guarded(sheets_error_, [this] { draw(sheets_, &Printed::sheet_pages); }); });
-    keys_thread_ = std::jthread([this] { guarded(keys_error_, [this] { draw(keys_, &Printed::key_pages); }); });
+    sheets_thread_ = std::jthread(
+        [this] { guarded(sheets_error_, [this] { draw(sheets_, &Printed::sheet_pages, &Printed::sheet_links); }); });
+    keys_thread_ = std::jthread(
+        [this] { guarded(keys_error_, [this] { draw(keys_, &Printed::key_pages, &Printed::key_links); }); });
   }
 
   void commit() {
@@ -96,8 +109,10 @@ class ClassSetWriter {
 
  private:
   using Pages = std::vector<render::LaidOutPage> Printed::*;
-  void draw(ClassSetPdf& pdf, Pages pages) {
-    for (std::size_t i = 0; i < batch_->ids.size(); ++i) pdf.add(batch_->printed[i].*pages, batch_->ids[i], duplex_);
+  using Links = std::vector<render::PageLink> Printed::*;
+  void draw(ClassSetPdf& pdf, Pages pages, Links links) {
+    for (std::size_t i = 0; i < batch_->ids.size(); ++i)
+      pdf.add(batch_->printed[i].*pages, batch_->ids[i], duplex_, batch_->printed[i].*links);
   }
   template <class Fn>
   static void guarded(std::exception_ptr& error, Fn&& fn) {
@@ -169,9 +184,14 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
         Printed& p = printed[i];
         p.sheet = set.sheet_document(sheets[i]);
         p.key = set.key_document(sheets[i]);
+        const std::string id = sheets[i].id.str();
+        // each exercise of the key links to the student's own instance in explore.html
+        if (explore)
+          for (std::size_t k = 0; k < p.key.sections.size() && k < sheets[i].exercises.size(); ++k)
+            p.key.sections[k].link = fmt::format("explore.html#{}.{}", id, sheets[i].exercises[k].n);
         p.sheet_pages = render::layout_document(p.sheet);
         p.key_pages = render::layout_document(p.key);
-        const std::string id = sheets[i].id.str();
+        if (options.pdf && !options.split) p.key_links = render::section_links(p.key_pages, p.key);
         if (options.svg) {
           write_file_atomically(options.out / "sheets" / (id + ".svg"), render::pages_to_svg(p.sheet_pages, p.sheet));
           write_file_atomically(options.out / "keys" / (id + ".svg"), render::pages_to_svg(p.key_pages, p.key));
@@ -180,7 +200,8 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
           write_file_atomically(options.out / "sheets" / (id + ".pdf"),
                                 render::pages_to_pdf(p.sheet_pages, id, pdf_metadata(set.spec(), p.sheet.title, options)));
           write_file_atomically(options.out / "keys" / (id + ".pdf"),
-                                render::pages_to_pdf(p.key_pages, id, pdf_metadata(set.spec(), p.key.title, options)));
+                                render::pages_to_pdf(p.key_pages, id, pdf_metadata(set.spec(), p.key.title, options), {},
+                                                     render::section_links(p.key_pages, p.key, "../")));
         }
       });
     }

@@ -48,6 +48,10 @@ using Block = std::variant<Heading, Paragraph, AnswerField, AnswerLine, Figure>;
 // separates a Figure from the Paragraph just before it.
 struct Section {
   std::vector<Block> blocks;
+  // Where the section's heading links to in a PDF (a URI relative to the set's directory: the
+  // explorer's page of this exercise, "explore.html#<sheet id>.<n>"); empty for none. The SVG
+  // pages do not carry it.
+  std::string link;
   template <class T>
   Section& add(T block) {
     blocks.emplace_back(std::move(block));

@@ -3,6 +3,12 @@
 #include <cairo-pdf.h>
 #include <cairo.h>
 #include <pango/pangocairo.h>
+#include <qpdf/Pipeline.hh>
+#include <qpdf/QPDF.hh>
+#include <qpdf/QPDFExc.hh>
+#include <qpdf/QPDFPageDocumentHelper.hh>
+#include <qpdf/QPDFPageObjectHelper.hh>
+#include <qpdf/QPDFWriter.hh>
 
 #include <charconv>
 #include <cstdlib>
@@ -44,6 +50,66 @@ std::string iso_date(std::int64_t seconds) {
 void check(cairo_status_t status, const char* what) {
   if (status != CAIRO_STATUS_SUCCESS)
     throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(status)));
+}
+
+// qpdf's output into a sink (QPDFWriter writes to a Pipeline).
+class SinkPipeline : public Pipeline {
+ public:
+  explicit SinkPipeline(const PdfDocument::Sink& sink) : Pipeline("epure sink", nullptr), sink_(sink) {}
+  void write(unsigned char const* data, size_t length) override {
+    sink_(std::string_view(reinterpret_cast<const char*>(data), length));
+  }
+  void finish() override {}
+
+ private:
+  const PdfDocument::Sink& sink_;
+};
+
+// The annotations into `pdf` (read), then the whole file out through qpdf.
+void write_with_links(QPDF& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
+  std::vector<QPDFPageObjectHelper> pages = QPDFPageDocumentHelper(pdf).getAllPages();
+  for (const PageLink& link : links) {
+    if (link.page < 0 || static_cast<std::size_t>(link.page) >= pages.size())
+      throw std::runtime_error(fmt::format("a PDF link on page {} of {}", link.page + 1, pages.size()));
+    QPDFPageObjectHelper& page = pages[static_cast<std::size_t>(link.page)];
+    // the layout's rectangle has its origin at the top left, PDF's user space at the bottom left
+    const double top = page.getMediaBox().getArrayItem(3).getNumericValue();
+    const PageRect& r = link.rect;
+    const auto number = [](double v) { return QPDFObjectHandle::newReal(v, 2); };
+    QPDFObjectHandle action = QPDFObjectHandle::newDictionary();
+    action.replaceKey("/S", QPDFObjectHandle::newName("/URI"));
+    action.replaceKey("/URI", QPDFObjectHandle::newString(link.uri));
+    QPDFObjectHandle annotation = QPDFObjectHandle::newDictionary();
+    annotation.replaceKey("/Type", QPDFObjectHandle::newName("/Annot"));
+    annotation.replaceKey("/Subtype", QPDFObjectHandle::newName("/Link"));
+    annotation.replaceKey("/Rect", QPDFObjectHandle::newArray({number(r.x), number(top - r.bottom()),
+                                                               number(r.right()), number(top - r.y)}));
+    annotation.replaceKey("/Border", QPDFObjectHandle::newArray({QPDFObjectHandle::newInteger(0),
+                                                                 QPDFObjectHandle::newInteger(0),
+                                                                 QPDFObjectHandle::newInteger(0)}));
+    annotation.replaceKey("/A", action);
+    QPDFObjectHandle page_object = page.getObjectHandle();
+    if (!page_object.getKey("/Annots").isArray()) page_object.replaceKey("/Annots", QPDFObjectHandle::newArray());
+    page_object.getKey("/Annots").appendItem(pdf.makeIndirectObject(annotation));
+  }
+  SinkPipeline out(sink);
+  QPDFWriter writer(pdf);
+  writer.setOutputPipeline(&out);
+  writer.setDeterministicID(true);  // not a random one: the same bytes every run
+  writer.write();
+}
+
+// qpdf's exceptions as the std::runtime_error the callers expect.
+template <class Read>
+void with_qpdf(Read&& read, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
+  try {
+    QPDF pdf;
+    pdf.setSuppressWarnings(true);
+    read(pdf);
+    write_with_links(pdf, links, sink);
+  } catch (const QPDFExc& e) {
+    throw std::runtime_error(fmt::format("cannot add the PDF's links: {}", e.what()));
+  }
 }
 
 }  // namespace
@@ -100,8 +166,27 @@ void PdfDocument::begin_page(PageSize size, std::string_view label) {
   ++pages_;
 }
 
+std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const Document& doc,
+                                    std::string_view base) {
+  std::vector<PageLink> links;
+  std::vector<bool> done(doc.sections.size(), false);
+  for (std::size_t i = 0; i < pages.size(); ++i)
+    for (const PlacedBlock& b : pages[i].blocks) {
+      if (b.section < 0 || b.block < 0 || static_cast<std::size_t>(b.section) >= doc.sections.size()) continue;
+      const Section& s = doc.sections[static_cast<std::size_t>(b.section)];
+      const auto block = static_cast<std::size_t>(b.block);
+      if (s.link.empty() || done[static_cast<std::size_t>(b.section)] || block >= s.blocks.size() ||
+          !std::holds_alternative<Heading>(s.blocks[block]))
+        continue;
+      done[static_cast<std::size_t>(b.section)] = true;
+      links.push_back({static_cast<int>(i), b.rect, std::string(base) + s.link});
+    }
+  return links;
+}
+
 void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
-                      const PageStyle& style) {
+                      const PageStyle& style, std::span<const PageLink> links) {
+  for (const PageLink& link : links) links_.push_back({pages_ + link.page, link.rect, link.uri});
   if (outline && !label.empty()) {
     const std::string link = fmt::format("page={}", pages_ + 1);
     cairo_pdf_surface_add_outline(surface_, CAIRO_PDF_OUTLINE_ROOT, std::string(label).c_str(), link.c_str(),
@@ -130,13 +215,24 @@ void PdfDocument::finish() {
 }
 
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
-                         const PdfMetadata& metadata, const PageStyle& style) {
+                         const PdfMetadata& metadata, const PageStyle& style, std::span<const PageLink> links) {
   std::string bytes;
   PdfDocument pdf([&](std::string_view b) { bytes.append(b); }, metadata,
                   pages.empty() ? PageSize::a4() : pages.front().size);
-  pdf.add(pages, label, false, style);
+  pdf.add(pages, label, false, style, links);
   pdf.finish();
-  return bytes;
+  if (links.empty()) return bytes;
+  std::string linked;
+  add_links(bytes, links, [&](std::string_view b) { linked.append(b); });
+  return linked;
+}
+
+void add_links(std::string_view pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
+  with_qpdf([&](QPDF& q) { q.processMemoryFile("PDF", pdf.data(), pdf.size()); }, links, sink);
+}
+
+void add_links_to_file(const std::filesystem::path& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
+  with_qpdf([&](QPDF& q) { q.processFile(pdf.c_str()); }, links, sink);
 }
 
 namespace {

@@ -4,9 +4,11 @@
 // selected, searched and extracted. The bytes are streamed to a sink as cairo produces them;
 // with the creation date fixed (SOURCE_DATE_EPOCH), the same pages give the same bytes.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +34,21 @@ struct PdfMetadata {
 // seconds, nothing otherwise. Throws std::runtime_error for a value that is not a number.
 std::optional<std::int64_t> source_date_epoch();
 
+// A link annotation: a rectangle of one of a document's pages (index in its laid-out pages; in
+// PdfDocument::links(), in the whole PDF) that opens `uri`. The rectangle is in page points from
+// the top left corner, like the layout's.
+struct PageLink {
+  int page = 0;
+  PageRect rect;
+  std::string uri;
+};
+
+// The links of a document's sections (Section::link), each on the sections' heading where it is
+// placed (a section split across pages: on its first part), the uri prefixed with `base` ("../"
+// for a PDF one directory below the set's).
+std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const Document& doc,
+                                    std::string_view base = {});
+
 // A PDF being written. It has its own font map, so that two documents can be drawn on two
 // threads (pango's font maps are not thread-safe); one document is used by one thread at a time.
 class PdfDocument {
@@ -45,11 +62,18 @@ class PdfDocument {
 
   // Appends the pages of one document. `label` names them in a viewer's page list ("<label>
   // 1/3") and, when `outline` is set, in the bookmarks, pointing at the first page.
+  // `links`: annotations on these pages (PageLink::page indexes `pages`); cairo does not write
+  // them (see links()), they are collected.
   void add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
-           const PageStyle& style = {});
+           const PageStyle& style = {}, std::span<const PageLink> links = {});
   // An empty page, to make the next document start on an odd page for duplex printing.
   void add_blank(PageSize size, std::string_view label);
   int pages() const { return pages_; }
+  // The links added so far, PageLink::page counting the PDF's pages from 0. Debian 12's cairo
+  // (1.16.0) writes a link tag (cairo_tag_begin(cr, CAIRO_TAG_LINK, "rect=[…] uri='…'")) as an
+  // annotation whose /StructParent leads to objects it never writes, and qpdf calls the file
+  // damaged; so the finished PDF goes through add_links() instead.
+  const std::vector<PageLink>& links() const { return links_; }
 
   // Writes the trailer; throws std::runtime_error when cairo failed at any point.
   void finish();
@@ -63,11 +87,21 @@ class PdfDocument {
   std::unique_ptr<class CairoCanvas> canvas_;
   int pages_ = 0;
   bool finished_ = false;
+  std::vector<PageLink> links_;
 };
 
-// The pages as one PDF in memory (tests and --split).
+// A finished PDF (its bytes, or a file) again, into `sink`, with one Link annotation per link
+// (PageLink::page counts the PDF's pages from 0; a link past the last page is an error) opening
+// its URI, borderless, over its rectangle. Written by qpdf with an ID derived from the content:
+// the same PDF and links give the same bytes. Throws std::runtime_error when qpdf cannot read or
+// write the file.
+void add_links(std::string_view pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink);
+void add_links_to_file(const std::filesystem::path& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink);
+
+// The pages as one PDF in memory (tests and --split), with their links.
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
-                         const PdfMetadata& metadata, const PageStyle& style = {});
+                         const PdfMetadata& metadata, const PageStyle& style = {},
+                         std::span<const PageLink> links = {});
 
 // A page (or a scene) as a PNG image at `dpi`, for previews and the backends' pixel comparison.
 std::string page_to_png(const LaidOutPage& page, double dpi, const PageStyle& style = {});

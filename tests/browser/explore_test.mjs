@@ -258,9 +258,50 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   check(total > 0 && good === total, `links: explore.html#<sheet id>.<n> opens that exercise (${good}/${total}), linked from index.html`);
 }
 
+// ---- 5. the floor: the same drag on a page whose handler does nothing ----------------------------
+// Chrome delivers pointermove aligned to animation frames, so part of *total* is the wait before
+// any handler runs. A page with an empty handler (the same figure size, the layout flushed like
+// the explorer's) measured the same way gives that part on this machine: what no page can save.
+let floor;
+{
+  const file = path.join(outDir, "floor.html");
+  fs.writeFileSync(file, `<!doctype html><meta charset="utf-8"><title>floor</title>
+<svg id="figure" width="800" height="600" style="touch-action:none"><circle data-handle="A" cx="400" cy="300" r="8"/></svg>
+<script>
+  const timings = [];
+  let dragging = false;
+  const figure = document.getElementById("figure");
+  figure.addEventListener("pointerdown", ev => { dragging = true; figure.setPointerCapture(ev.pointerId); });
+  figure.addEventListener("pointerup", () => { dragging = false; });
+  figure.addEventListener("pointermove", ev => {
+    if (!dragging) return;
+    const t0 = performance.now();
+    figure.getBoundingClientRect();
+    const t2 = performance.now();
+    timings.push({ total: t2 - ev.timeStamp, handler: t2 - t0 });
+  });
+  window.epure = { ready: true, timings };
+</script>`);
+  const { page } = await open(file);
+  const box = await (await page.$("#figure circle")).boundingBox();
+  const x = box.x + box.width / 2, y = box.y + box.height / 2;
+  for (let drag = 0; drag < 40; drag++) {
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let k = 1; k <= 12; k++) await page.mouse.move(x + 3 * k, y - 2 * k);
+    await page.mouse.up();
+  }
+  const t = await page.evaluate(() => window.epure.timings);
+  floor = { moves: t.length, total_median_ms: quantile(t.map(x => x.total), 0.5), total_p95_ms: quantile(t.map(x => x.total), 0.95),
+            handler_median_ms: quantile(t.map(x => x.handler), 0.5), handler_p95_ms: quantile(t.map(x => x.handler), 0.95) };
+  await page.close();
+}
+
 await browser.close();
 const all = Object.values(timings).flatMap(t => [t]);
-fs.writeFileSync(path.join(outDir, "timings.json"), JSON.stringify(timings, null, 2) + "\n");
+fs.writeFileSync(path.join(outDir, "timings.json"), JSON.stringify({ ...timings, empty_handler: floor }, null, 2) + "\n");
+console.log(`     timing floor (an empty handler, the same drags): ${floor.moves} moves, total median ${floor.total_median_ms.toFixed(2)} ms, ` +
+            `p95 ${floor.total_p95_ms.toFixed(2)} ms`);
 for (const [kind, t] of Object.entries(timings))
   console.log(`     timing ${kind}: ${t.moves} moves, total median ${t.total_median_ms.toFixed(2)} ms, p95 ${t.total_p95_ms.toFixed(2)} ms; ` +
               `handler median ${t.handler_median_ms.toFixed(2)} ms, p95 ${t.handler_p95_ms.toFixed(2)} ms; core median ${t.core_median_ms.toFixed(2)} ms, p95 ${t.core_p95_ms.toFixed(2)} ms`);

@@ -15,6 +15,8 @@ if grep -q 'built without the explorer page' "$tmp/err"; then
   "$EPURE" generate --format svg --sheets 1 --quiet --out "$tmp/set" || fail "generate failed"
   [ -e "$tmp/set/explore.html" ] && fail "without the page: generate wrote explore.html"
   grep -q 'explore.html' "$tmp/set/index.html" && fail "without the page: index.html links explore.html"
+  "$EPURE" generate --format svg,pdf --sheets 1 --quiet --out "$tmp/pdfset" || fail "generate (svg,pdf) failed"
+  pdfinfo -url "$tmp/pdfset/keys.pdf" | grep -q 'explore.html' && fail "without the page: keys.pdf links explore.html"
   [ $failed -eq 0 ] && echo "explore (binary without the page): ok"
   exit $failed
 fi
@@ -35,5 +37,10 @@ grep -q 'data:application/octet-stream;base64,' "$page" || fail "no inlined WebA
 id=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheets"][1]["id"])' "$tmp/set/key.json")
 grep -q "href=\"explore.html#$id.1\"" "$tmp/set/index.html" || fail "index.html has no link to explore.html#$id.1"
 grep -q "\"$id\":\[{\"kind\"" "$tmp/set/explore.html" || fail "explore.html does not hold sheet $id"
+# the keys' PDFs link each exercise's heading to explore.html#<sheet id>.<n> (tests/cli/pdf.sh
+# checks every link, --duplex and --split, and qpdf --check); here: a PDF reader (poppler) sees it
+"$EPURE" generate --sheets 2 --seed 5 --quiet --out "$tmp/pdf" || fail "generate (svg,pdf) failed"
+pdfinfo -url "$tmp/pdf/keys.pdf" | grep -q "explore.html#$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheets"][0]["id"])' "$tmp/pdf/key.json").1\$" ||
+  fail "pdfinfo -url: keys.pdf has no link to its first exercise"
 [ $failed -eq 0 ] && echo "explore: ok"
 exit $failed

@@ -6,7 +6,9 @@
 # SOURCE_DATE_EPOCH; the same spec and seed give byte-identical PDFs across runs and job counts;
 # the first page's QR code reads back as the sheet id; a PDF page and the SVG page of the same
 # sheet agree pixel-wise (and two different sheets do not); --split, --paper letter and
-# `epure preview` write what they say.
+# `epure preview` write what they say. With the explorer's page built, the keys' PDFs link each
+# exercise to explore.html#<sheet id>.<n> (a /Link annotation read back with qpdf --json) and
+# still pass qpdf --check.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -18,15 +20,51 @@ export SOURCE_DATE_EPOCH=1700000000  # 2023-11-14 22:13:20 UTC
 
 gen() { "$EPURE" generate --quiet "$@" || fail "generate $*"; }
 gen --format svg,pdf --sheets 6 --seed 11 --out "$tmp/a" --jobs 1
-gen --format pdf --sheets 6 --seed 11 --out "$tmp/b" --jobs 2
-gen --format pdf --sheets 6 --seed 11 --out "$tmp/d" --jobs 2 --duplex
+gen --format svg,pdf --sheets 6 --seed 11 --out "$tmp/b" --jobs 2
+gen --format svg,pdf --sheets 6 --seed 11 --out "$tmp/d" --jobs 2 --duplex
 for f in sheets keys; do
   cmp -s "$tmp/a/$f.pdf" "$tmp/b/$f.pdf" || fail "$f.pdf differs between --jobs 1 and --jobs 2 (or two runs)"
   qpdf --check "$tmp/a/$f.pdf" >/dev/null || fail "qpdf --check $f.pdf"
   qpdf --check "$tmp/d/$f.pdf" >/dev/null || fail "qpdf --check $f.pdf (duplex)"
 done
+
+# Links to the explorer (only when the set has explore.html): one /Link per exercise of keys.pdf,
+# in order, on the page where its heading is, inside the page; none in sheets.pdf. The same
+# with --duplex (blank pages between sheets) and in the --split keys (../explore.html, one level
+# below the set).
+links=$EPURE_SOURCE_DIR/tests/tools/pdf_links.py
+python3 "$links" "$tmp/a/sheets.pdf" | grep -q . && fail "sheets.pdf has links"
+if [ -e "$tmp/a/explore.html" ]; then
+  gen --format svg,pdf --split --sheets 3 --seed 11 --out "$tmp/sl"
+  python3 - "$links" "$tmp" <<'PY' || fail "the keys' links to explore.html"
+import json, subprocess, sys
+links, tmp = sys.argv[1], sys.argv[2]
+def read(pdf):
+    rows = [l.split() for l in subprocess.run(["python3", links, pdf], check=True, capture_output=True, text=True).stdout.splitlines()]
+    return rows
+ok = True
+key = json.load(open(f"{tmp}/a/key.json"))
+want = [f"explore.html#{s['id']}.{e['n']}" for s in key["sheets"] for e in s["exercises"]]
+for name in ("a", "d"):
+    rows = read(f"{tmp}/{name}/keys.pdf")
+    got, pages = [r[1] for r in rows], [int(r[0]) for r in rows]
+    if got != want:
+        print(f"{name}/keys.pdf links {got}, expected {want}"); ok = False
+    if not pages or pages[0] != 1 or pages != sorted(pages) or any(r[-1] != "in" for r in rows):
+        print(f"{name}/keys.pdf links on pages {pages}, rectangles {[r[2:] for r in rows]}"); ok = False
+for s in json.load(open(f"{tmp}/sl/key.json"))["sheets"]:
+    got = [r[1] for r in read(f"{tmp}/sl/keys/{s['id']}.pdf")]
+    if got != [f"../explore.html#{s['id']}.{e['n']}" for e in s["exercises"]]:
+        print(f"keys/{s['id']}.pdf links {got}"); ok = False
+sys.exit(0 if ok else 1)
+PY
+  for f in "$tmp"/sl/keys/*.pdf "$tmp"/sl/sheets/*.pdf; do
+    qpdf --check "$f" >/dev/null || fail "qpdf --check ${f#$tmp/}"
+  done
+else
+  python3 "$links" "$tmp/a/keys.pdf" | grep -q . && fail "keys.pdf has links, and the set no explore.html"
+fi
 ls "$tmp/a" | grep -q '\.tmp$' && fail "a temporary file was left behind"
-[ -e "$tmp/b/sheets" ] && fail "--format pdf wrote SVG directories"
 
 pages() { pdfinfo "$1" | awk '/^Pages:/ {print $2}'; }
 ids=$(python3 -c 'import json,sys; print(" ".join(s["id"] for s in json.load(open(sys.argv[1]))["sheets"]))' "$tmp/a/key.json")
@@ -145,12 +183,14 @@ gen --format pdf --split --sheets 3 --seed 11 --out "$tmp/s"
 [ -e "$tmp/s/sheets.pdf" ] && fail "--split also wrote the class set"
 for id in $(echo $ids | cut -d' ' -f1-3); do
   qpdf --check "$tmp/s/sheets/$id.pdf" >/dev/null || fail "qpdf --check sheets/$id.pdf"
+  qpdf --check "$tmp/s/keys/$id.pdf" >/dev/null || fail "qpdf --check keys/$id.pdf"
   [ "$(pages "$tmp/s/sheets/$id.pdf")" -eq "$(grep -c 'class="page"' "$tmp/a/sheets/$id.svg")" ] || fail "sheets/$id.pdf page count"
 done
 
 # --paper letter.
 gen --format pdf --sheets 1 --paper letter --out "$tmp/l"
 pdfinfo "$tmp/l/sheets.pdf" | grep -q '^Page size: *612 x 792' || fail "--paper letter: $(pdfinfo "$tmp/l/sheets.pdf" | grep size)"
+[ -e "$tmp/l/sheets" ] && fail "--format pdf wrote SVG directories"
 
 # epure preview: the question's and the key's diagrams as PNG.
 "$EPURE" preview ray_circle --branch hit --out "$tmp/p" >/dev/null || fail "preview ray_circle"

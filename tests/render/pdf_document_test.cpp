@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <span>
 #include <vector>
 #include <stdexcept>
 #include <variant>
@@ -61,6 +62,44 @@ TEST_CASE("pdf: pages, blank pages and labels counted as they are added") {
   CHECK(pdf.pages() == 2 * static_cast<int>(pages.size()) + 1);
   pdf.finish();
   CHECK(bytes.find("K7QF-3M2Y") != std::string::npos);  // the outline and the page labels
+}
+
+TEST_CASE("pdf: links, as Link annotations with a URI, counted in the whole PDF's pages") {
+  const Document doc = sample_document(3);
+  const auto pages = layout_document(doc);
+  REQUIRE(pages.size() >= 2);
+  const std::vector<PageLink> links{{0, {50, 60, 200, 14}, "explore.html#K7QF-3M2X.1"},
+                                    {1, {50, 80, 200, 14}, "../explore.html#K7QF-3M2X.2"}};
+  const std::string pdf = pages_to_pdf(pages, doc.sheet_id, metadata(), {}, links);
+  CHECK(pdf.rfind("%PDF-1.5", 0) == 0);
+  CHECK(pdf.find("/Subtype /Link") != std::string::npos);
+  CHECK(pdf.find("/URI (explore.html#K7QF-3M2X.1)") != std::string::npos);
+  CHECK(pdf.find("/URI (../explore.html#K7QF-3M2X.2)") != std::string::npos);
+  // the layout's rectangle (from the top left) in PDF's user space (from the bottom left)
+  CHECK(pdf.find(fmt::format("/Rect [ 50 {:.2f} 250 {:.2f} ]", pages[0].size.height_pt - 74,
+                             pages[0].size.height_pt - 60)) != std::string::npos);
+  CHECK(pdf == pages_to_pdf(pages, doc.sheet_id, metadata(), {}, links));  // no random ID
+  CHECK(pages_to_pdf(pages, doc.sheet_id, metadata()).find("/Link") == std::string::npos);
+
+  // a second document's links count its pages after the first's and a blank one
+  std::string bytes;
+  PdfDocument two([&](std::string_view b) { bytes.append(b); }, metadata());
+  two.add(pages, "K7QF-3M2X", true, {}, std::span(links).first(1));
+  two.add_blank(PageSize::a4(), "K7QF-3M2X");
+  two.add(pages, "K7QF-3M2Y", true, {}, std::span(links).first(1));
+  two.finish();
+  REQUIRE(two.links().size() == 2);
+  CHECK(two.links()[0].page == 0);
+  CHECK(two.links()[1].page == static_cast<int>(pages.size()) + 1);
+  CHECK(bytes.find("/Link") == std::string::npos);  // cairo wrote none
+  std::string linked;
+  add_links(bytes, two.links(), [&](std::string_view b) { linked.append(b); });
+  CHECK(linked.find("/URI (explore.html#K7QF-3M2X.1)") != std::string::npos);
+
+  // a link past the last page is an error, not a file without it
+  const std::vector<PageLink> far{{static_cast<int>(pages.size()), {0, 0, 10, 10}, "x"}};
+  CHECK_THROWS_AS(add_links(pages_to_pdf(pages, doc.sheet_id, metadata()), far, [](std::string_view) {}),
+                  std::runtime_error);
 }
 
 TEST_CASE("pdf: a sink that fails is an exception, not a file that looks whole") {
