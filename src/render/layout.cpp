@@ -190,6 +190,10 @@ struct WrapView {
 // The same width is the same bits: a memo, not a tolerance (the options ask the widths they
 // computed the same way).
 inline std::uint64_t bits(double x) { return portable::bit_cast<std::uint64_t>(x); }
+// Boost's hash_combine: the memo keys below hash several fields.
+inline std::size_t hash_combine(std::size_t h, std::uint64_t v) {
+  return h ^ (std::hash<std::uint64_t>{}(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+}
 inline bool operator==(const WrapView& a, const WrapView& b) {
   return a.text == b.text && bits(a.size) == bits(b.size) && bits(a.width) == bits(b.width);
 }
@@ -202,10 +206,7 @@ struct WrapKey {
 struct WrapHash {
   using is_transparent = void;
   std::size_t operator()(const WrapView& k) const {
-    std::size_t h = std::hash<std::string_view>{}(k.text);
-    h ^= std::hash<std::uint64_t>{}(bits(k.size)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h ^= std::hash<std::uint64_t>{}(bits(k.width)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    return h;
+    return hash_combine(hash_combine(std::hash<std::string_view>{}(k.text), bits(k.size)), bits(k.width));
   }
   std::size_t operator()(const WrapKey& k) const { return (*this)(WrapView(k)); }
 };
@@ -227,8 +228,7 @@ struct RowKey {
 struct RowHash {
   std::size_t operator()(const RowKey& k) const {
     std::size_t h = std::hash<const void*>{}(k.block);
-    for (std::uint64_t v : {k.left, k.width, k.column, std::uint64_t{k.follows} * 2 + k.in_column})
-      h ^= std::hash<std::uint64_t>{}(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    for (std::uint64_t v : {k.left, k.width, k.column, std::uint64_t{k.follows} * 2 + k.in_column}) h = hash_combine(h, v);
     return h;
   }
 };

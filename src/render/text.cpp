@@ -369,12 +369,6 @@ std::vector<std::string> wrap_measured(const MeasuredText& m, double max_width) 
   return lines;
 }
 
-std::vector<std::vector<TextRun>> wrap_measured_text(const MeasuredText& m, double max_width, Weight weight) {
-  std::vector<std::vector<TextRun>> lines;
-  for (const auto& line : wrap_measured(m, max_width)) lines.push_back(parse_rich_text(line, weight));
-  return lines;
-}
-
 std::vector<std::string> wrap_rich_source(std::string_view rich, double font_size, double max_width,
                                           Weight weight) {
   return wrap_measured(measure_text(rich, font_size, weight), max_width);

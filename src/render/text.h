@@ -84,9 +84,7 @@ struct MeasuredText {
   std::vector<std::vector<Word>> pieces;  // the text's pieces between '\n's
 };
 MeasuredText measure_text(std::string_view rich, double font_size, Weight weight = Weight::regular);
-// wrap_rich_source and wrap_rich_text of a measured text: the same lines.
+// wrap_rich_source of a measured text: the same lines.
 std::vector<std::string> wrap_measured(const MeasuredText& text, double max_width);
-std::vector<std::vector<TextRun>> wrap_measured_text(const MeasuredText& text, double max_width,
-                                                     Weight weight = Weight::regular);
 
 }  // namespace epure::render
