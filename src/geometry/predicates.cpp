@@ -57,7 +57,8 @@ DD dd_product(double a, double b) {
 constexpr double kDiscriminantFilter = 0x1p-40;
 
 Certain finish(DD value, double terms, Certain (*slow)(const void*), const void* data) {
-  if (std::abs(value.hi) > kDiscriminantFilter * terms) return {sign_of(value.hi), value.hi};
+  // the low part too: the lengths solve prints (ray_ball.h) take r² − d² to ε² of itself
+  if (std::abs(value.hi) > kDiscriminantFilter * terms) return {sign_of(value.hi), value.hi, value.lo};
   return slow(data);
 }
 

@@ -247,4 +247,130 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   return res;
 }
 
+
+// ---- The lengths `epure solve` prints: t_proj·‖u‖ and t·‖u‖ ------------------------------
+// Both kernels' t_proj divides u·AC by length_u² (the square of the rounded length, the
+// worksheet formula): with ‖u‖ as solve rounds it, the printed length is off by at most 13.5
+// roundings of itself (2D 10: u·AC 1, length_u² 2·2 + 1, the quotient 1, ‖u‖ by hypot 2, the
+// product 1; 3D: 2·2.5 + 1 for length_u², 4.5 for libstdc++'s three-argument hypot), 16 with
+// the second-order terms, 8ε: within 4 ulps of
+// max(S, |·|) while |t_proj| ≲ S/4, not beyond (5 ulps measured). Rather than change those bits
+// (the keys print them, tests/cli/generate.sh), each length the bound cannot vouch for is
+// compared with an accurate value a (double-double; its error e_a, bounded beside it, is below
+// 1/16 ulp but for A next to a tangent point, where the length stays as it is) and
+// kept if it is within 4 ulps of it; otherwise a, rounded, is printed. t has no such bound (its
+// error goes through the half chord): it is compared whenever it is positive. So the printed
+// bits change only where they were beyond 4 ulps.
+using DD = exact::TwoTerm;  // hi + lo, normalised
+inline DD dd_sum(DD a, DD b) {
+  const DD s = exact::two_sum(a.hi, b.hi);
+  return exact::two_sum(s.hi, s.lo + (a.lo + b.lo));
+}
+inline DD dd_product(DD a, DD b) {
+  const DD p = exact::two_product(a.hi, b.hi);
+  return exact::two_sum(p.hi, p.lo + (a.hi * b.lo + a.lo * b.hi));
+}
+inline DD dd_quotient(DD a, DD b) {
+  const double q = a.hi / b.hi;
+  const DD qb = dd_product({q, 0}, b);
+  const double rest = ((a.hi - qb.hi) - qb.lo + a.lo) / b.hi;  // a.hi − qb.hi exact (Sterbenz)
+  return exact::two_sum(q, rest);
+}
+inline DD dd_sqrt(DD a) {
+  if (!(a.hi > 0)) return {0, 0};
+  const double s = std::sqrt(a.hi);
+  return exact::two_sum(s, (std::fma(-s, s, a.hi) + a.lo) / (2 * s));
+}
+inline DD as_dd(const Certain& c) { return {c.value, c.lo}; }
+// ‖u‖², every term positive: to ε² of itself
+inline DD squared_norm(Vec2 u) {
+  exact::CompensatedSum s;
+  return s.add_product(u.x, u.x).add_product(u.y, u.y).two_term();
+}
+inline DD squared_norm(Vec3 u) {
+  exact::CompensatedSum s;
+  return s.add_product(u.x, u.x).add_product(u.y, u.y).add_product(u.z, u.z).two_term();
+}
+
+// The spacing of the doubles at m (m positive, normal), and the bound the contract allows.
+inline double ulp_at(double m) { return times_pow2(1.0, binary_exponent(m) - 52); }
+// 4 ulps of max(S, |x|), the true |x| possibly in the binade below the computed one
+inline double allowed_error(double S, double x) {
+  return 4 * ulp_at(std::max(S, std::abs(x) * (1 - 0x1p-50)));
+}
+
+// w if within 4 ulps of the accurate a (a ± e_a), else a rounded; all in the figure's units.
+inline double checked(double w, DD a, double e_a, double S) {
+  const double allowed = allowed_error(S, a.hi);
+  // the margin covers e_a and the rounding of the difference itself
+  const double off = std::abs((w - a.hi) - a.lo);
+  return off <= allowed - e_a - allowed * 0x1p-10 ? w : a.hi;
+}
+
+// The a-priori bound: 8ε|w| (above) within 4 ulps, less a margin for the second-order terms.
+inline bool vouched(double w, double S) {
+  return 8 * kEpsilon * std::abs(w) <= (4 - 0x1p-6) * ulp_at(std::max(S, std::abs(w)));
+}
+
+// `length` is ‖ray.direction‖ as the caller rounds it; res is either kernel's result for the ray
+// and the ball (C, r). Both kernels' decisions are kept: the root is the one they chose, and a
+// tangent (no half chord) stays one.
+template <class Result, class Ray, class Point>
+LengthsAlong lengths_along(const Ray& ray, Point C, double r, const Result& res, double length) {
+  LengthsAlong out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0};
+  const Point A = ray.origin;
+  const double S = std::max({max_abs(A), max_abs(C), r});
+  // t = 0 is A itself (on the figure), a decision and not a rounding
+  const bool check_t = res.hit && res.hit->t > 0;
+  if (vouched(out.t_proj, S) && !check_t) return out;
+
+  // In the figure's units (2^-e), u near unit size: every product exact or compensated.
+  const int e = binary_exponent(S);
+  const auto u = times_pow2(ray.direction, -binary_exponent(max_abs(ray.direction)));
+  const double rs = times_pow2(r, -e);
+  const double Ss = times_pow2(S, -e);
+  const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
+  // ‖u‖², ‖u‖ and τ = u·AC / ‖u‖ to a few ε² of themselves
+  const DD uu = squared_norm(u);
+  const DD length_u = dd_sqrt(uu);
+  const DD tau = dd_quotient(detail::compensated_dot(as_exact(u), AC), length_u);
+  // u·AC's error is 64ε² of its terms (predicates.h), at most ‖u‖·‖AC‖ ≤ 2√3‖u‖·S
+  const double e_tau = 0x1p-90 * Ss + 0x1p-96 * std::abs(tau.hi);
+  const double w_proj = times_pow2(out.t_proj, -e);
+  out.t_proj = times_pow2(checked(w_proj, tau, e_tau, Ss), e);
+  if (!check_t) return out;
+
+  // PI = √(r² − d²) = √(disc / ‖u‖²), disc within 2^-59 of itself (predicates.cpp); 0 at a
+  // tangent, as the kernel decided it
+  double e_h = 0;
+  DD h{0, 0};
+  if (*res.half_chord > 0) {
+    h = dd_sqrt(dd_quotient(as_dd(certain_discriminant(u, AC, rs)), uu));
+    e_h = 0x1p-58 * h.hi;
+  }
+  // ‖AC‖² − r² = (τ − h)(τ + h), within 64ε² of ‖AC‖² + r² ≤ 13·S² (predicates.h)
+  const DD excess = as_dd(certain_excess(AC, rs));
+  const double e_excess = 0x1p-90 * Ss * Ss;
+  // the root the kernel chose, each in its form without cancellation
+  DD t;
+  double e_t;
+  const DD minus_h{-h.hi, -h.lo};
+  // (at τ = 0 both forms are the same root: the choice is only against cancellation)
+  if (res.inside && tau.hi >= 0) {
+    t = dd_sum(tau, h);  // the exit, beyond P
+    e_t = e_tau + e_h;
+  } else {
+    const DD divisor = res.inside ? dd_sum(tau, minus_h) : dd_sum(tau, h);  // of c's sign
+    t = dd_quotient(excess, divisor);
+    const double d = std::abs(divisor.hi);
+    e_t = (e_excess + std::abs(t.hi) * (e_tau + e_h)) / d;
+    // beyond a quarter ulp, A is within rounding of the tangent point, t a few ulps of S at
+    // most: left as the kernel has it
+    if (!(e_t < 0.25 * ulp_at(Ss))) return out;
+  }
+  e_t += 0x1p-96 * std::abs(t.hi);
+  out.t = times_pow2(checked(times_pow2(out.t, -e), t, e_t, Ss), e);
+  return out;
+}
+
 }  // namespace epure::geo::detail

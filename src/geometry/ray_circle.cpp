@@ -17,6 +17,11 @@ EPURE_FMA_KERNEL RayCircle intersect_exact(const Ray2& ray, const Circle& circle
   return detail::intersect_ball_exact<RayCircle, Hit2>(ray, circle.C, circle.r);
 }
 
+EPURE_FMA_KERNEL LengthsAlong lengths_along(const Ray2& ray, const Circle& circle, const RayCircle& res,
+                                             double length) {
+  return detail::lengths_along(ray, circle.C, circle.r, res, length);
+}
+
 RayCircle intersect_canonical_circle_exact(const Ray2& ray) {
   return intersect_exact(ray, Circle{{0, 0}, 1.0});
 }

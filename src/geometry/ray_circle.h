@@ -50,4 +50,14 @@ RayCircle intersect_canonical_circle(const Ray2& ray);
 RayCircle intersect_exact(const Ray2& ray, const Circle& circle);
 RayCircle intersect_canonical_circle_exact(const Ray2& ray);
 
+// The lengths `epure solve` prints, t_proj·‖u‖ and (with a hit) t·‖u‖, `length` being ‖u‖ as the
+// caller rounds it and res either kernel's result for this ray and circle: res.t_proj·length and
+// hit->t·length themselves wherever they are within 4 ulps of max(S, |·|) (S the largest of
+// |A|, |C| and r), otherwise the accurate value, rounded (ray_ball.h). The decisions are res's.
+struct LengthsAlong {
+  double t_proj;
+  double t;  // 0 without a hit
+};
+LengthsAlong lengths_along(const Ray2& ray, const Circle& circle, const RayCircle& res, double length);
+
 }  // namespace epure::geo

@@ -438,9 +438,14 @@ std::pair<Ray, double> raw_ray(Point A, Vec u) {
   return {Ray{A, direction}, geo::norm(direction)};
 }
 
-template <class Round>
-void write_round(const Round& c, Result& r, double length) {
-  r.number("t_proj", c.t_proj * length).number("d2", c.d2).boolean("inside", c.inside).hit(c.hit, length);
+// The same lengths for the keys and for `epure solve`, whichever kernel decided (geometry's
+// lengths_along: within 4 ulps of the figure's scale).
+template <class Round, class Ray, class Ball>
+void write_round(const Round& c, const Ray& ray, const Ball& ball, Result& r, double length) {
+  const geo::LengthsAlong along = geo::lengths_along(ray, ball, c, length);
+  r.number("t_proj", along.t_proj).number("d2", c.d2).boolean("inside", c.inside);
+  r.boolean("hit", c.hit.has_value());
+  if (c.hit) r.number("t", along.t).point("I", c.hit->I).point("N", c.hit->N);
   if (c.reason) r.string("reason", geo::to_string(*c.reason));
 }
 
@@ -452,7 +457,8 @@ void solve_ray_circle(const Fields& f, Result& r) {
   double radius = f.number("r");
   const auto [ray, length] = raw_ray<geo::Ray2>(A, u);
   const geo::Circle circle{C, radius};
-  write_round(f.exact() ? geo::intersect_exact(ray, circle) : geo::intersect(ray, circle), r, length);
+  write_round(f.exact() ? geo::intersect_exact(ray, circle) : geo::intersect(ray, circle), ray, circle, r,
+              length);
 }
 
 void solve_ray_square(const Fields& f, Result& r) {
@@ -494,7 +500,8 @@ void solve_ray_sphere(const Fields& f, Result& r) {
   double radius = f.number("r");
   const auto [ray, length] = raw_ray<geo::Ray3>(A, u);
   const geo::Sphere sphere{C, radius};
-  write_round(f.exact() ? geo::intersect_exact(ray, sphere) : geo::intersect(ray, sphere), r, length);
+  write_round(f.exact() ? geo::intersect_exact(ray, sphere) : geo::intersect(ray, sphere), ray, sphere, r,
+              length);
 }
 
 void solve_ray_cube(const Fields& f, Result& r) {

@@ -1,0 +1,157 @@
+// Pins lengths_along (geometry/ray_circle.h, ray_3d.h; ray_ball.h): the t_proj and t that
+// `epure solve` and the answer keys print for ray/circle and ray/sphere, each within 4 ulps of
+// max(S, |·|) against an independent quadruple-precision reference (support/ball_reference.h),
+// and the kernels' own bits wherever those are within it. Cases: the switch itself (a value at
+// 1, 2 and 3 ulps either side of the 4-ulp boundary); lines either side of the a-priori bound
+// (|t_proj| near S/2); random far origins, where the kernels' formula reaches 5 ulps (the test
+// requires such lines among its draws, so that it fails if the comparison is removed).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "geometry/ray_3d.h"
+#include "geometry/ray_ball.h"
+#include "geometry/ray_circle.h"
+#include "support/ball_reference.h"
+#include "support/draw.h"
+#include "support/exactly.h"
+#include "support/real.h"
+
+using namespace epure::geo;
+using epure::Rng;
+namespace T = epure::test;
+using T::Real;
+
+namespace {
+
+double ulp_of(double x) { return std::nextafter(std::abs(x), INFINITY) - std::abs(x); }
+
+// |got − expected| in ulps of max(S, |expected|), expected exact
+double ulps_off(double got, Real expected, double S) {
+  const double bound = ulp_of(std::max(S, std::abs(static_cast<double>(expected))));
+  return static_cast<double>(T::abs(Real(got) - expected)) / bound;
+}
+
+struct Printed {
+  double t_proj, t;        // lengths_along's
+  double plain_t_proj, plain_t;  // the kernel's values times length, as printed before
+  bool hit;
+};
+
+// As `epure solve` calls it: the direction rescaled by a power of two, its length by hypot.
+template <class Ray, class Ball>
+Printed print(const Ray& ray, const Ball& ball) {
+  const auto res = intersect_exact(ray, ball);
+  const double length = norm(ray.direction);
+  const LengthsAlong along = lengths_along(ray, ball, res, length);
+  return {along.t_proj, along.t, res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
+          res.hit.has_value()};
+}
+
+}  // namespace
+
+TEST_CASE("geometry/lengths_along: the switch at 4 ulps, from 1 to 3 ulps either side") {
+  // a, an accurate value between two doubles; w that many ulps away from its nearest double
+  for (const double a_hi : {0.75, 1.25, 1.5 - 0x1p-40, 3.0}) {
+    for (const double fraction : {0.0, 0.25, -0.375}) {
+      const double ulp = ulp_of(a_hi);
+      const detail::DD a{a_hi, fraction * ulp};
+      for (int k = -7; k <= 7; ++k) {
+        if (k == 4 || k == -4) continue;  // on the boundary itself, a's fraction decides
+        CAPTURE(a_hi);
+        CAPTURE(fraction);
+        CAPTURE(k);
+        const double w = a_hi + k * ulp;
+        const double S = 0.5;  // below |a|: the bound is 4 ulps of a
+        const double got = detail::checked(w, a, 0x1p-60 * ulp, S);
+        const Real off = T::abs(Real(w) - (Real(a.hi) + Real(a.lo)));
+        const bool within = off <= 4 * Real(ulp);
+        CHECK(T::exactly(got, within ? w : a_hi));
+      }
+    }
+  }
+}
+
+TEST_CASE("geometry/lengths_along: either side of the a-priori bound, within 4 ulps") {
+  // A = (1, 0), C = O, r = 1/4, u = (−1, y): t_proj = 1/√(1 + y²), S = 1. The bound vouches for
+  // |t_proj| ≤ 0.498… (its 8ε within 4 ulps of 1): lines at 1, 2, 3 ulps of t_proj either side.
+  const double boundary = (4 - 0x1p-6) / 8;
+  for (int k = -3; k <= 3; ++k) {
+    CAPTURE(k);
+    const double target = boundary + k * ulp_of(boundary);
+    const double y = std::sqrt(1 / (target * target) - 1);
+    const Ray2 ray{{1, 0}, rescaled(Vec2{-1, y})};
+    const Circle circle{{0, 0}, 0.25};
+    const Printed p = print(ray, circle);
+    const auto e = T::ball_reference(T::real(ray.origin), T::real(ray.direction), T::real(circle.C),
+                                     Real(circle.r));
+    CHECK(ulps_off(p.t_proj, e.t_proj, 1.0) <= 4);
+  }
+}
+
+namespace {
+
+// Far origins: A at up to 1e3 sizes from a figure of any size, aimed at it or anywhere, the
+// direction of any slope. Returns how many plain values exceeded 4 ulps.
+template <class Draw>
+int far_origins(Draw draw, int seeds) {
+  int beyond = 0;
+  for (int seed = 0; seed < seeds; ++seed) {
+    CAPTURE(seed);
+    Rng rng(static_cast<std::uint64_t>(seed), 15);
+    const auto [ray, ball, S] = draw(rng);
+    const Printed p = print(ray, ball);
+    const auto e = T::ball_reference(T::real(ray.origin), T::real(ray.direction), T::real(ball.C),
+                                     Real(ball.r));
+    const double plain = ulps_off(p.plain_t_proj, e.t_proj, S);
+    CHECK(ulps_off(p.t_proj, e.t_proj, S) <= 4);
+    // the kernel's bits are kept wherever they are (with a margin for the reference) within
+    if (plain <= 3.99) CHECK(T::exactly(p.t_proj, p.plain_t_proj));
+    if (plain > 4) ++beyond;
+    if (p.hit && e.t) {
+      const double plain_t = ulps_off(p.plain_t, *e.t, S);
+      CAPTURE(plain_t);
+      CAPTURE(p.t);
+      CAPTURE(p.plain_t);
+      CAPTURE(static_cast<double>(*e.t));
+      CAPTURE(static_cast<double>(e.t_proj));
+      CAPTURE(static_cast<double>(e.half_chord));
+      CAPTURE(e.inside);
+      CAPTURE(S);
+      CHECK(ulps_off(p.t, *e.t, S) <= 4);
+      if (plain_t <= 3.99) CHECK(T::exactly(p.t, p.plain_t));
+      if (plain_t > 4) ++beyond;
+    }
+  }
+  return beyond;
+}
+
+}  // namespace
+
+TEST_CASE("geometry/lengths_along: far origins, circle and sphere, within 4 ulps") {
+  auto circle = [](Rng& rng) {
+    const double size = T::decades(rng, -3, 3);
+    const Point2 C = T::point2(rng, size);
+    const double r = size * T::decades(rng, -2, 0);
+    const Point2 A = T::point2(rng, size * T::decades(rng, 0, 3));
+    const Vec2 toward = (C - A) + to_vec(T::point2(rng, rng.chance(0.5) ? r : 3 * size));
+    const Vec2 u = rescaled(rng.chance(0.2) ? T::direction2(rng) : toward);
+    const double S = std::max({std::abs(A.x), std::abs(A.y), std::abs(C.x), std::abs(C.y), r});
+    return std::tuple{Ray2{A, u}, Circle{C, r}, S};
+  };
+  auto sphere = [](Rng& rng) {
+    const double size = T::decades(rng, -3, 3);
+    const Point3 C = T::point3(rng, size);
+    const double r = size * T::decades(rng, -2, 0);
+    const Point3 A = T::point3(rng, size * T::decades(rng, 0, 3));
+    const Vec3 toward = (C - A) + to_vec(T::point3(rng, rng.chance(0.5) ? r : 3 * size));
+    const Vec3 u = rescaled(rng.chance(0.2) ? T::direction3(rng) : toward);
+    const double S = std::max({std::abs(A.x), std::abs(A.y), std::abs(A.z), std::abs(C.x),
+                               std::abs(C.y), std::abs(C.z), r});
+    return std::tuple{Ray3{A, u}, Sphere{C, r}, S};
+  };
+  // Without the comparison these lines would fail: the draws must hold some beyond 4 ulps.
+  CHECK(far_origins(circle, 100000) > 0);
+  CHECK(far_origins(sphere, 100000) > 0);
+}
