@@ -34,9 +34,9 @@ EPURE_FMA_KERNEL RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere
   return detail::intersect_ball_exact<RaySphere, Hit3>(ray, sphere.C, sphere.r);
 }
 
-EPURE_FMA_KERNEL LengthsAlong lengths_along(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
-                                             double length) {
-  return detail::lengths_along(ray, sphere.C, sphere.r, res, length);
+EPURE_FMA_KERNEL PrintedValues<Vec3> printed_values(const Ray3& ray, const Sphere& sphere,
+                                                    const RaySphere& res, double length) {
+  return detail::printed_values(ray, sphere.C, sphere.r, res, length);
 }
 
 EPURE_FMA_KERNEL RayCube intersect_canonical_cube_exact(const Ray3& ray) {

@@ -39,8 +39,9 @@ RayCube intersect_canonical_cube(const Ray3& ray);
 // Exact for the given doubles, as intersect_exact (ray_circle.h) and
 // intersect_canonical_square_exact (ray_square.h); at an edge or a corner, x then y first.
 RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere);
-// As lengths_along for the circle (ray_circle.h).
-LengthsAlong lengths_along(const Ray3& ray, const Sphere& sphere, const RaySphere& res, double length);
+// As printed_values for the circle (ray_circle.h).
+PrintedValues<Vec3> printed_values(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
+                                   double length);
 RayCube intersect_canonical_cube_exact(const Ray3& ray);
 
 }  // namespace epure::geo

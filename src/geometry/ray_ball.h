@@ -2,6 +2,7 @@
 // The course's ray/circle method written once for the circle (2D) and the sphere (3D): both are
 // "points at distance r from C". Internal to ray_circle.cpp and ray_3d.cpp.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/degenerate.h"
@@ -299,13 +300,22 @@ inline double allowed_error(double S, double x) {
   return 4 * ulp_at(std::max(S, std::abs(x) * (1 - 0x1p-50)));
 }
 
-// w if within 4 ulps of the accurate a (a ± e_a), else a rounded; all in the figure's units.
-inline double checked(double w, DD a, double e_a, double S) {
-  const double allowed = allowed_error(S, a.hi);
+// w if within `allowed` of the accurate a (a ± e_a), else a rounded.
+inline double checked_within(double w, DD a, double e_a, double allowed) {
   // the margin covers e_a and the rounding of the difference itself
   const double off = std::abs((w - a.hi) - a.lo);
   return off <= allowed - e_a - allowed * 0x1p-10 ? w : a.hi;
 }
+// A length: within 4 ulps of max(S, |a|), in the figure's units.
+inline double checked(double w, DD a, double e_a, double S) {
+  return checked_within(w, a, e_a, allowed_error(S, a.hi));
+}
+
+// The coordinates of a vector, to treat both dimensions alike.
+inline std::array<double, 2> parts(Vec2 v) { return {v.x, v.y}; }
+inline std::array<double, 3> parts(Vec3 v) { return {v.x, v.y, v.z}; }
+inline Vec2 from_parts(const std::array<double, 2>& a) { return {a[0], a[1]}; }
+inline Vec3 from_parts(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 // The a-priori bound: 8ε|w| (above) within 4 ulps, less a margin for the second-order terms.
 inline bool vouched(double w, double S) {
@@ -316,8 +326,10 @@ inline bool vouched(double w, double S) {
 // and the ball (C, r). Both kernels' decisions are kept: the root is the one they chose, and a
 // tangent (no half chord) stays one.
 template <class Result, class Ray, class Point>
-LengthsAlong lengths_along(const Ray& ray, Point C, double r, const Result& res, double length) {
-  LengthsAlong out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0};
+auto printed_values(const Ray& ray, Point C, double r, const Result& res, double length) {
+  using Vec = decltype(ray.direction);
+  PrintedValues<Vec> out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
+                         res.hit ? res.hit->N : Vec{}};
   const Point A = ray.origin;
   const double S = std::max({max_abs(A), max_abs(C), r});
   // t = 0 is A itself (on the figure), a decision and not a rounding
@@ -370,6 +382,26 @@ LengthsAlong lengths_along(const Ray& ray, Point C, double r, const Result& res,
   }
   e_t += 0x1p-96 * std::abs(t.hi);
   out.t = times_pow2(checked(times_pow2(out.t, -e), t, e_t, Ss), e);
+
+  // N = (I − C) / ‖I − C‖ with I − C = t·u/‖u‖ − AC (‖I − C‖ = r but where the kernel made a near
+  // tangent a tangent: N stays a unit vector there). Each coordinate of I − C is within
+  // e_t + 2^-96 (|t| + 2S) of itself, N within twice that over r; the bound is 4 ulps of
+  // max(1, S/r) (N·r as a length, compare_jsonl.py).
+  const auto u_parts = parts(u), ac_hi = parts(AC.hi), ac_lo = parts(AC.lo);
+  std::array<DD, u_parts.size()> radial;
+  DD radial2{0, 0};
+  for (std::size_t i = 0; i < u_parts.size(); ++i) {
+    radial[i] = dd_sum(dd_quotient(dd_product(t, {u_parts[i], 0}), length_u), {-ac_hi[i], -ac_lo[i]});
+    radial2 = dd_sum(radial2, dd_product(radial[i], radial[i]));
+  }
+  const DD radial_length = dd_sqrt(radial2);
+  if (!(radial_length.hi > 0.5 * rs)) return out;  // not on the circle: a decision's, not a rounding
+  const double e_n = 2 * (e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss)) / radial_length.hi + 0x1p-100;
+  const double allowed_n = 4 * std::max(0x1p-52, ulp_at(Ss) / rs * (1 - 0x1p-50));
+  auto N = parts(out.N);
+  for (std::size_t i = 0; i < N.size(); ++i)
+    N[i] = checked_within(N[i], dd_quotient(radial[i], radial_length), e_n, allowed_n);
+  out.N = from_parts(N);
   return out;
 }
 

@@ -17,9 +17,9 @@ EPURE_FMA_KERNEL RayCircle intersect_exact(const Ray2& ray, const Circle& circle
   return detail::intersect_ball_exact<RayCircle, Hit2>(ray, circle.C, circle.r);
 }
 
-EPURE_FMA_KERNEL LengthsAlong lengths_along(const Ray2& ray, const Circle& circle, const RayCircle& res,
-                                             double length) {
-  return detail::lengths_along(ray, circle.C, circle.r, res, length);
+EPURE_FMA_KERNEL PrintedValues<Vec2> printed_values(const Ray2& ray, const Circle& circle,
+                                                    const RayCircle& res, double length) {
+  return detail::printed_values(ray, circle.C, circle.r, res, length);
 }
 
 RayCircle intersect_canonical_circle_exact(const Ray2& ray) {

@@ -50,14 +50,18 @@ RayCircle intersect_canonical_circle(const Ray2& ray);
 RayCircle intersect_exact(const Ray2& ray, const Circle& circle);
 RayCircle intersect_canonical_circle_exact(const Ray2& ray);
 
-// The lengths `epure solve` prints, t_proj·‖u‖ and (with a hit) t·‖u‖, `length` being ‖u‖ as the
-// caller rounds it and res either kernel's result for this ray and circle: res.t_proj·length and
-// hit->t·length themselves wherever they are within 4 ulps of max(S, |·|) (S the largest of
-// |A|, |C| and r), otherwise the accurate value, rounded (ray_ball.h). The decisions are res's.
-struct LengthsAlong {
+// The values `epure solve` prints that its kernels can leave beyond 4 ulps: t_proj·‖u‖ and, with
+// a hit, t·‖u‖ and N, `length` being ‖u‖ as the caller rounds it and res either kernel's result
+// for this ray and circle. Each is res's own (res.t_proj·length, hit->t·length, hit->N)
+// wherever it is within 4 ulps of max(S, |·|) (S the largest of |A|, |C| and r; N·r as a
+// length), otherwise the accurate value, rounded (ray_ball.h). The decisions are res's.
+template <class V>
+struct PrintedValues {
   double t_proj;
   double t;  // 0 without a hit
+  V N;       // with a hit
 };
-LengthsAlong lengths_along(const Ray2& ray, const Circle& circle, const RayCircle& res, double length);
+PrintedValues<Vec2> printed_values(const Ray2& ray, const Circle& circle, const RayCircle& res,
+                                   double length);
 
 }  // namespace epure::geo

@@ -438,14 +438,14 @@ std::pair<Ray, double> raw_ray(Point A, Vec u) {
   return {Ray{A, direction}, geo::norm(direction)};
 }
 
-// The same lengths for the keys and for `epure solve`, whichever kernel decided (geometry's
-// lengths_along: within 4 ulps of the figure's scale).
+// The same values for the keys and for `epure solve`, whichever kernel decided (geometry's
+// printed_values: within 4 ulps of the figure's scale).
 template <class Round, class Ray, class Ball>
 void write_round(const Round& c, const Ray& ray, const Ball& ball, Result& r, double length) {
-  const geo::LengthsAlong along = geo::lengths_along(ray, ball, c, length);
-  r.number("t_proj", along.t_proj).number("d2", c.d2).boolean("inside", c.inside);
+  const auto printed = geo::printed_values(ray, ball, c, length);
+  r.number("t_proj", printed.t_proj).number("d2", c.d2).boolean("inside", c.inside);
   r.boolean("hit", c.hit.has_value());
-  if (c.hit) r.number("t", along.t).point("I", c.hit->I).point("N", c.hit->N);
+  if (c.hit) r.number("t", printed.t).point("I", c.hit->I).point("N", printed.N);
   if (c.reason) r.string("reason", geo::to_string(*c.reason));
 }
 

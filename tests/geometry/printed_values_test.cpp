@@ -1,13 +1,15 @@
-// Pins lengths_along (geometry/ray_circle.h, ray_3d.h; ray_ball.h): the t_proj and t that
+// Pins printed_values (geometry/ray_circle.h, ray_3d.h; ray_ball.h): the t_proj, t and N that
 // `epure solve` and the answer keys print for ray/circle and ray/sphere, each within 4 ulps of
 // max(S, |·|) against an independent quadruple-precision reference (support/ball_reference.h),
 // and the kernels' own bits wherever those are within it. Cases: the switch itself (a value at
 // 1, 2 and 3 ulps either side of the 4-ulp boundary); lines either side of the a-priori bound
 // (|t_proj| near S/2); random far origins, where the kernels' formula reaches 5 ulps (the test
-// requires such lines among its draws, so that it fails if the comparison is removed).
+// requires such lines among its draws, so that it fails if the comparison is removed); N on
+// the same draws.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <array>
 #include <tuple>
 
 #include "geometry/ray_3d.h"
@@ -25,6 +27,9 @@ using T::Real;
 
 namespace {
 
+std::array<Real, 2> parts(T::R2 v) { return {v.x, v.y}; }
+std::array<Real, 3> parts(T::R3 v) { return {v.x, v.y, v.z}; }
+
 double ulp_of(double x) { return std::nextafter(std::abs(x), INFINITY) - std::abs(x); }
 
 // |got − expected| in ulps of max(S, |expected|), expected exact
@@ -33,25 +38,28 @@ double ulps_off(double got, Real expected, double S) {
   return static_cast<double>(T::abs(Real(got) - expected)) / bound;
 }
 
+template <class V>
 struct Printed {
-  double t_proj, t;        // lengths_along's
+  double t_proj, t;              // printed_values'
   double plain_t_proj, plain_t;  // the kernel's values times length, as printed before
   bool hit;
+  V N, plain_N;
 };
 
 // As `epure solve` calls it: the direction rescaled by a power of two, its length by hypot.
 template <class Ray, class Ball>
-Printed print(const Ray& ray, const Ball& ball) {
+auto print(const Ray& ray, const Ball& ball) {
   const auto res = intersect_exact(ray, ball);
   const double length = norm(ray.direction);
-  const LengthsAlong along = lengths_along(ray, ball, res, length);
-  return {along.t_proj, along.t, res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
-          res.hit.has_value()};
+  const auto along = printed_values(ray, ball, res, length);
+  using V = decltype(ray.direction);
+  return Printed<V>{along.t_proj, along.t, res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
+                    res.hit.has_value(), along.N, res.hit ? res.hit->N : V{}};
 }
 
 }  // namespace
 
-TEST_CASE("geometry/lengths_along: the switch at 4 ulps, from 1 to 3 ulps either side") {
+TEST_CASE("geometry/printed_values: the switch at 4 ulps, from 1 to 3 ulps either side") {
   // a, an accurate value between two doubles; w that many ulps away from its nearest double
   for (const double a_hi : {0.75, 1.25, 1.5 - 0x1p-40, 3.0}) {
     for (const double fraction : {0.0, 0.25, -0.375}) {
@@ -73,7 +81,7 @@ TEST_CASE("geometry/lengths_along: the switch at 4 ulps, from 1 to 3 ulps either
   }
 }
 
-TEST_CASE("geometry/lengths_along: either side of the a-priori bound, within 4 ulps") {
+TEST_CASE("geometry/printed_values: either side of the a-priori bound, within 4 ulps") {
   // A = (1, 0), C = O, r = 1/4, u = (−1, y): t_proj = 1/√(1 + y²), S = 1. The bound vouches for
   // |t_proj| ≤ 0.498… (its 8ε within 4 ulps of 1): lines at 1, 2, 3 ulps of t_proj either side.
   const double boundary = (4 - 0x1p-6) / 8;
@@ -83,7 +91,7 @@ TEST_CASE("geometry/lengths_along: either side of the a-priori bound, within 4 u
     const double y = std::sqrt(1 / (target * target) - 1);
     const Ray2 ray{{1, 0}, rescaled(Vec2{-1, y})};
     const Circle circle{{0, 0}, 0.25};
-    const Printed p = print(ray, circle);
+    const auto p = print(ray, circle);
     const auto e = T::ball_reference(T::real(ray.origin), T::real(ray.direction), T::real(circle.C),
                                      Real(circle.r));
     CHECK(ulps_off(p.t_proj, e.t_proj, 1.0) <= 4);
@@ -101,7 +109,7 @@ int far_origins(Draw draw, int seeds) {
     CAPTURE(seed);
     Rng rng(static_cast<std::uint64_t>(seed), 15);
     const auto [ray, ball, S] = draw(rng);
-    const Printed p = print(ray, ball);
+    const auto p = print(ray, ball);
     const auto e = T::ball_reference(T::real(ray.origin), T::real(ray.direction), T::real(ball.C),
                                      Real(ball.r));
     const double plain = ulps_off(p.plain_t_proj, e.t_proj, S);
@@ -122,6 +130,17 @@ int far_origins(Draw draw, int seeds) {
       CHECK(ulps_off(p.t, *e.t, S) <= 4);
       if (plain_t <= 3.99) CHECK(T::exactly(p.t, p.plain_t));
       if (plain_t > 4) ++beyond;
+      // N·r as a length: within 4 ulps of max(1, S/r)
+      const double n_unit = std::max(ulp_of(1.0), ulp_of(S) / ball.r);
+      const auto n = detail::parts(p.N), plain_n = detail::parts(p.plain_N);
+      const auto ref = parts(e.N);
+      for (std::size_t i = 0; i < n.size(); ++i) {
+        const double off = static_cast<double>(T::abs(Real(n[i]) - ref[i])) / n_unit;
+        const double plain_off = static_cast<double>(T::abs(Real(plain_n[i]) - ref[i])) / n_unit;
+        CHECK(off <= 4);
+        if (plain_off <= 3.99) CHECK(T::exactly(n[i], plain_n[i]));
+        if (plain_off > 4) ++beyond;
+      }
     }
   }
   return beyond;
@@ -129,7 +148,7 @@ int far_origins(Draw draw, int seeds) {
 
 }  // namespace
 
-TEST_CASE("geometry/lengths_along: far origins, circle and sphere, within 4 ulps") {
+TEST_CASE("geometry/printed_values: far origins, circle and sphere, within 4 ulps") {
   auto circle = [](Rng& rng) {
     const double size = T::decades(rng, -3, 3);
     const Point2 C = T::point2(rng, size);
