@@ -165,7 +165,8 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   const double length_u = plain_norm(u);
   // ‖u‖² as the worksheet kernel takes it (length_u², the square root's rounding twice): a
   // key's solution is `epure solve`'s to the bit on every worksheet instance (tests/cli/
-  // generate.sh). It leaves t_proj of a far origin up to 5 ulps off (bench/README.md).
+  // generate.sh). It leaves t_proj of a far origin up to 5 ulps off: printed_values (below)
+  // replaces such values, and only those.
   const double uu = length_u * length_u;
   auto to_world_t = [&](double t) { return times_pow2(t, e - f); };
 
