@@ -47,9 +47,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 "a JSON line gave no row or two");
   } else {
     fuzz::check(info.format == "json", "an unknown format", info.format);
-    // brackets, counted in and out of strings alike: at least the depth the text nests
+    // brackets outside strings: a closer inside a string ("}}}") must not hide the depth of
+    // the arrays after it, which the reader does count
     int depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
     for (char c : text) {
+      if (in_string) {
+        if (escaped) escaped = false;
+        else if (c == '\\') escaped = true;
+        else if (c == '"') in_string = false;
+        continue;
+      }
+      if (c == '"') in_string = true;
       if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
       if (c == ']' || c == '}') --depth;
     }
