@@ -146,29 +146,32 @@ int far_origins(Draw draw, int seeds) {
   return beyond;
 }
 
+// A ray from afar toward a ball (or a random direction), in 2D or 3D: the ball's size over six
+// decades, its radius up to two decades smaller, the origin up to three decades away; with S,
+// the figure's scale (its largest coordinate or radius).
+template <class Ray, class Ball, class PointAt, class Direction, class Largest>
+auto far_origin(Rng& rng, PointAt point, Direction direction, Largest largest) {
+  const double size = T::decades(rng, -3, 3);
+  const auto C = point(rng, size);
+  const double r = size * T::decades(rng, -2, 0);
+  const auto A = point(rng, size * T::decades(rng, 0, 3));
+  const auto toward = (C - A) + to_vec(point(rng, rng.chance(0.5) ? r : 3 * size));
+  const auto u = rescaled(rng.chance(0.2) ? direction(rng) : toward);
+  const double S = std::max({largest(A), largest(C), r});
+  return std::tuple{Ray{A, u}, Ball{C, r}, S};
+}
+
 }  // namespace
 
 TEST_CASE("geometry/printed_values: far origins, circle and sphere, within 4 ulps") {
   auto circle = [](Rng& rng) {
-    const double size = T::decades(rng, -3, 3);
-    const Point2 C = T::point2(rng, size);
-    const double r = size * T::decades(rng, -2, 0);
-    const Point2 A = T::point2(rng, size * T::decades(rng, 0, 3));
-    const Vec2 toward = (C - A) + to_vec(T::point2(rng, rng.chance(0.5) ? r : 3 * size));
-    const Vec2 u = rescaled(rng.chance(0.2) ? T::direction2(rng) : toward);
-    const double S = std::max({std::abs(A.x), std::abs(A.y), std::abs(C.x), std::abs(C.y), r});
-    return std::tuple{Ray2{A, u}, Circle{C, r}, S};
+    return far_origin<Ray2, Circle>(rng, T::point2, T::direction2,
+                                    [](Point2 p) { return std::max(std::abs(p.x), std::abs(p.y)); });
   };
   auto sphere = [](Rng& rng) {
-    const double size = T::decades(rng, -3, 3);
-    const Point3 C = T::point3(rng, size);
-    const double r = size * T::decades(rng, -2, 0);
-    const Point3 A = T::point3(rng, size * T::decades(rng, 0, 3));
-    const Vec3 toward = (C - A) + to_vec(T::point3(rng, rng.chance(0.5) ? r : 3 * size));
-    const Vec3 u = rescaled(rng.chance(0.2) ? T::direction3(rng) : toward);
-    const double S = std::max({std::abs(A.x), std::abs(A.y), std::abs(A.z), std::abs(C.x),
-                               std::abs(C.y), std::abs(C.z), r});
-    return std::tuple{Ray3{A, u}, Sphere{C, r}, S};
+    return far_origin<Ray3, Sphere>(rng, T::point3, T::direction3, [](Point3 p) {
+      return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    });
   };
   // Without the comparison these lines would fail: the draws must hold some beyond 4 ulps.
   CHECK(far_origins(circle, 100000) > 0);
