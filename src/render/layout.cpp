@@ -50,6 +50,11 @@ constexpr double kSidePromptShare = 0.3;  // of that column, at most, for the fi
 // A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
 // much indented, when that wraps it less (a point or a value is then on one line).
 constexpr double kStackIndent = 12;
+// A page but a document's last is never left less than this full by a choice of flow().
+constexpr double kMinPageFill = 0.5;
+// flow() tries every combination of the sections' fallbacks: 2^n trials of the atoms' heights
+// alone. A sheet has seven sections; a document with more keeps the page-by-page choice.
+constexpr std::size_t kMaxFallbackChoices = 10;
 // At most this many paragraphs before a figure are tried in the column beside it.
 constexpr std::size_t kMaxSideParagraphs = 8;
 // Wider than any line a page holds: what wrapping gives for this width is the text's own lines
@@ -993,6 +998,14 @@ class Builder {
   // ---- placing: atoms → pages ------------------------------------------------------------
 
   void new_page() {
+    if (dry_) {
+      // A trial only counts pages and how full each one ends.
+      if (dry_pages_ > 0) dry_fills_.push_back((y_ - top_) / (bottom_ - top_));
+      ++dry_pages_;
+      y_ = top_;
+      empty_ = true;
+      return;
+    }
     LaidOutPage page;
     page.number = static_cast<int>(pages_.size()) + 1;
     page.size = doc_.page;
@@ -1010,7 +1023,78 @@ class Builder {
 
   bool fits(double h) const { return y_ + h <= bottom_ + kFitSlack; }
 
+  // The atoms on pages. A section whose statement was set beside its figure and whose opening
+  // does not fit in what is left of a page has two ways to go (see open_section): whole to the
+  // next page, or laid out again with the statement above the figure, which may end this page.
+  // Taking the second every time, as one page alone would choose, can leave a sheet one page
+  // longer than it needs: a statement ends a page whose next figure does not fit. So every
+  // combination of these choices is tried on the atoms' heights alone (a sheet has at most
+  // seven such sections), and the one that gives the fewest pages, none of them but the last
+  // less than half full, is set; on a tie, the page-by-page choice.
   void flow() {
+    choose_fallbacks();
+    run_flow();
+  }
+
+  // The sections with a fallback, each a bit of a choice mask (set: take the fallback when its
+  // opening does not fit), and the fallback's atoms, built once in full.
+  void choose_fallbacks() {
+    fallback_mask_ = ~std::uint32_t{0};
+    if (fallback_.empty() || fallback_.size() > kMaxFallbackChoices) return;
+    std::uint32_t bit = 0;
+    for (const auto& [si, start] : fallback_) {
+      fallback_bit_[si] = bit++;
+      fallback_atoms_.emplace(si, fallback(si, start));
+    }
+    const std::uint32_t all = (std::uint32_t{1} << bit) - 1;
+    std::size_t best_pages = trial_pages(all);
+    std::uint32_t best = all;
+    for (std::uint32_t mask = all; mask-- > 0;) {
+      const std::size_t pages = trial_pages(mask);
+      const bool filled = std::all_of(dry_fills_.begin(), dry_fills_.end(), [](double f) { return f >= kMinPageFill; });
+      if (pages < best_pages && filled) {
+        best_pages = pages;
+        best = mask;
+      }
+    }
+    fallback_mask_ = best;
+  }
+
+  // How many pages the atoms take with this choice mask (dry_fills_: how full each page but the
+  // last ends), placed from copies that keep only their geometry.
+  std::size_t trial_pages(std::uint32_t mask) {
+    std::vector<Atom> copies;
+    copies.reserve(atoms_.size());
+    for (const Atom& a : atoms_) copies.push_back(geometry(a));
+    std::swap(atoms_, copies);
+    fallback_mask_ = mask;
+    dry_ = true;
+    dry_pages_ = 0;
+    dry_fills_.clear();
+    run_flow();
+    dry_ = false;
+    std::swap(atoms_, copies);
+    return dry_pages_;
+  }
+
+  // An atom without its content: what placing it needs (a figure's presence, for open_section).
+  static Atom geometry(const Atom& a) {
+    Atom g;
+    g.height = a.height;
+    g.space_before = a.space_before;
+    g.break_before = a.break_before;
+    g.section_start = a.section_start;
+    g.head_atoms = a.head_atoms;
+    g.section = a.section;
+    g.block = a.block;
+    g.wrapped = a.wrapped;
+    g.follows_heading = a.follows_heading;
+    g.content.keep_texts = false;
+    g.content.figures = a.content.figures;
+    return g;
+  }
+
+  void run_flow() {
     new_page();
     std::size_t group_end = 0;
     for (std::size_t i = 0; i < atoms_.size(); ++i) {
@@ -1049,9 +1133,17 @@ class Builder {
     if (auto alt = fallback_.find(atoms_[i].section); alt != fallback_.end()) {
       const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
       std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
-      if (!fits(space + span(i, head_end)) && !little_left) {
-        std::vector<Atom> other = fallback(alt->first, alt->second);
-        fallback_.erase(alt);
+      const auto bit = fallback_bit_.find(alt->first);
+      const bool chosen = bit == fallback_bit_.end() || ((fallback_mask_ >> bit->second) & 1) != 0;
+      if (!fits(space + span(i, head_end)) && !little_left && chosen) {
+        std::vector<Atom> other;
+        if (auto built = fallback_atoms_.find(alt->first); built == fallback_atoms_.end()) {
+          other = fallback(alt->first, alt->second);
+        } else if (dry_) {
+          for (const Atom& a : built->second) other.push_back(geometry(a));
+        } else {
+          other = std::move(built->second);
+        }
         atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
         const std::size_t n = other.size();
         atoms_.insert(atoms_.begin() + static_cast<std::ptrdiff_t>(i), std::make_move_iterator(other.begin()),
@@ -1079,8 +1171,13 @@ class Builder {
   }
 
   void place(Atom& atom) {
-    LaidOutPage& page = pages_.back();
     const double y = y_ + (empty_ ? 0 : atom.space_before);
+    if (dry_) {
+      y_ = y + atom.height;
+      empty_ = false;
+      return;
+    }
+    LaidOutPage& page = pages_.back();
     atom.content.move_into(page, y);
     const PageRect rect{left_, y, width_, atom.height};
     auto& blocks = page.blocks;
@@ -1154,6 +1251,12 @@ class Builder {
   std::vector<Mark> marks_;  // the state before each block of the section being measured
   bool allow_side_ = true, side_used_ = false;
   std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
+  std::map<int, std::uint32_t> fallback_bit_;    // their bit in a choice mask
+  std::map<int, std::vector<Atom>> fallback_atoms_;  // their fallback, built once
+  std::uint32_t fallback_mask_ = ~std::uint32_t{0};  // set: the fallback is taken (see flow)
+  bool dry_ = false;                // placing copies only to count pages (see trial_pages)
+  std::size_t dry_pages_ = 0;
+  std::vector<double> dry_fills_;   // a trial's pages but the last: the share of the text height used
   std::unordered_map<WrapKey, Wrapped, WrapHash, std::equal_to<>> wrapped_;
   std::unordered_map<WrapKey, std::vector<std::string>, WrapHash, std::equal_to<>> sources_;
   std::unordered_map<WrapKey, MeasuredText, WrapHash, std::equal_to<>> measured_;

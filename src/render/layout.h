@@ -20,8 +20,10 @@
 // the width its kind asks for. A statement too long for that column may flow around the figure:
 // its first lines across the page, the rest in the column above the fields. Such a section, when
 // its opening does not fit in what is left of a page and would leave more than a tenth of it
-// empty, is set with its paragraphs above the figure instead, so that the page may end between
-// them.
+// empty, may be set with its paragraphs above the figure instead, so that the page may end
+// between them: every combination of these choices over the document is tried on the atoms'
+// heights, and the one with the fewest pages (no page but the last less than half full) is set,
+// on a tie the one that takes the paragraphs-above layout each time.
 #include <string>
 #include <vector>
 
@@ -127,8 +129,8 @@ struct LayoutStyle {
   double body_size = 10;
   double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript
   double heading1_size = 12.5, heading2_size = 11;
-  double heading1_space = 12, heading2_space = 9;  // above a heading (dropped at a page top)
-  double block_space = 6;           // between blocks
+  double heading1_space = 10, heading2_space = 8;  // above a heading (dropped at a page top)
+  double block_space = 5;           // between blocks
   double shade_padding = 5;         // around an emphasised paragraph's text
 
   double id_size = 6.5;             // question ids beside fields
@@ -138,7 +140,7 @@ struct LayoutStyle {
   double point3_box_width = 54;
   double tick_size = 9;
   double tick_row_height = 17;
-  double row_space = 5;             // between consecutive field rows
+  double row_space = 4;             // between consecutive field rows
   double prompt_column_max = 0.4;   // × text width, for the shared prompt column of fields
 
   double key_prompt_column_min = 56;  // so that an answer never hugs a one-letter prompt
@@ -148,7 +150,7 @@ struct LayoutStyle {
   // A figure never takes more than this share of a page's text height, so that the paragraph
   // it belongs to still fits above it.
   double figure_max_height = 0.55;
-  double figure_space = 8;         // above and below a figure (a frame needs more air than text)
+  double figure_space = 6;         // above and below a figure (a frame needs more air than text)
   // A figure followed by answer fields (or a key's answers) gets them in a column on its right
   // when they fit there; the figure is then narrowed, but never below this share of the text width.
   double figure_min_share = 0.42;
