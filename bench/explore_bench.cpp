@@ -1,5 +1,5 @@
 // The explorer's core natively, per view: the time of one pointer move as the page makes it
-// (explorer.h's drag, then view with the frame held still), over a scripted drag of every handle
+// (explorer.h's drag, then view_parts with the frame held still), over a scripted drag of every handle
 // (the browser test's path: 12 moves of (3, −2) figure units, from each handle). Prints the
 // median and the 95th percentile per view, in microseconds. Not a test: a measure of the core's
 // part of a frame (README, explore-timings), to profile natively (perf record build/explore_bench).
@@ -32,11 +32,11 @@ int main(int argc, char** argv) {
         for (int i = 1; i <= 12; ++i) {
           const auto t0 = std::chrono::steady_clock::now();
           const std::string next = ex::drag(instance, h["id"].get<std::string>(), x + 3 * i, y - 2 * i, frame, false);
-          const std::string shown = next != instance ? ex::view(next, "en", 1, frame) : std::string();
+          const ex::ViewParts shown = next != instance ? ex::view_parts(next, "en", 1, frame) : ex::ViewParts{};
           const auto t1 = std::chrono::steady_clock::now();
           us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
-          if (shown.empty()) continue;
-          const json v = json::parse(shown);
+          if (shown.head.empty()) continue;
+          const json v = json::parse(shown.head);
           if (!v.contains("error")) instance = v["instance"].get<std::string>();
         }
       }

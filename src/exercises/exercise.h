@@ -87,6 +87,10 @@ struct ExerciseContext {
   // Whether to build the sheet's section too; false for the explorer's views, which show the key
   // only (ExerciseInstance::sheet is then left empty).
   bool sheet = true;
+  // Whether to derive the questions' tolerances (the method's Dual run: how far each answer moves
+  // when a student rounds an intermediate); false for the explorer's views, which mark nothing
+  // (ExerciseInstance::questions then carry a zero tolerance; the key's text never shows one).
+  bool tolerances = true;
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet

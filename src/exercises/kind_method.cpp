@@ -199,13 +199,14 @@ void check_against_core(std::string_view kind, const method::Run<method::Exact>&
 }
 
 Questions make_questions(const ExerciseContext& ctx, std::span<const method::QuestionDecl> decls,
-                         const method::Run<method::Exact>& run, const method::Run<method::Dual>& dual,
+                         const method::Run<method::Exact>& run, const method::Run<method::Dual>* dual,
                          const CoreAnswers& core) {
-  // the tolerance of each numeric answer coordinate, by field
-  const std::vector<double> tol = method::tolerances(dual);
+  // the tolerance of each numeric answer coordinate, by field (zero without the dual run)
+  const std::vector<double> tol = dual ? method::tolerances(*dual) : std::vector<double>{};
   auto tolerance_of = [&](std::string_view field) -> std::pair<double, double> {
+    if (!dual) return {0.0, 0.0};
     std::size_t k = 0;
-    for (const auto& a : dual.answers()) {
+    for (const auto& a : dual->answers()) {
       if (a.id == field) return {tol.at(k), a.type == AnswerType::point ? tol.at(k + 1) : 0.0};
       k += a.type == AnswerType::point ? 2 : a.type == AnswerType::number ? 1 : 0;
     }

@@ -111,7 +111,7 @@ namespace detail {
 // The checks and the questions, shared by every kind (kind_method.cpp).
 void check_against_core(std::string_view kind, const method::Run<method::Exact>& run, const CoreAnswers& core);
 Questions make_questions(const ExerciseContext& ctx, std::span<const method::QuestionDecl> decls,
-                         const method::Run<method::Exact>& run, const method::Run<method::Dual>& dual,
+                         const method::Run<method::Exact>& run, const method::Run<method::Dual>* dual,
                          const CoreAnswers& core);
 std::vector<SheetField> sheet_fields_of(std::span<const method::QuestionDecl> decls);
 std::vector<std::string> fields_of(std::span<const method::QuestionDecl> decls);
@@ -178,15 +178,19 @@ class MethodKind : public ExerciseKind {
     return exact;
   }
 
-  // Runs the method on the key's data: exact and dual evaluations, checked against the core.
+  // Runs the method on the key's data: exact and dual evaluations (the dual one only for the
+  // tolerances, when the context asks for them), checked against the core.
   static KeySolution solve(const Data& d, const ExerciseContext& ctx) {
     method::Run<method::Exact> exact({Kind::kQuestions, ctx.decimals});
     Kind::method(exact, d);
-    method::Run<method::Dual> dual({Kind::kQuestions, ctx.decimals});
-    Kind::method(dual, d);
+    std::optional<method::Run<method::Dual>> dual;
+    if (ctx.tolerances) {
+      dual.emplace(method::RunOptions{Kind::kQuestions, ctx.decimals});
+      Kind::method(*dual, d);
+    }
     const CoreAnswers core = Kind::core(d);
     detail::check_against_core(Kind::kName, exact, core);
-    Questions q = detail::make_questions(ctx, Kind::kQuestions, exact, dual, core);
+    Questions q = detail::make_questions(ctx, Kind::kQuestions, exact, dual ? &*dual : nullptr, core);
     return KeySolution{std::move(exact), core, std::move(q)};
   }
 

@@ -425,7 +425,7 @@ std::string with_handles(std::string svg, const std::vector<Handle>& handles, co
         "role=\"slider\" aria-label=\"{0}\"/>",
         h.id, p.x, p.y);
   }
-  g += "</g>";
+  g += "</g>\n";  // one element per line, as the SVG writer writes them (the page patches by line)
   const auto end = svg.rfind("</svg>");
   if (end == std::string::npos) throw std::logic_error("explore: the figure is not an SVG document");
   svg.insert(end, g);
@@ -471,14 +471,15 @@ std::string starting_instance(std::string_view kind_name) {
   return kind->make(rng, ctx).instance;
 }
 
-std::string view(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
+ViewParts view_parts(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
   try {
     const json instance = parse(instance_text);
     const ExerciseKind& kind = kind_of(instance);
     const ExerciseSpec spec = exercise_spec(kind.name());
     const Texts& texts = Texts::builtin(language);
     ExerciseContext ctx{n, spec, texts, NumberStyle::for_language(language), 2, ""};
-    ctx.sheet = false;  // the view shows the key only
+    ctx.sheet = false;        // the view shows the key only,
+    ctx.tolerances = false;   // and marks nothing
     ExerciseInstance key = kind.key_of(instance, ctx);
     KeyView kv = key_view(key.key);
     if (kv.figure == nullptr || kv.figure->panels.empty()) throw std::logic_error("explore: the key has no figure");
@@ -493,28 +494,39 @@ std::string view(std::string_view instance_text, std::string_view language, int 
       const P2 p = map.to_page(h.at);
       hs.push_back({{"id", h.id}, {"x", p.x}, {"y", p.y}});
     }
-    // Written by hand around the two long texts (the figure, the steps), which go through a
-    // plain escaper: nlohmann's validating one was a quarter of the view's time.
-    std::string out = "{\"kind\":";
-    append_json_string(out, kind.name());
-    out += ",\"instance\":";
-    append_json_string(out, key.instance);
-    out += ",\"solution\":";
-    out += key.solution;  // JSON already: the solve output
-    out += ",\"frame\":";
-    out += frame_json(frame).dump();
-    out += ",\"handles\":";
-    out += hs.dump();
-    out += in_space(instance) ? ",\"space\":true" : ",\"space\":false";
-    out += ",\"svg\":";
-    append_json_string(out, with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame));
-    out += ",\"steps\":";
-    append_json_string(out, kv.steps);
-    out += '}';
+    ViewParts out;
+    out.head = "{\"kind\":";
+    append_json_string(out.head, kind.name());
+    out.head += ",\"instance\":";
+    append_json_string(out.head, key.instance);
+    out.head += ",\"solution\":";
+    out.head += key.solution;  // JSON already: the solve output
+    out.head += ",\"frame\":";
+    out.head += frame_json(frame).dump();
+    out.head += ",\"handles\":";
+    out.head += hs.dump();
+    out.head += in_space(instance) ? ",\"space\":true}" : ",\"space\":false}";
+    out.svg = with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame);
+    out.steps = std::move(kv.steps);
     return out;
   } catch (const std::exception& e) {
-    return json{{"error", e.what()}}.dump();
+    return {json{{"error", e.what()}}.dump(), {}, {}};
   }
+}
+
+std::string view(std::string_view instance, std::string_view language, int n, std::string_view frozen) {
+  ViewParts parts = view_parts(instance, language, n, frozen);
+  if (parts.svg.empty()) return std::move(parts.head);
+  // the two long texts go through a plain escaper (nlohmann's validating one was a quarter of
+  // the view's time)
+  std::string out = std::move(parts.head);
+  out.pop_back();  // the closing brace
+  out += ",\"svg\":";
+  append_json_string(out, parts.svg);
+  out += ",\"steps\":";
+  append_json_string(out, parts.steps);
+  out += '}';
+  return out;
 }
 
 std::string drag(std::string_view instance_text, std::string_view handle, double x, double y,

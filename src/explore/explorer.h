@@ -45,6 +45,16 @@ std::string starting_instance(std::string_view kind);
 std::string view(std::string_view instance, std::string_view language, int n = 1,
                  std::string_view frozen = {});
 
+// The same view in three parts, for the page: `head` is view's JSON object without "svg" and
+// "steps" (with "error" alone when the data cannot be solved: then svg and steps are empty),
+// `svg` and `steps` the two long texts as they are, so that no figure is escaped into JSON and
+// parsed out of it again. view() is head with the two texts put back in.
+struct ViewParts {
+  std::string head, svg, steps;
+};
+ViewParts view_parts(std::string_view instance, std::string_view language, int n = 1,
+                     std::string_view frozen = {});
+
 // The instance with handle `handle` moved to the figure point (x, y) (SVG user units of the
 // view's figure, `frame` as view returned it). With `snap`, points land on the integer grid,
 // sizes on whole numbers and angles on multiples of 15°; otherwise on hundredths. A move that

@@ -52,7 +52,10 @@ list(SORT wasm_sources)
 # default JavaScript-based ones, every call that may throw inside a try goes out through a
 # JavaScript trampoline (invoke_*), and the core is full of them.
 set(wasm_eh -fwasm-exceptions)
-set(wasm_flags -std=c++20 -O2 ${wasm_eh} -ffp-contract=off -DFMT_HEADER_ONLY -DTOML_HEADER_ONLY=1
+# _LIBCPP_DISABLE_EXTERN_TEMPLATE: emscripten's libc++ declares std::string's members extern
+# templates, so every push_back or append was a call into its prebuilt archive (whose small
+# members, __is_long and size, are calls again): with the members instantiated here they inline.
+set(wasm_flags -std=c++20 -O3 ${wasm_eh} -ffp-contract=off -D_LIBCPP_DISABLE_EXTERN_TEMPLATE -DFMT_HEADER_ONLY -DTOML_HEADER_ONLY=1
   -I${CMAKE_CURRENT_SOURCE_DIR} -isystem ${wasm_include} -Wno-deprecated-declarations)
 set(wasm_env ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
 set(wasm_objects "")

@@ -258,6 +258,31 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   check(total > 0 && good === total, `links: explore.html#<sheet id>.<n> opens that exercise (${good}/${total}), linked from index.html`);
 }
 
+// ---- 4b. the patches by lines: the DOM after every move equals the markup parsed afresh ----------
+// (the page's self-check, window.epureCheckPatches, off in the timed drags above)
+{
+  const { page, errors } = await open(pagePath);
+  await page.evaluate(() => { window.epureCheckPatches = true; });
+  const kinds = await page.evaluate(() => window.epure.kinds());
+  for (const kind of kinds) {
+    await page.click(`#views button[data-kind="${kind}"]`);
+    await page.waitForFunction(k => document.querySelector(`#views button[aria-pressed="true"]`)?.dataset.kind === k, {}, kind);
+    const handles = await page.evaluate(() => [...document.querySelectorAll("#figure [data-handle]")].map(h => h.dataset.handle));
+    for (const id of handles) {
+      const box = await (await page.$(`#figure [data-handle="${id}"]`)).boundingBox();
+      const x = box.x + box.width / 2, y = box.y + box.height / 2;
+      await page.mouse.move(x, y);
+      await page.mouse.down();
+      for (let k = 1; k <= 12; k++) await page.mouse.move(x + 5 * k, y + 4 * k);
+      await page.mouse.up();
+    }
+  }
+  const r = await page.evaluate(() => ({ checked: window.epurePatchesChecked || 0, bad: window.epurePatchErrors || [] }));
+  check(r.checked > 100 && r.bad.length === 0 && errors.length === 0,
+        `patches: ${r.checked} patches by lines, each equal to the whole markup parsed afresh`, JSON.stringify(r.bad.slice(0, 3)));
+  await page.close();
+}
+
 // ---- 5. the floor: the same drag on a page whose handler does nothing ----------------------------
 // Chrome delivers pointermove aligned to animation frames, so part of *total* is the wait before
 // any handler runs. A page with an empty handler (the same figure size, the layout flushed like

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "explore/explorer.h"
+#include "exercises/exercise.h"
+#include "render/svg_page.h"
 #include "solve/solve.h"
 
 using nlohmann::json;
@@ -204,4 +206,45 @@ TEST_CASE("explore: the page's words come from the templates, in both languages"
     CHECK(fr.contains(key));
   }
   CHECK(std::string(en["hint_space"]).find("Shift") != std::string::npos);
+}
+
+TEST_CASE("explore: the view in parts is the view; without tolerances the key reads the same") {
+  using namespace epure;
+  for (const ExerciseKind* kind : all_kinds()) {
+    CAPTURE(kind->name());
+    const std::string start = ex::starting_instance(kind->name());
+    for (const char* lang : {"en", "fr"}) {
+      CAPTURE(lang);
+      // view_parts: head is view's object without "svg" and "steps", which come as they are
+      const ex::ViewParts parts = ex::view_parts(start, lang);
+      json whole = json::parse(ex::view(start, lang));
+      CHECK(whole.at("svg") == parts.svg);
+      CHECK(whole.at("steps") == parts.steps);
+      whole.erase("svg");
+      whole.erase("steps");
+      CHECK(whole == json::parse(parts.head));
+
+      // The page skips the method's dual run (the tolerances, which only marking uses): the
+      // solution, the expected answers and the key's text and figure are the same without it.
+      ExerciseSpec spec;
+      spec.kind = std::string(kind->name());
+      const Texts& texts = Texts::builtin(lang);
+      ExerciseContext marked{1, spec, texts, NumberStyle::for_language(lang), 2, ""};
+      ExerciseContext shown = marked;
+      shown.tolerances = false;
+      const json instance = json::parse(start);
+      const ExerciseInstance a = kind->key_of(instance, marked), b = kind->key_of(instance, shown);
+      CHECK(a.solution == b.solution);
+      REQUIRE(a.questions.size() == b.questions.size());
+      for (std::size_t i = 0; i < a.questions.size(); ++i) {
+        CHECK(a.questions[i].field == b.questions[i].field);
+        CHECK(a.questions[i].expected == b.questions[i].expected);
+        CHECK(a.questions[i].exact == b.questions[i].exact);
+      }
+      epure::render::Document da, db;
+      da.sections.push_back(a.key);
+      db.sections.push_back(b.key);
+      CHECK(epure::render::document_to_svg(da) == epure::render::document_to_svg(db));
+    }
+  }
 }
