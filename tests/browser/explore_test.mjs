@@ -43,6 +43,19 @@ async function open(file, hash = "") {
   return { page, refused, errors };
 }
 
+// A mouse drag of the element `selector` from its centre, `moves` steps of (dx, dy) pixels;
+// `during`, when given, runs before the button is released, and its result is returned.
+async function mouseDrag(page, selector, moves, dx, dy, during) {
+  const box = await (await page.$(selector)).boundingBox();
+  const x = box.x + box.width / 2, y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let k = 1; k <= moves; k++) await page.mouse.move(x + dx * k, y + dy * k);
+  const seen = during ? await during() : undefined;
+  await page.mouse.up();
+  return seen;
+}
+
 function quantile(xs, q) {
   const s = [...xs].sort((a, b) => a - b);
   if (!s.length) return NaN;
@@ -131,13 +144,7 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
     const start = await page.evaluate(() => window.epure.timings.length);
     for (const id of before.handles) {
       const was = await page.evaluate(shown);
-      const box = await (await page.$(`#figure [data-handle="${id}"]`)).boundingBox();
-      const x = box.x + box.width / 2, y = box.y + box.height / 2;
-      await page.mouse.move(x, y);
-      await page.mouse.down();
-      for (let k = 1; k <= 12; k++) await page.mouse.move(x + 3 * k, y - 2 * k);
-      const during = await page.evaluate(shown);
-      await page.mouse.up();
+      const during = await mouseDrag(page, `#figure [data-handle="${id}"]`, 12, 3, -2, () => page.evaluate(shown));
       const field = id.split(".")[0];
       const a = was.current[field], b = during.current[field];
       check(JSON.stringify(b) !== JSON.stringify(a), `${kind}: dragging ${id} moves the datum`, `${JSON.stringify(a)} -> ${JSON.stringify(b)}`);
@@ -152,14 +159,8 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
       // Shift: up and down the vertical (x and y kept, z changes); the points' handles only
       for (const id of before.handles.filter(h => Array.isArray(before.current[h]))) {
         const was = await page.evaluate(shown);
-        const box = await (await page.$(`#figure [data-handle="${id}"]`)).boundingBox();
-        const x = box.x + box.width / 2, y = box.y + box.height / 2;
-        await page.mouse.move(x, y);
         await page.keyboard.down("Shift");
-        await page.mouse.down();
-        for (let k = 1; k <= 8; k++) await page.mouse.move(x + 2 * k, y - 4 * k);
-        const during = await page.evaluate(shown);
-        await page.mouse.up();
+        const during = await mouseDrag(page, `#figure [data-handle="${id}"]`, 8, 2, -4, () => page.evaluate(shown));
         await page.keyboard.up("Shift");
         const a = was.current[id], b = during.current[id];
         check(a[0] === b[0] && a[1] === b[1] && b[2] > a[2], `${kind}: ${id} dragged with Shift goes up its vertical`, `${JSON.stringify(a)} -> ${JSON.stringify(b)}`);
@@ -208,12 +209,7 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   }
   await page.click("#snap");
   {
-    const box = await (await page.$(`#figure [data-handle="A"]`)).boundingBox();
-    const x = box.x + box.width / 2, y = box.y + box.height / 2;
-    await page.mouse.move(x, y);
-    await page.mouse.down();
-    for (let k = 1; k <= 10; k++) await page.mouse.move(x + 7 * k, y + 5 * k);
-    await page.mouse.up();
+    await mouseDrag(page, `#figure [data-handle="A"]`, 10, 7, 5);
     const a = await page.evaluate(() => window.epure.current().A);
     check(a.every(Number.isInteger), "snap: a dragged point lands on the integer grid", JSON.stringify(a));
   }
@@ -268,14 +264,7 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
     await page.click(`#views button[data-kind="${kind}"]`);
     await page.waitForFunction(k => document.querySelector(`#views button[aria-pressed="true"]`)?.dataset.kind === k, {}, kind);
     const handles = await page.evaluate(() => [...document.querySelectorAll("#figure [data-handle]")].map(h => h.dataset.handle));
-    for (const id of handles) {
-      const box = await (await page.$(`#figure [data-handle="${id}"]`)).boundingBox();
-      const x = box.x + box.width / 2, y = box.y + box.height / 2;
-      await page.mouse.move(x, y);
-      await page.mouse.down();
-      for (let k = 1; k <= 12; k++) await page.mouse.move(x + 5 * k, y + 4 * k);
-      await page.mouse.up();
-    }
+    for (const id of handles) await mouseDrag(page, `#figure [data-handle="${id}"]`, 12, 5, 4);
   }
   const r = await page.evaluate(() => ({ checked: window.epurePatchesChecked || 0, bad: window.epurePatchErrors || [] }));
   check(r.checked > 100 && r.bad.length === 0 && errors.length === 0,
@@ -308,14 +297,7 @@ let floor;
   window.epure = { ready: true, timings };
 </script>`);
   const { page } = await open(file);
-  const box = await (await page.$("#figure circle")).boundingBox();
-  const x = box.x + box.width / 2, y = box.y + box.height / 2;
-  for (let drag = 0; drag < 40; drag++) {
-    await page.mouse.move(x, y);
-    await page.mouse.down();
-    for (let k = 1; k <= 12; k++) await page.mouse.move(x + 3 * k, y - 2 * k);
-    await page.mouse.up();
-  }
+  for (let drag = 0; drag < 40; drag++) await mouseDrag(page, "#figure circle", 12, 3, -2);
   const t = await page.evaluate(() => window.epure.timings);
   floor = { moves: t.length, total_median_ms: quantile(t.map(x => x.total), 0.5), total_p95_ms: quantile(t.map(x => x.total), 0.95),
             handler_median_ms: quantile(t.map(x => x.handler), 0.5), handler_p95_ms: quantile(t.map(x => x.handler), 0.95) };
