@@ -1044,13 +1044,15 @@ class Builder {
     std::uint32_t bit = 0;
     for (const auto& [si, start] : fallback_) {
       fallback_bit_[si] = bit++;
-      fallback_atoms_.emplace(si, fallback(si, start));
+      const auto& built = fallback_atoms_.emplace(si, fallback(si, start)).first->second;
+      fallback_shapes_.emplace(si, geometry(built));
     }
+    const std::vector<Atom> shapes = geometry(atoms_);
     const std::uint32_t all = (std::uint32_t{1} << bit) - 1;
-    std::size_t best_pages = trial_pages(all);
+    std::size_t best_pages = trial_pages(all, shapes);
     std::uint32_t best = all;
     for (std::uint32_t mask = all; mask-- > 0;) {
-      const std::size_t pages = trial_pages(mask);
+      const std::size_t pages = trial_pages(mask, shapes);
       const bool filled = std::all_of(dry_fills_.begin(), dry_fills_.end(), [](double f) { return f >= kMinPageFill; });
       if (pages < best_pages && filled) {
         best_pages = pages;
@@ -1061,11 +1063,9 @@ class Builder {
   }
 
   // How many pages the atoms take with this choice mask (dry_fills_: how full each page but the
-  // last ends), placed from copies that keep only their geometry.
-  std::size_t trial_pages(std::uint32_t mask) {
-    std::vector<Atom> copies;
-    copies.reserve(atoms_.size());
-    for (const Atom& a : atoms_) copies.push_back(geometry(a));
+  // last ends), placed from a copy of `shapes`, the atoms' geometry (placing edits the atoms).
+  std::size_t trial_pages(std::uint32_t mask, const std::vector<Atom>& shapes) {
+    std::vector<Atom> copies = shapes;
     std::swap(atoms_, copies);
     fallback_mask_ = mask;
     dry_ = true;
@@ -1091,6 +1091,12 @@ class Builder {
     g.follows_heading = a.follows_heading;
     g.content.keep_texts = false;
     g.content.figures = a.content.figures;
+    return g;
+  }
+  static std::vector<Atom> geometry(const std::vector<Atom>& atoms) {
+    std::vector<Atom> g;
+    g.reserve(atoms.size());
+    for (const Atom& a : atoms) g.push_back(geometry(a));
     return g;
   }
 
@@ -1140,7 +1146,7 @@ class Builder {
         if (auto built = fallback_atoms_.find(alt->first); built == fallback_atoms_.end()) {
           other = fallback(alt->first, alt->second);
         } else if (dry_) {
-          for (const Atom& a : built->second) other.push_back(geometry(a));
+          other = fallback_shapes_.at(alt->first);
         } else {
           other = std::move(built->second);
         }
@@ -1253,6 +1259,7 @@ class Builder {
   std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
   std::map<int, std::uint32_t> fallback_bit_;    // their bit in a choice mask
   std::map<int, std::vector<Atom>> fallback_atoms_;  // their fallback, built once
+  std::map<int, std::vector<Atom>> fallback_shapes_;  // and its geometry, for the trials
   std::uint32_t fallback_mask_ = ~std::uint32_t{0};  // set: the fallback is taken (see flow)
   bool dry_ = false;                // placing copies only to count pages (see trial_pages)
   std::size_t dry_pages_ = 0;
