@@ -15,9 +15,6 @@ std::string solve(const std::string& line) { return ex::solve(line); }
 std::string kinds() { return ex::kinds(); }
 std::string words(const std::string& language) { return ex::words(language); }
 std::string starting_instance(const std::string& kind) { return ex::starting_instance(kind); }
-std::string view(const std::string& instance, const std::string& language, int n, const std::string& frozen) {
-  return ex::view(instance, language, n, frozen);
-}
 // The view's three texts as byte views of the module's memory, valid until the next call: the
 // page decodes each with one TextDecoder call. (Returned as std::string, embind first walks every
 // byte of a 20-50 kB figure in JavaScript, looking for NULs: a tenth of a move's core time.)
@@ -48,7 +45,6 @@ EMSCRIPTEN_BINDINGS(epure) {
   emscripten::function("kinds", &kinds);
   emscripten::function("words", &words);
   emscripten::function("startingInstance", &starting_instance);
-  emscripten::function("view", &view);
   emscripten::function("viewParts", &view_parts);
   emscripten::function("drag", &drag);
   emscripten::function("nudge", &nudge);
