@@ -34,7 +34,7 @@ EPURE_FMA_KERNEL RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere
   return detail::intersect_ball_exact<RaySphere, Hit3>(ray, sphere.C, sphere.r);
 }
 
-EPURE_FMA_KERNEL PrintedValues<Vec3> printed_values(const Ray3& ray, const Sphere& sphere,
+EPURE_FMA_KERNEL PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere,
                                                     const RaySphere& res, double length) {
   return detail::printed_values(ray, sphere.C, sphere.r, res, length);
 }

@@ -40,7 +40,7 @@ RayCube intersect_canonical_cube(const Ray3& ray);
 // intersect_canonical_square_exact (ray_square.h); at an edge or a corner, x then y first.
 RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere);
 // As printed_values for the circle (ray_circle.h).
-PrintedValues<Vec3> printed_values(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
+PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
                                    double length);
 RayCube intersect_canonical_cube_exact(const Ray3& ray);
 

@@ -317,6 +317,10 @@ inline std::array<double, 2> parts(Vec2 v) { return {v.x, v.y}; }
 inline std::array<double, 3> parts(Vec3 v) { return {v.x, v.y, v.z}; }
 inline Vec2 from_parts(const std::array<double, 2>& a) { return {a[0], a[1]}; }
 inline Vec3 from_parts(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+inline std::array<double, 2> parts(Point2 p) { return {p.x, p.y}; }
+inline std::array<double, 3> parts(Point3 p) { return {p.x, p.y, p.z}; }
+inline Point2 point_from_parts(const std::array<double, 2>& a) { return {a[0], a[1]}; }
+inline Point3 point_from_parts(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 // The a-priori bound: 8ε|w| (above) within 4 ulps, less a margin for the second-order terms.
 inline bool vouched(double w, double S) {
@@ -329,8 +333,8 @@ inline bool vouched(double w, double S) {
 template <class Result, class Ray, class Point>
 auto printed_values(const Ray& ray, Point C, double r, const Result& res, double length) {
   using Vec = decltype(ray.direction);
-  PrintedValues<Vec> out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
-                         res.hit ? res.hit->N : Vec{}};
+  PrintedValues<Vec, Point> out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
+                                res.hit ? res.hit->I : Point{}, res.hit ? res.hit->N : Vec{}};
   const Point A = ray.origin;
   const double S = std::max({max_abs(A), max_abs(C), r});
   // t = 0 is A itself (on the figure), a decision and not a rounding
@@ -395,6 +399,18 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
     radial[i] = dd_sum(dd_quotient(dd_product(t, {u_parts[i], 0}), length_u), {-ac_hi[i], -ac_lo[i]});
     radial2 = dd_sum(radial2, dd_product(radial[i], radial[i]));
   }
+  // I = C + (I − C): A + t·û rounds t·û, and t itself is a length of up to 4 ulps of S, so the
+  // kernel's I can reach 5 ulps where t·û is large beside S (an origin inside, a long chord).
+  // Each coordinate within the radial's error plus the sum's rounding.
+  const double e_radial = e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss);
+  const auto c_parts = parts(times_pow2(C, -e));
+  auto I = parts(out.I);
+  for (std::size_t i = 0; i < I.size(); ++i) {
+    const DD accurate = dd_sum({c_parts[i], 0}, radial[i]);
+    const double e_i = e_radial + 0x1p-100 * (std::abs(accurate.hi) + Ss);
+    I[i] = times_pow2(checked(times_pow2(I[i], -e), accurate, e_i, Ss), e);
+  }
+  out.I = point_from_parts(I);
   const DD radial_length = dd_sqrt(radial2);
   if (!(radial_length.hi > 0.5 * rs)) return out;  // not on the circle: a decision's, not a rounding
   const double e_n = 2 * (e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss)) / radial_length.hi + 0x1p-100;

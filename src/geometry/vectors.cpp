@@ -11,8 +11,11 @@ namespace epure::geo {
 double angle_degrees(double cos, double sin) {
   // correctly rounded: the same bits everywhere (portable.h)
   double degrees = portable::atan2(sin, cos) * (180.0 / std::numbers::pi);
-  // atan2 returns −π for a negative zero sine: the contract's interval is (−180, 180].
-  return degrees <= -180.0 ? 180.0 : degrees;
+  // −180 is outside the contract's (−180, 180]. A zero sine (atan2(−0, −1) = −π) is 180; a
+  // negative one is an angle just above −180 that rounded to it, whose nearest double in the
+  // interval is the next one up: 180 would contradict the sine's sign.
+  if (degrees <= -180.0) return sin < 0 ? std::nextafter(-180.0, 0.0) : 180.0;
+  return degrees;
 }
 
 VectorPair compare_vectors(Vec2 u, Vec2 v) {

@@ -34,7 +34,8 @@ inline constexpr double kCollinearSin = 1e-12;
 // Throws DegenerateFigure("u" or "v") for a zero vector.
 VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v);
 
-// atan2(sin, cos) in degrees, folded into (−180, 180] (atan2(−0, −1) is −180: we say 180).
+// atan2(sin, cos) in degrees, in (−180, 180] and of the sine's sign: atan2(−0, −1) is −180, we
+// say 180; a negative sine whose angle rounds to −180 gives −179.99999999999997.
 double angle_degrees(double cos, double sin);
 
 }  // namespace epure::geo

@@ -1,5 +1,6 @@
 #include "render/fixed_decimal.h"
 
+#include <charconv>
 #include <cstdint>
 #include <cstring>
 
@@ -32,16 +33,9 @@ constexpr std::uint64_t power_of_ten[19] = {
     1000000000000000000ull,
 };
 
-// The decimal digits of n, most significant first, at out; returns their count (at least 1).
+// The decimal digits of n, most significant first, at out (room for 20); returns their count.
 std::size_t write_digits(std::uint64_t n, char* out) {
-  char reversed[20];
-  std::size_t count = 0;
-  do {
-    reversed[count++] = static_cast<char>('0' + n % 10);
-    n /= 10;
-  } while (n != 0);
-  for (std::size_t i = 0; i < count; ++i) out[i] = reversed[count - 1 - i];
-  return count;
+  return static_cast<std::size_t>(std::to_chars(out, out + 20, n).ptr - out);
 }
 
 }  // namespace

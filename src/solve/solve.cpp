@@ -445,7 +445,7 @@ void write_round(const Round& c, const Ray& ray, const Ball& ball, Result& r, do
   const auto printed = geo::printed_values(ray, ball, c, length);
   r.number("t_proj", printed.t_proj).number("d2", c.d2).boolean("inside", c.inside);
   r.boolean("hit", c.hit.has_value());
-  if (c.hit) r.number("t", printed.t).point("I", c.hit->I).point("N", printed.N);
+  if (c.hit) r.number("t", printed.t).point("I", printed.I).point("N", printed.N);
   if (c.reason) r.string("reason", geo::to_string(*c.reason));
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <array>
 #include <tuple>
+#include <utility>
 
 #include "geometry/ray_3d.h"
 #include "geometry/ray_ball.h"
@@ -38,12 +39,13 @@ double ulps_off(double got, Real expected, double S) {
   return static_cast<double>(T::abs(Real(got) - expected)) / bound;
 }
 
-template <class V>
+template <class V, class P>
 struct Printed {
   double t_proj, t;              // printed_values'
   double plain_t_proj, plain_t;  // the kernel's values times length, as printed before
   bool hit;
   V N, plain_N;
+  P I, plain_I;
 };
 
 // As `epure solve` calls it: the direction rescaled by a power of two, its length by hypot.
@@ -53,8 +55,10 @@ auto print(const Ray& ray, const Ball& ball) {
   const double length = norm(ray.direction);
   const auto along = printed_values(ray, ball, res, length);
   using V = decltype(ray.direction);
-  return Printed<V>{along.t_proj, along.t, res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
-                    res.hit.has_value(), along.N, res.hit ? res.hit->N : V{}};
+  using P = decltype(ray.origin);
+  return Printed<V, P>{along.t_proj, along.t, res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
+                       res.hit.has_value(), along.N, res.hit ? res.hit->N : V{},
+                       along.I, res.hit ? res.hit->I : P{}};
 }
 
 }  // namespace
@@ -100,11 +104,16 @@ TEST_CASE("geometry/printed_values: either side of the a-priori bound, within 4 
 
 namespace {
 
-// Far origins: A at up to 1e3 sizes from a figure of any size, aimed at it or anywhere, the
-// direction of any slope. Returns how many plain values exceeded 4 ulps.
+// Lines from `draw`, e.g. A at up to 1e3 sizes from a figure of any size, aimed at it or
+// anywhere, the direction of any slope. Returns how many of the kernel's values (t_proj, t, N),
+// and how many of its hit points' coordinates, exceeded 4 ulps.
+// The kernel's value is kept wherever the accurate one, less its own error bound (a few hundredths
+// of an ulp from an origin inside), shows it within 4 ulps: below this it must be kept.
+constexpr double kKept = 3.95;
+
 template <class Draw>
-int far_origins(Draw draw, int seeds) {
-  int beyond = 0;
+std::pair<int, int> far_origins(Draw draw, int seeds) {
+  int beyond = 0, points_beyond = 0;
   for (int seed = 0; seed < seeds; ++seed) {
     CAPTURE(seed);
     Rng rng(static_cast<std::uint64_t>(seed), 15);
@@ -115,7 +124,7 @@ int far_origins(Draw draw, int seeds) {
     const double plain = ulps_off(p.plain_t_proj, e.t_proj, S);
     CHECK(ulps_off(p.t_proj, e.t_proj, S) <= 4);
     // the kernel's bits are kept wherever they are (with a margin for the reference) within
-    if (plain <= 3.99) CHECK(T::exactly(p.t_proj, p.plain_t_proj));
+    if (plain <= kKept) CHECK(T::exactly(p.t_proj, p.plain_t_proj));
     if (plain > 4) ++beyond;
     if (p.hit && e.t) {
       const double plain_t = ulps_off(p.plain_t, *e.t, S);
@@ -128,7 +137,7 @@ int far_origins(Draw draw, int seeds) {
       CAPTURE(e.inside);
       CAPTURE(S);
       CHECK(ulps_off(p.t, *e.t, S) <= 4);
-      if (plain_t <= 3.99) CHECK(T::exactly(p.t, p.plain_t));
+      if (plain_t <= kKept) CHECK(T::exactly(p.t, p.plain_t));
       if (plain_t > 4) ++beyond;
       // N·r as a length: within 4 ulps of max(1, S/r)
       const double n_unit = std::max(ulp_of(1.0), ulp_of(S) / ball.r);
@@ -138,12 +147,21 @@ int far_origins(Draw draw, int seeds) {
         const double off = static_cast<double>(T::abs(Real(n[i]) - ref[i])) / n_unit;
         const double plain_off = static_cast<double>(T::abs(Real(plain_n[i]) - ref[i])) / n_unit;
         CHECK(off <= 4);
-        if (plain_off <= 3.99) CHECK(T::exactly(n[i], plain_n[i]));
+        if (plain_off <= kKept) CHECK(T::exactly(n[i], plain_n[i]));
         if (plain_off > 4) ++beyond;
+      }
+      // I, a point: within 4 ulps of max(S, |I|)
+      const auto I = detail::parts(p.I), plain_I = detail::parts(p.plain_I);
+      const auto ref_I = parts(e.I);
+      for (std::size_t i = 0; i < I.size(); ++i) {
+        const double plain_off = ulps_off(plain_I[i], ref_I[i], S);
+        CHECK(ulps_off(I[i], ref_I[i], S) <= 4);
+        if (plain_off <= kKept) CHECK(T::exactly(I[i], plain_I[i]));
+        if (plain_off > 4) ++points_beyond;
       }
     }
   }
-  return beyond;
+  return {beyond, points_beyond};
 }
 
 // A ray from afar toward a ball (or a random direction), in 2D or 3D: the ball's size over six
@@ -171,6 +189,31 @@ TEST_CASE("geometry/printed_values: far origins, circle and sphere, within 4 ulp
     return far_origin<Ray3, Sphere>(rng, T::point3, T::direction3);
   };
   // Without the comparison these lines would fail: the draws must hold some beyond 4 ulps.
-  CHECK(far_origins(circle, 100000) > 0);
-  CHECK(far_origins(sphere, 100000) > 0);
+  CHECK(far_origins(circle, 100000).first > 0);
+  CHECK(far_origins(sphere, 100000).first > 0);
+}
+
+// An origin in the ball's box (inside, or just outside), the direction of any length: I = A + t·û
+// where t·û is a chord (up to 2r) and t itself is within 4 ulps of S, so the kernel's I can
+// reach 5 ulps of S (the exact reference found `"A":[-420.24…,-845.40…],"u":[8218.69…,
+// -3594.24…],"C":[0,0],"r":976.53…`: A inside, near the circle).
+template <class Ray, class Ball, class PointAt, class Direction>
+auto inside_origin(Rng& rng, PointAt point, Direction direction) {
+  const double r = T::decades(rng, -3, 3);
+  const auto C = point(rng, rng.chance(0.5) ? 0.0 : r * T::decades(rng, -1, 1));
+  const auto A = C + to_vec(point(rng, r));
+  const auto u = direction(rng) * T::decades(rng, -3, 3);
+  const double S = std::max({detail::max_abs(A), detail::max_abs(C), r});
+  return std::tuple{Ray{A, u}, Ball{C, r}, S};
+}
+
+TEST_CASE("geometry/printed_values: hit points from inside, circle and sphere, within 4 ulps") {
+  auto circle = [](Rng& rng) { return inside_origin<Ray2, Circle>(rng, T::point2, T::direction2); };
+  auto sphere = [](Rng& rng) { return inside_origin<Ray3, Sphere>(rng, T::point3, T::direction3); };
+  // Without I's comparison these lines would fail: the draws must hold some I beyond 4 ulps.
+  const auto [circle_values, circle_points] = far_origins(circle, 100000);
+  const auto [sphere_values, sphere_points] = far_origins(sphere, 100000);
+  MESSAGE("kernel values beyond 4 ulps: circle ", circle_values, " + ", circle_points, " I coordinates, sphere ",
+          sphere_values, " + ", sphere_points);
+  CHECK(circle_points + sphere_points > 0);
 }

@@ -108,7 +108,15 @@ TEST_CASE("geometry/vectors: hand-computed angles") {
 TEST_CASE("geometry/vectors: angle_degrees folds atan2 into (−180, 180]") {
   CHECK(exactly(angle_degrees(-1, -0.0), 180));
   CHECK(exactly(angle_degrees(-1, 0.0), 180));
-  CHECK(angle_degrees(-1, -1e-300) == doctest::Approx(180).epsilon(1e-15));
+  // a negative sine whose angle rounds to −180: the interval's nearest double, of the sine's sign
+  // (180 would say the turn is counter-clockwise)
+  CHECK(exactly(angle_degrees(-1, -1e-300), std::nextafter(-180.0, 0.0)));
+  CHECK(exactly(angle_degrees(-1, -1e-17), -179.99999999999997));
+  CHECK(exactly(angle_degrees(-1, 1e-300), 180));
+  // the case the exact reference found: −0.4 is not −0.4 in binary, so u ∧ v = −1.1e-16 < 0
+  const VectorPair nearly_opposite = compare_vectors({5, 2}, {-1, -0.4});
+  CHECK(nearly_opposite.sin < 0);
+  CHECK(exactly(nearly_opposite.angle_deg, -179.99999999999997));
   // just below the negative axis: the far end of the interval, not folded
   CHECK(angle_degrees(-1, -1e-10) > -180);
   CHECK(angle_degrees(-1, -1e-10) < -179.9999999);
