@@ -297,6 +297,7 @@ void check_kind(const KindCheck& check, int seeds, Figure figure_of) {
         }
 
         // the diagrams: the data in the world frame; the key's two frames and T⁻¹ between them
+        // (its −1 with the minus sign, U+2212)
         const auto sheet_scenes = scenes_of(inst.sheet);
         REQUIRE(sheet_scenes.size() == 1);
         CHECK(sheet_scenes[0].panels.size() == 1);
@@ -304,7 +305,7 @@ void check_kind(const KindCheck& check, int seeds, Figure figure_of) {
         REQUIRE(key_scenes.size() == 1);
         CHECK(key_scenes[0].panels.size() == 2);
         REQUIRE(key_scenes[0].links.size() == 1);
-        CHECK(key_scenes[0].links[0].find("T^{-1}") == 0);
+        CHECK(key_scenes[0].links[0].find("T^{−1}") == 0);
 
         // determinism, and the other language: same data, every text filled, French numbers
         Rng again(static_cast<std::uint64_t>(seed), 7);
