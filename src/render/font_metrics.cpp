@@ -32,46 +32,24 @@ constexpr double advance_from_table(char32_t cp, Face face) {
   return (face == Face::bold ? g->bold : g->regular) / double(kUnitsPerEm);
 }
 
-// Measuring calls advance_em once per glyph, and nearly every glyph is Latin or Greek: a flat
-// array indexed by code point, filled from the very same expression as the binary search, gives
-// the same doubles without the search. Rarer code points (arrows, symbols) still search.
-constexpr char32_t kFlatEnd = 0x400;
-
-struct FlatAdvances {
-  std::array<double, kFlatEnd> regular, bold;
-  FlatAdvances() {
-    for (char32_t cp = 0; cp < kFlatEnd; ++cp) {
-      regular[cp] = advance_from_table(cp, Face::regular);
-      bold[cp] = advance_from_table(cp, Face::bold);
-    }
-  }
-};
-
-const FlatAdvances& flat_advances() {
-  static const FlatAdvances flat;  // built once, thread-safe (magic static)
-  return flat;
-}
-
 }  // namespace
 
 namespace detail {
 
-constexpr std::array<std::array<double, 128>, 2> kAsciiAdvanceEm = [] {
-  std::array<std::array<double, 128>, 2> a{};
-  for (char32_t cp = 0; cp < 128; ++cp) {
+// Measuring calls advance_em once per glyph, and nearly every glyph is Latin or Greek: one flat
+// array indexed by code point, filled at compile time from the very same expression as the
+// binary search, gives the same doubles without the search. Rarer code points (arrows, symbols)
+// still search.
+constexpr std::array<std::array<double, kFlatAdvances>, 2> kAdvanceEm = [] {
+  std::array<std::array<double, kFlatAdvances>, 2> a{};
+  for (char32_t cp = 0; cp < kFlatAdvances; ++cp) {
     a[0][cp] = advance_from_table(cp, Face::regular);
     a[1][cp] = advance_from_table(cp, Face::bold);
   }
   return a;
 }();
 
-double advance_em_from_table(char32_t cp, Face face) {
-  if (cp < kFlatEnd) {
-    const FlatAdvances& f = flat_advances();
-    return face == Face::bold ? f.bold[cp] : f.regular[cp];
-  }
-  return advance_from_table(cp, face);
-}
+double advance_em_from_table(char32_t cp, Face face) { return advance_from_table(cp, face); }
 
 }  // namespace detail
 

@@ -14,9 +14,11 @@ namespace epure::render {
 enum class Face { regular, bold };
 
 namespace detail {
-// The advances of ASCII, read straight from an array: measuring runs once per glyph and most
-// glyphs are ASCII. The same doubles as the table gives (filled from it at compile time).
-extern const std::array<std::array<double, 128>, 2> kAsciiAdvanceEm;  // [bold][cp]
+// The advances of Latin and Greek (code points below kFlatAdvances), read straight from an array:
+// measuring runs once per glyph and nearly every glyph is one of these. The same doubles as the
+// table gives (filled from it at compile time).
+inline constexpr char32_t kFlatAdvances = 0x400;
+extern const std::array<std::array<double, kFlatAdvances>, 2> kAdvanceEm;  // [bold][cp]
 double advance_em_from_table(char32_t cp, Face face);
 }  // namespace detail
 
@@ -24,7 +26,7 @@ double advance_em_from_table(char32_t cp, Face face);
 // table gets kFallbackAdvanceEm, a typical glyph's width, so that unknown text is never measured
 // as empty.
 inline double advance_em(char32_t cp, Face face = Face::regular) {
-  if (cp < 128) return detail::kAsciiAdvanceEm[face == Face::bold ? 1 : 0][cp];
+  if (cp < detail::kFlatAdvances) return detail::kAdvanceEm[face == Face::bold ? 1 : 0][cp];
   return detail::advance_em_from_table(cp, face);
 }
 

@@ -91,7 +91,7 @@ class Parser {
 
 double advance_sum(std::string_view text, Face face) {
   double em = 0;
-  const auto& ascii = detail::kAsciiAdvanceEm[face == Face::bold ? 1 : 0];
+  const auto& ascii = detail::kAdvanceEm[face == Face::bold ? 1 : 0];
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = static_cast<unsigned char>(text[i]);
     if (byte < 0x80) {  // the same sum, in the same order, without decoding
