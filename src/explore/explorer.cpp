@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -374,14 +375,18 @@ P2 to_math(const FrameData& f, P2 page) {
 // ---- the key as HTML ------------------------------------------------------------------------
 
 // HTML's four special characters escaped, the runs between them appended whole.
+constexpr std::array<bool, 256> kHtmlSpecial = [] {
+  std::array<bool, 256> special{};
+  for (char c : {'&', '<', '>', '"'}) special[static_cast<unsigned char>(c)] = true;
+  return special;
+}();
 void escape_into(std::string& out, std::string_view s) {
   std::size_t run = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
-    const char* entity = c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : nullptr;
-    if (entity == nullptr) continue;
+    if (!kHtmlSpecial[static_cast<unsigned char>(c)]) continue;
     out.append(s, run, i - run);
-    out += entity;
+    out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : "&quot;";
     run = i + 1;
   }
   out.append(s, run, std::string_view::npos);
@@ -409,19 +414,38 @@ void append_json_string(std::string& out, std::string_view s) {
 }
 
 // The label markup (t_{ab}, r^{2}, \vec{AB}) as HTML, through the parser every backend uses,
-// appended to `out`. Text without markup is one plain run: no parse.
-void append_rich_html(std::string& out, std::string_view rich) {
-  if (rich.find_first_of("\\_^") == std::string_view::npos) return escape_into(out, rich);
-  for (const auto& run : render::parse_rich_text(rich)) {
-    const char* shift = run.shift == render::Shift::sub ? "sub" : run.shift == render::Shift::super ? "sup" : nullptr;
-    if (shift) out += '<', out += shift, out += '>';
-    if (run.bold) out += "<b>";
-    if (run.arrow) out += "<span class=\"vec\">";
-    escape_into(out, run.text);
-    if (run.arrow) out += "</span>";
-    if (run.bold) out += "</b>";
-    if (shift) out += "</", out += shift, out += '>';
+// appended to `out`: each of parse_rich_text's runs (pieces of one shift and arrow) in its tags.
+class HtmlRuns final : public render::RichSink {
+ public:
+  explicit HtmlRuns(std::string& out) : out_(out) {}
+  ~HtmlRuns() { close(); }
+  void piece(std::string_view text, render::Shift shift, bool arrow) override {
+    if (!open_ || shift != shift_ || arrow != arrow_) {
+      close();
+      open_ = true, shift_ = shift, arrow_ = arrow;
+      if (const char* tag = script()) out_ += '<', out_ += tag, out_ += '>';
+      if (arrow_) out_ += "<span class=\"vec\">";
+    }
+    escape_into(out_, text);
   }
+
+ private:
+  const char* script() const {
+    return shift_ == render::Shift::sub ? "sub" : shift_ == render::Shift::super ? "sup" : nullptr;
+  }
+  void close() {
+    if (!open_) return;
+    if (arrow_) out_ += "</span>";
+    if (const char* tag = script()) out_ += "</", out_ += tag, out_ += '>';
+  }
+  std::string& out_;
+  bool open_ = false, arrow_ = false;
+  render::Shift shift_ = render::Shift::none;
+};
+
+void append_rich_html(std::string& out, std::string_view rich) {
+  HtmlRuns runs(out);
+  render::parse_rich_pieces(rich, runs);
 }
 
 struct KeyView {
@@ -559,7 +583,7 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
     out.head += ",\"handles\":";
     out.head += hs.dump();
     out.head += in_space(instance) ? ",\"space\":true}" : ",\"space\":false}";
-    out.svg = with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame);
+    out.svg = with_handles(render::scene_to_svg(scene, kFigureWidth, layout), handles, frame);
     out.steps = std::move(kv.steps);
     return out;
   } catch (const std::exception& e) {

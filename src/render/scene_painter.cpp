@@ -851,8 +851,11 @@ int SceneReport::unclean() const {
 
 SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, double width,
                         const Style& style) {
+  return paint_scene(canvas, scene, layout_scene(scene, x, y, width, style), style);
+}
+
+SceneReport paint_scene(Canvas& canvas, const Scene& scene, const SceneLayout& layout, const Style& style) {
   SceneReport report;
-  const SceneLayout layout = layout_scene(scene, x, y, width, style);
   for (std::size_t i = 0; i < scene.panels.size(); ++i) {
     report.panels.push_back(PanelPainter(canvas, scene.panels[i], layout.panels[i], style).paint());
   }
