@@ -91,7 +91,7 @@ void SvgCanvas::path(const Path& path, const Paint& paint) {
   buffer_.clear();
   append_path_data(buffer_, path);
   w_.open("path");
-  w_.attribute("d", buffer_);
+  w_.plain_attribute("d", buffer_);
   paint_attributes(paint);
   w_.close_empty();
 }
