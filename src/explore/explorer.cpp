@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 #include <variant>
@@ -333,9 +334,17 @@ struct FrameData {
   Box view, rect;
 };
 
-json frame_json(const FrameData& f) {
-  return {{"view", {f.view.x_min, f.view.y_min, f.view.x_max, f.view.y_max}},
-          {"rect", {f.rect.x_min, f.rect.y_min, f.rect.x_max, f.rect.y_max}}};
+// As JSON text; the frame of a drag stays what it was (the view is held still): written once.
+const std::string& frame_text(const FrameData& f) {
+  thread_local FrameData last{};
+  thread_local std::string text;
+  if (text.empty() || std::memcmp(&last, &f, sizeof f) != 0) {  // bits: −0 is not 0 in JSON
+    last = f;
+    text = json{{"view", {f.view.x_min, f.view.y_min, f.view.x_max, f.view.y_max}},
+                {"rect", {f.rect.x_min, f.rect.y_min, f.rect.x_max, f.rect.y_max}}}
+               .dump();
+  }
+  return text;
 }
 
 std::optional<FrameData> read_frame(std::string_view text) {
@@ -579,7 +588,7 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
     out.head += ",\"solution\":";
     out.head += key.solution;  // JSON already: the solve output
     out.head += ",\"frame\":";
-    out.head += frame_json(frame).dump();
+    out.head += frame_text(frame);
     out.head += ",\"handles\":";
     out.head += hs.dump();
     out.head += in_space(instance) ? ",\"space\":true}" : ",\"space\":false}";
