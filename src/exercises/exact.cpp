@@ -12,6 +12,8 @@ namespace {
 Wide gcd128(Wide a, Wide b) {
   if (a < 0) a = -a;
   if (b < 0) b = -b;
+  // most operands fit 64 bits: the same gcd without 128-bit divisions (a call each)
+  if (a <= Wide(UINT64_MAX) && b <= Wide(UINT64_MAX)) return std::gcd(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b));
   while (b != 0) {
     Wide t = a % b;
     a = b;

@@ -85,7 +85,8 @@ struct ExerciseContext {
   // What the sheet calls it: "Exercise 2", or the spec's heading ("Preamble"). Empty: "Exercise n".
   std::string label{};
   // Whether to build the sheet's section too; false for the explorer's views, which show the key
-  // only (ExerciseInstance::sheet is then left empty).
+  // only (ExerciseInstance::sheet is then left empty, and its questions too: the key's answer
+  // lines are all a view shows of them).
   bool sheet = true;
   // Whether to derive the questions' tolerances (the method's Dual run: how far each answer moves
   // when a student rounds an intermediate); false for the explorer's views, which mark nothing

@@ -118,23 +118,27 @@ std::string Questions::answer_text(double value, const std::optional<exact::Surd
 
 void Questions::number(std::string_view field, double value, double abs_tolerance,
                        std::optional<exact::Surd> exact) {
-  Question q;
-  q.field = std::string(field);
-  q.expected = value;
-  if (exact) {
-    try {
-      q.exact = exact->machine();
-      q.exact_pretty = exact->pretty();
-    } catch (const exact::ExactOverflow&) {
-      exact.reset();
+  // (an exact form too long for exact.h's machine form is too long for its pretty one: either
+  // way answer_text shows the rounding alone)
+  if (marking()) {
+    Question q;
+    q.field = std::string(field);
+    q.expected = value;
+    if (exact) {
+      try {
+        q.exact = exact->machine();
+        q.exact_pretty = exact->pretty();
+      } catch (const exact::ExactOverflow&) {
+        exact.reset();
+      }
     }
+    const QuestionSpec* spec = spec_for(field);
+    q.tolerance = isclose_rule(abs_tolerance, ctx_.decimals, spec);
+    if (q.tolerance.kind == ToleranceRule::Kind::distance) q.tolerance.kind = ToleranceRule::Kind::isclose;
+    q.points = points_for(field);
+    questions_.push_back(q);
+    fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::number, {}});
   }
-  const QuestionSpec* spec = spec_for(field);
-  q.tolerance = isclose_rule(abs_tolerance, ctx_.decimals, spec);
-  if (q.tolerance.kind == ToleranceRule::Kind::distance) q.tolerance.kind = ToleranceRule::Kind::isclose;
-  q.points = points_for(field);
-  questions_.push_back(q);
-  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::number, {}});
   lines_.push_back({id(field), prompt(field), answer_text(value, exact)});
 }
 
@@ -146,6 +150,10 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
   const std::optional<exact::Surd> exacts[2] = {exact_x, exact_y};
   std::string shown[2];
   for (int i = 0; i < 2; ++i) {
+    if (!marking()) {
+      shown[i] = answer_text(coords[i], exacts[i]);  // as number's
+      continue;
+    }
     Question q;
     q.field = fmt::format("{}.{}", field, i == 0 ? "x" : "y");
     q.expected = coords[i];
@@ -170,7 +178,7 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
     questions_.push_back(q);
     shown[i] = answer_text(coords[i], e);
   }
-  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::point, {}});
+  if (marking()) fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::point, {}});
   lines_.push_back({id(field), prompt(field),
                     fmt::format("({}{} {})", shown[0], ctx_.numbers.decimal_comma ? "\u00a0;" : ",", shown[1])});
 }

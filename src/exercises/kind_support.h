@@ -82,6 +82,9 @@ class Questions {
   const ExerciseContext& context() const { return ctx_; }
 
  private:
+  // Whether the questions and the sheet's fields are wanted, or (the explorer's views, which
+  // show the key only) the key's answer lines alone.
+  bool marking() const { return ctx_.sheet; }
   const QuestionSpec* spec_for(std::string_view field) const;
   double points_for(std::string_view field) const;
   std::string id(std::string_view field) const;

@@ -87,6 +87,9 @@ namespace detail {
 // nor cheap: Surd reduces √c by trial division. Such values are given in decimals only.
 inline constexpr std::int64_t kMaxRadicand = 100'000'000;
 
+// f's exact form, or none when exact.h's arithmetic overflows. The forms that only grow too
+// large for an exact form (two radicands, a radicand past kMaxRadicand) are told apart before:
+// they are frequent, and a thrown exception costs microseconds (most of all in WebAssembly).
 template <class F>
 std::optional<exact::Surd> attempt(F&& f) {
   try {
@@ -105,23 +108,35 @@ std::optional<exact::Surd> both(const Exact& x, const Exact& y, F&& f) {
 
 inline bool pure(const exact::Surd& x) { return x.a().is_zero() && !x.b().is_zero(); }
 
+// Whether x and y have one radicand (a rational has any): exact.h's sums and products need it.
+inline bool one_radicand(const exact::Surd& x, const exact::Surd& y) {
+  return x.is_rational() || y.is_rational() || x.c() == y.c();
+}
+
+inline std::optional<exact::Surd> add(const exact::Surd& x, const exact::Surd& y) {
+  if (!one_radicand(x, y)) return std::nullopt;
+  return x + y;
+}
+
 // x·y; two pure surds of different radicands make a pure surd: b√c·b'√c' = bb'√(cc').
-inline exact::Surd multiply(const exact::Surd& x, const exact::Surd& y) {
+inline std::optional<exact::Surd> multiply(const exact::Surd& x, const exact::Surd& y) {
   if (pure(x) && pure(y) && x.c() != y.c()) {
-    if (x.c() > kMaxRadicand / y.c()) throw exact::ExactOverflow();
+    if (x.c() > kMaxRadicand / y.c()) return std::nullopt;
     return exact::Surd(exact::Rational(0), x.b() * y.b(), x.c() * y.c());
   }
+  if (!one_radicand(x, y)) return std::nullopt;
   return x * y;
 }
 
 // x / y for surds of one radicand: multiplied by y's conjugate, y·ȳ is rational; a pure surd
 // over another: b√c / b'√c' = (b / (b'c'))·√(cc').
-inline exact::Surd divide(const exact::Surd& x, const exact::Surd& y) {
+inline std::optional<exact::Surd> divide(const exact::Surd& x, const exact::Surd& y) {
   if (y.is_rational()) return x / y.a();
   if (pure(x) && pure(y) && x.c() != y.c()) {
-    if (x.c() > kMaxRadicand / y.c()) throw exact::ExactOverflow();
+    if (x.c() > kMaxRadicand / y.c()) return std::nullopt;
     return exact::Surd(exact::Rational(0), x.b() / (y.b() * exact::Rational(y.c())), x.c() * y.c());
   }
+  if (!one_radicand(x, y)) return std::nullopt;
   const exact::Surd conj(y.a(), -y.b(), y.c());
   const exact::Surd den = y * conj;
   return (x * conj) / den.a();
@@ -130,10 +145,10 @@ inline exact::Surd divide(const exact::Surd& x, const exact::Surd& y) {
 }  // namespace detail
 
 inline Exact operator+(const Exact& x, const Exact& y) {
-  return {x.v + y.v, detail::both(x, y, [](const auto& a, const auto& b) { return a + b; })};
+  return {x.v + y.v, detail::both(x, y, [](const auto& a, const auto& b) { return detail::add(a, b); })};
 }
 inline Exact operator-(const Exact& x, const Exact& y) {
-  return {x.v - y.v, detail::both(x, y, [](const auto& a, const auto& b) { return a - b; })};
+  return {x.v - y.v, detail::both(x, y, [](const auto& a, const auto& b) { return detail::add(a, -b); })};
 }
 inline Exact operator*(const Exact& x, const Exact& y) {
   return {x.v * y.v, detail::both(x, y, [](const auto& a, const auto& b) { return detail::multiply(a, b); })};
@@ -148,12 +163,10 @@ inline Exact operator-(const Exact& x) {
 }
 inline Exact sqrt(const Exact& x) {
   std::optional<exact::Surd> e;
-  if (x.e && x.e->is_rational() && x.e->a().sign() >= 0)
-    e = detail::attempt([&] {
-      const exact::Rational r = x.e->a();
-      if (r.num() > detail::kMaxRadicand / r.den()) throw exact::ExactOverflow();
-      return exact::Surd::sqrt(r);
-    });
+  if (x.e && x.e->is_rational() && x.e->a().sign() >= 0) {
+    const exact::Rational r = x.e->a();
+    if (r.num() <= detail::kMaxRadicand / r.den()) e = detail::attempt([&] { return exact::Surd::sqrt(r); });
+  }
   return {std::sqrt(x.v), e};
 }
 

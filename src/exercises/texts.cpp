@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "embed/embedded.h"
@@ -48,7 +49,10 @@ std::string substitute(std::string_view text, const TextVars& vars) {
       if (!found) throw std::invalid_argument(fmt::format("template needs ${{{}}}, not given", name));
       i = close + 1;
     } else {
-      out += text[i++];
+      // up to the next '$', the text as it is
+      const std::size_t next = std::min(text.find('$', i + 1), text.size());
+      out.append(text, i, next - i);
+      i = next;
     }
   }
   return out;

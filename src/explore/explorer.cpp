@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 #include <variant>
@@ -40,19 +43,28 @@ constexpr double kSnapAngle = 15;  // degrees
 const ExerciseKind& kind_of(const json& instance) {
   if (!instance.is_object() || !instance.contains("kind") || !instance["kind"].is_string())
     throw std::runtime_error("field 'kind': missing");
-  const auto name = instance["kind"].get<std::string>();
-  const ExerciseKind* first = nullptr;
-  for (const ExerciseKind* k : all_kinds()) {
-    if (k->contract_kind() != name) continue;
-    if (first == nullptr) first = k;
+  const auto& name = instance["kind"].get_ref<const std::string&>();
+  std::vector<const ExerciseKind*> candidates;
+  for (const ExerciseKind* k : all_kinds())
+    if (k->contract_kind() == name) candidates.push_back(k);
+  if (candidates.empty()) throw std::runtime_error(fmt::format("field 'kind': no view for '{}'", name));
+  // The kinds of one contract kind read disjoint instances (the contract's vectors: pairs for
+  // one, triples for the other), so whichever order they are tried in, the one that reads it
+  // is the same: the one that read the last instance goes first, and a kind alone is the answer
+  // whether it reads the instance or not. (A read that fails throws: not on every move.)
+  const ExerciseKind* first = candidates.front();
+  if (candidates.size() == 1) return *first;
+  thread_local const ExerciseKind* last = nullptr;
+  if (const auto it = std::find(candidates.begin(), candidates.end(), last); it != candidates.end())
+    std::rotate(candidates.begin(), it, it + 1);
+  for (const ExerciseKind* k : candidates) {
     try {
       k->read_instance(instance);
-      return *k;
+      return *(last = k);
     } catch (const std::exception&) {
       // another kind of that contract kind may read it
     }
   }
-  if (first == nullptr) throw std::runtime_error(fmt::format("field 'kind': no view for '{}'", name));
   return *first;  // its key_of names the field at fault
 }
 
@@ -60,6 +72,21 @@ json parse(std::string_view text) {
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded()) throw std::runtime_error("not a JSON object");
   return j;
+}
+
+// The instance drag returned, as it was before its dump: the view of that instance comes next
+// and need not parse it again.
+struct LastDragged {
+  std::string text;
+  json instance;
+};
+LastDragged& last_dragged() {
+  thread_local LastDragged last;
+  return last;
+}
+const json* as_dragged(std::string_view text) {
+  const LastDragged& last = last_dragged();
+  return !last.text.empty() && text == last.text ? &last.instance : nullptr;
 }
 
 // ---- handles: one per datum, from the solve fields -----------------------------------------
@@ -307,12 +334,20 @@ struct FrameData {
   Box view, rect;
 };
 
-json frame_json(const FrameData& f) {
-  return {{"view", {f.view.x_min, f.view.y_min, f.view.x_max, f.view.y_max}},
-          {"rect", {f.rect.x_min, f.rect.y_min, f.rect.x_max, f.rect.y_max}}};
+// As JSON text; the frame of a drag stays what it was (the view is held still): written once.
+const std::string& frame_text(const FrameData& f) {
+  thread_local FrameData last{};
+  thread_local std::string text;
+  if (text.empty() || std::memcmp(&last, &f, sizeof f) != 0) {  // bits: −0 is not 0 in JSON
+    last = f;
+    text = json{{"view", {f.view.x_min, f.view.y_min, f.view.x_max, f.view.y_max}},
+                {"rect", {f.rect.x_min, f.rect.y_min, f.rect.x_max, f.rect.y_max}}}
+               .dump();
+  }
+  return text;
 }
 
-std::optional<FrameData> frame_from(std::string_view text) {
+std::optional<FrameData> read_frame(std::string_view text) {
   if (text.empty()) return std::nullopt;
   const json j = json::parse(text, nullptr, false);
   const auto box = [&](const char* key, Box& b) {
@@ -327,6 +362,18 @@ std::optional<FrameData> frame_from(std::string_view text) {
   return f;
 }
 
+// The page hands the same frame back on every move of a drag (to drag and to view_parts): it
+// is read once.
+std::optional<FrameData> frame_from(std::string_view text) {
+  thread_local std::string last_text;
+  thread_local std::optional<FrameData> last;
+  if (text != last_text) {
+    last = read_frame(text);
+    last_text = text;
+  }
+  return last;
+}
+
 // The figure point's math coordinates: render::Frame's map, inverted (one scale, y flipped).
 P2 to_math(const FrameData& f, P2 page) {
   const render::Frame frame(f.view, f.rect);
@@ -336,16 +383,22 @@ P2 to_math(const FrameData& f, P2 page) {
 
 // ---- the key as HTML ------------------------------------------------------------------------
 
+// HTML's four special characters escaped, the runs between them appended whole.
+constexpr std::array<bool, 256> kHtmlSpecial = [] {
+  std::array<bool, 256> special{};
+  for (char c : {'&', '<', '>', '"'}) special[static_cast<unsigned char>(c)] = true;
+  return special;
+}();
 void escape_into(std::string& out, std::string_view s) {
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (!kHtmlSpecial[static_cast<unsigned char>(c)]) continue;
+    out.append(s, run, i - run);
+    out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : "&quot;";
+    run = i + 1;
   }
+  out.append(s, run, std::string_view::npos);
 }
 
 // `s` as a JSON string (UTF-8 kept as it is: the texts and figures are valid UTF-8).
@@ -369,19 +422,39 @@ void append_json_string(std::string& out, std::string_view s) {
   out += '"';
 }
 
-// The label markup (t_{ab}, r^{2}, \vec{AB}) as HTML, through the parser every backend uses.
-std::string rich_html(std::string_view rich) {
-  std::string out;
-  for (const auto& run : render::parse_rich_text(rich)) {
-    std::string text;
-    escape_into(text, run.text);
-    if (run.arrow) text = "<span class=\"vec\">" + text + "</span>";
-    if (run.bold) text = "<b>" + text + "</b>";
-    if (run.shift == render::Shift::sub) text = "<sub>" + text + "</sub>";
-    if (run.shift == render::Shift::super) text = "<sup>" + text + "</sup>";
-    out += text;
+// The label markup (t_{ab}, r^{2}, \vec{AB}) as HTML, through the parser every backend uses,
+// appended to `out`: each of parse_rich_text's runs (pieces of one shift and arrow) in its tags.
+class HtmlRuns final : public render::RichSink {
+ public:
+  explicit HtmlRuns(std::string& out) : out_(out) {}
+  ~HtmlRuns() { close(); }
+  void piece(std::string_view text, render::Shift shift, bool arrow) override {
+    if (!open_ || shift != shift_ || arrow != arrow_) {
+      close();
+      open_ = true, shift_ = shift, arrow_ = arrow;
+      if (const char* tag = script()) out_ += '<', out_ += tag, out_ += '>';
+      if (arrow_) out_ += "<span class=\"vec\">";
+    }
+    escape_into(out_, text);
   }
-  return out;
+
+ private:
+  const char* script() const {
+    return shift_ == render::Shift::sub ? "sub" : shift_ == render::Shift::super ? "sup" : nullptr;
+  }
+  void close() {
+    if (!open_) return;
+    if (arrow_) out_ += "</span>";
+    if (const char* tag = script()) out_ += "</", out_ += tag, out_ += '>';
+  }
+  std::string& out_;
+  bool open_ = false, arrow_ = false;
+  render::Shift shift_ = render::Shift::none;
+};
+
+void append_rich_html(std::string& out, std::string_view rich) {
+  HtmlRuns runs(out);
+  render::parse_rich_pieces(rich, runs);
 }
 
 struct KeyView {
@@ -391,17 +464,28 @@ struct KeyView {
 
 KeyView key_view(render::Section& key) {
   KeyView v;
+  std::string& out = v.steps;
   for (auto& block : key.blocks) {
     if (const auto* h = std::get_if<render::Heading>(&block)) {
-      v.steps += fmt::format("<h{0}>{1}</h{0}>\n", h->level + 1, rich_html(h->text));
+      const std::string level = std::to_string(h->level + 1);
+      out += "<h" + level + '>';
+      append_rich_html(out, h->text);
+      out += "</h" + level + ">\n";
     } else if (const auto* p = std::get_if<render::Paragraph>(&block)) {
-      v.steps += fmt::format("<p{}>{}</p>\n", p->emphasis ? " class=\"emphasis\"" : "", rich_html(p->text));
+      out += p->emphasis ? "<p class=\"emphasis\">" : "<p>";
+      append_rich_html(out, p->text);
+      out += "</p>\n";
     } else if (const auto* a = std::get_if<render::AnswerLine>(&block)) {
-      v.steps += fmt::format("<p class=\"answer\" data-question=\"{}\"><span class=\"prompt\">{}</span> {}</p>\n",
-                             a->question_id, rich_html(a->prompt), rich_html(a->answer));
+      out += "<p class=\"answer\" data-question=\"";
+      out += a->question_id;
+      out += "\"><span class=\"prompt\">";
+      append_rich_html(out, a->prompt);
+      out += "</span> ";
+      append_rich_html(out, a->answer);
+      out += "</p>\n";
     } else if (auto* f = std::get_if<render::Figure>(&block)) {
       if (v.figure == nullptr) v.figure = &f->scene;
-      v.steps += "<div class=\"figure-here\"></div>\n";
+      out += "<div class=\"figure-here\"></div>\n";
     }
   }
   return v;
@@ -473,7 +557,9 @@ std::string starting_instance(std::string_view kind_name) {
 
 ViewParts view_parts(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
   try {
-    const json instance = parse(instance_text);
+    json fresh;
+    const json* dragged = as_dragged(instance_text);
+    const json& instance = dragged ? *dragged : (fresh = parse(instance_text));
     const ExerciseKind& kind = kind_of(instance);
     const ExerciseSpec spec = exercise_spec(kind.name());
     const Texts& texts = Texts::builtin(language);
@@ -502,11 +588,11 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
     out.head += ",\"solution\":";
     out.head += key.solution;  // JSON already: the solve output
     out.head += ",\"frame\":";
-    out.head += frame_json(frame).dump();
+    out.head += frame_text(frame);
     out.head += ",\"handles\":";
     out.head += hs.dump();
     out.head += in_space(instance) ? ",\"space\":true}" : ",\"space\":false}";
-    out.svg = with_handles(render::scene_to_svg(scene, kFigureWidth), handles, frame);
+    out.svg = with_handles(render::scene_to_svg(scene, kFigureWidth, layout), handles, frame);
     out.steps = std::move(kv.steps);
     return out;
   } catch (const std::exception& e) {
@@ -534,7 +620,10 @@ std::string drag(std::string_view instance_text, std::string_view handle, double
   const json instance = parse(instance_text);
   const auto frame = frame_from(frame_text);
   if (!frame || !std::isfinite(x) || !std::isfinite(y)) return std::string(instance_text);
-  return moved(instance, handle, to_math(*frame, {x, y}), snap, height).dump();
+  LastDragged& last = last_dragged();
+  last.instance = moved(instance, handle, to_math(*frame, {x, y}), snap, height);
+  last.text = last.instance.dump();
+  return last.text;
 }
 
 std::string nudge(std::string_view instance_text, std::string_view handle, int dx, int dy, int dz, bool snap) {

@@ -96,7 +96,14 @@ class Placer {
   Placer(const Obstacles& obstacles, const Box& area)
       : obstacles_(obstacles),
         area_{area.x_min + kAreaMargin, area.y_min + kAreaMargin, area.x_max - kAreaMargin,
-              area.y_max - kAreaMargin} {}
+              area.y_max - kAreaMargin} {
+    // The strokes' bounding boxes once: every candidate of every label is tested against all of
+    // them (hundreds in a sphere's figure), and most are rejected on these alone.
+    stroke_bounds_.reserve(obstacles.segments.size());
+    for (const auto& s : obstacles.segments)
+      stroke_bounds_.push_back({std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x),
+                                std::max(s.a.y, s.b.y)});
+  }
 
   Placement place(const LabelRequest& r) {
     above_ = r.type_above;
@@ -212,8 +219,11 @@ class Placer {
     for (const auto& d : obstacles_.discs) {
       if (disc_hits_box(d.c, d.r, c)) return false;
     }
-    for (const auto& s : obstacles_.segments) {
-      if (segment_hits_box(s.a, s.b, c)) return false;
+    for (std::size_t i = 0; i < stroke_bounds_.size(); ++i) {  // segment_hits_box, its bounds made
+      const Box& sb = stroke_bounds_[i];
+      if (sb.x_max < c.x_min || sb.x_min > c.x_max || sb.y_max < c.y_min || sb.y_min > c.y_max) continue;
+      double t0 = 0, t1 = 0;
+      if (clip_segment(obstacles_.segments[i].a, obstacles_.segments[i].b, c, t0, t1)) return false;
     }
     return true;
   }
@@ -238,6 +248,7 @@ class Placer {
   }
 
   const Obstacles& obstacles_;
+  std::vector<Box> stroke_bounds_;  // of obstacles_.segments, in order
   Box area_;
   std::vector<Box> placed_;
   std::vector<Box> placed_types_;  // the same labels' type boxes

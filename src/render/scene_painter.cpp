@@ -132,11 +132,19 @@ P2 side_direction(Side s) {
 // A grid number as printed: at most two decimals, no trailing zeros, a true minus sign.
 std::string axis_number(double v) {
   char buf[32];
-  // fmt's fixed format is exact, as std::to_chars's is (portable.h: not every libc++ has it)
-  const auto r = fmt::format_to_n(buf, sizeof buf, "{:.2f}", std::abs(v));
-  std::string_view s(buf, static_cast<std::size_t>(r.out - buf));
-  while (s.back() == '0') s.remove_suffix(1);
-  if (s.back() == '.') s.remove_suffix(1);
+  std::string_view s;
+  if (const double a = std::abs(v); a == std::trunc(a) && a < 1e15) {
+    // most grid numbers are whole: their digits, as fmt's would be once trimmed, without it
+    char* p = std::end(buf);
+    for (auto n = static_cast<long long>(a); p == std::end(buf) || n != 0; n /= 10) *--p = static_cast<char>('0' + n % 10);
+    s = std::string_view(p, static_cast<std::size_t>(std::end(buf) - p));
+  } else {
+    // fmt's fixed format is exact, as std::to_chars's is (portable.h: not every libc++ has it)
+    const auto r = fmt::format_to_n(buf, sizeof buf, "{:.2f}", a);
+    s = std::string_view(buf, static_cast<std::size_t>(r.out - buf));
+    while (s.back() == '0') s.remove_suffix(1);
+    if (s.back() == '.') s.remove_suffix(1);
+  }
   if (s == "0" || v > 0) return std::string(s);
   return "\u2212" + std::string(s);
 }
@@ -843,8 +851,11 @@ int SceneReport::unclean() const {
 
 SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, double width,
                         const Style& style) {
+  return paint_scene(canvas, scene, layout_scene(scene, x, y, width, style), style);
+}
+
+SceneReport paint_scene(Canvas& canvas, const Scene& scene, const SceneLayout& layout, const Style& style) {
   SceneReport report;
-  const SceneLayout layout = layout_scene(scene, x, y, width, style);
   for (std::size_t i = 0; i < scene.panels.size(); ++i) {
     report.panels.push_back(PanelPainter(canvas, scene.panels[i], layout.panels[i], style).paint());
   }

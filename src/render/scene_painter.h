@@ -75,5 +75,9 @@ struct SceneReport {
 
 SceneReport paint_scene(Canvas& canvas, const Scene& scene, double x, double y, double width,
                         const Style& style = Style::print());
+// The same in a layout already made (layout_scene(scene, x, y, width, style)): a caller that
+// needs the layout too makes it once.
+SceneReport paint_scene(Canvas& canvas, const Scene& scene, const SceneLayout& layout,
+                        const Style& style = Style::print());
 
 }  // namespace epure::render

@@ -91,7 +91,7 @@ void SvgCanvas::path(const Path& path, const Paint& paint) {
   buffer_.clear();
   append_path_data(buffer_, path);
   w_.open("path");
-  w_.attribute("d", buffer_);
+  w_.plain_attribute("d", buffer_);
   paint_attributes(paint);
   w_.close_empty();
 }
@@ -141,18 +141,19 @@ void SvgCanvas::text(const TextLine& line) {
   w_.end("text");
 }
 
-SceneReport draw_scene(SvgWriter& writer, const Scene& scene, double x, double y, double width,
-                       const Style& style) {
+namespace {
+
+SceneReport draw_in(SvgWriter& writer, const Scene& scene, const SceneLayout& layout, const Style& style) {
   SvgCanvas canvas(writer);
   writer.start("g", {{"id", writer.next_id("figure")}, {"class", "figure"}});
-  SceneReport report = paint_scene(canvas, scene, x, y, width, style);
+  SceneReport report = paint_scene(canvas, scene, layout, style);
   writer.end("g");
   return report;
 }
 
-std::string scene_to_svg(const Scene& scene, double width_pt, SceneReport& report,
-                         const Style& style) {
-  const double height = scene_height(scene, width_pt, style);
+std::string document(const Scene& scene, double width_pt, const SceneLayout& layout, SceneReport& report,
+                     const Style& style) {
+  const double height = layout.height;
   SvgWriter w;
   w.declaration();
   w.start("svg", {{"xmlns", "http://www.w3.org/2000/svg"},
@@ -165,14 +166,31 @@ std::string scene_to_svg(const Scene& scene, double width_pt, SceneReport& repor
   w.element("title", {}, scene.title);
   w.element("desc", {}, scene.description);
   w.element("rect", {{"width", width_pt}, {"height", height}, {"fill", style.background.hex()}});
-  report = draw_scene(w, scene, 0, 0, width_pt, style);
+  report = draw_in(w, scene, layout, style);
   w.end("svg");
   return w.finish();
+}
+
+}  // namespace
+
+SceneReport draw_scene(SvgWriter& writer, const Scene& scene, double x, double y, double width,
+                       const Style& style) {
+  return draw_in(writer, scene, layout_scene(scene, x, y, width, style), style);
+}
+
+std::string scene_to_svg(const Scene& scene, double width_pt, SceneReport& report,
+                         const Style& style) {
+  return document(scene, width_pt, layout_scene(scene, 0, 0, width_pt, style), report, style);
 }
 
 std::string scene_to_svg(const Scene& scene, double width_pt, const Style& style) {
   SceneReport report;
   return scene_to_svg(scene, width_pt, report, style);
+}
+
+std::string scene_to_svg(const Scene& scene, double width_pt, const SceneLayout& layout, const Style& style) {
+  SceneReport report;
+  return document(scene, width_pt, layout, report, style);
 }
 
 }  // namespace epure::render

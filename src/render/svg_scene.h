@@ -45,5 +45,9 @@ std::string scene_to_svg(const Scene& scene, double width_pt, const Style& style
 // The same, with the label report (for tests and the demo).
 std::string scene_to_svg(const Scene& scene, double width_pt, SceneReport& report,
                          const Style& style = Style::print());
+// The same in a layout already made (layout_scene(scene, 0, 0, width_pt, style)), for a caller
+// that needs it too (the explorer maps the pointer with its first panel).
+std::string scene_to_svg(const Scene& scene, double width_pt, const SceneLayout& layout,
+                         const Style& style = Style::print());
 
 }  // namespace epure::render

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -239,6 +240,16 @@ void SvgWriter::attribute(std::string_view name, std::string_view value) {
   out_ += name;
   out_ += "=\"";
   append_escaped(out_, value, true);
+  out_ += '"';
+}
+
+void SvgWriter::plain_attribute(std::string_view name, std::string_view value) {
+  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
+  assert(std::all_of(value.begin(), value.end(), [](char c) { return kPlainByte[static_cast<unsigned char>(c)]; }));
+  out_ += ' ';
+  out_ += name;
+  out_ += "=\"";
+  out_ += value;
   out_ += '"';
 }
 

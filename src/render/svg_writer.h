@@ -69,6 +69,9 @@ class SvgWriter {
   void open(std::string_view tag);
   void attribute(std::string_view name, std::string_view value);
   void attribute(std::string_view name, double value);
+  // A value with nothing to escape, by construction (path data: numbers, spaces and command
+  // letters), copied as it is: a figure's paths are most of its bytes.
+  void plain_attribute(std::string_view name, std::string_view value);
   void close_empty();
   void close_start();
   void close_start_inline();

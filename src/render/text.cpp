@@ -31,22 +31,30 @@ std::size_t closing_brace(std::string_view s, std::size_t open) {
   return npos;
 }
 
-class Parser {
+// The runs of parse_rich_text: consecutive pieces of one shift and arrow make one run.
+class RunSink final : public RichSink {
  public:
-  Parser(std::string_view s, bool bold) : s_(s), bold_(bold) {}
-
-  std::vector<TextRun> run() && {
-    parse(0, s_.size(), Shift::none, false);
-    return std::move(out_);
+  explicit RunSink(bool bold) : bold_(bold) {}
+  void piece(std::string_view text, Shift shift, bool arrow) override {
+    if (out.empty() || out.back().shift != shift || out.back().arrow != arrow) {
+      out.push_back(TextRun{std::string(), shift, arrow, bold_});
+    }
+    out.back().text += text;
   }
+  std::vector<TextRun> out;
 
  private:
-  void emit(std::string_view text, Shift shift, bool arrow) {
-    if (out_.empty() || out_.back().shift != shift || out_.back().arrow != arrow) {
-      out_.push_back(TextRun{std::string(), shift, arrow, bold_});
-    }
-    out_.back().text += text;
-  }
+  bool bold_;
+};
+
+class Parser {
+ public:
+  Parser(std::string_view s, RichSink& sink) : s_(s), sink_(sink) {}
+
+  void run() { parse(0, s_.size(), Shift::none, false); }
+
+ private:
+  void emit(std::string_view text, Shift shift, bool arrow) { sink_.piece(text, shift, arrow); }
 
   // Parses s_[begin, end); a group inherits its parent's shift (no script of a script) and arrow.
   void parse(std::size_t begin, std::size_t end, Shift shift, bool arrow) {
@@ -85,8 +93,7 @@ class Parser {
   }
 
   std::string_view s_;
-  bool bold_;
-  std::vector<TextRun> out_;
+  RichSink& sink_;
 };
 
 double advance_sum(std::string_view text, Face face) {
@@ -268,8 +275,12 @@ TextExtent text_extent(std::span<const TextRun> runs, double font_size) {
 }
 
 std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight) {
-  return Parser(rich, weight == Weight::bold).run();
+  RunSink runs(weight == Weight::bold);
+  Parser(rich, runs).run();
+  return std::move(runs.out);
 }
+
+void parse_rich_pieces(std::string_view rich, RichSink& sink) { Parser(rich, sink).run(); }
 
 double text_width(std::span<const TextRun> runs, double font_size) {
   double width = 0;

@@ -24,6 +24,18 @@ enum class Weight { regular, bold };
 // Parses the markup; unbalanced braces are taken literally (a label never fails to draw).
 std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight = Weight::regular);
 
+// The same parse as pieces of text, in order, each with its shift and arrow: what
+// parse_rich_text gathers into runs (consecutive pieces of one shift and arrow make one run),
+// for a writer that needs no runs (the explorer's HTML).
+class RichSink {
+ public:
+  virtual void piece(std::string_view text, Shift shift, bool arrow) = 0;
+
+ protected:
+  ~RichSink() = default;
+};
+void parse_rich_pieces(std::string_view rich, RichSink& sink);
+
 // Sub- and superscripts are set at this fraction of the font size, shifted by these fractions.
 inline constexpr double kScriptScale = 0.7;
 inline constexpr double kSubShift = 0.25;    // down, × font size
