@@ -22,6 +22,18 @@ std::string number_text(double x) {
   if (x == 0) x = 0;  // one spelling for ±0
   return fmt::format("{}", x);
 }
+
+// The question's exact form in both writings; `exact` dropped when it outgrows exact.h's machine
+// form (answer_text then shows the rounding alone).
+void take_exact(Question& q, std::optional<exact::Surd>& exact) {
+  if (!exact) return;
+  try {
+    q.exact = exact->machine();
+    q.exact_pretty = exact->pretty();
+  } catch (const exact::ExactOverflow&) {
+    exact.reset();
+  }
+}
 }  // namespace
 
 InstanceWriter& InstanceWriter::number(std::string_view field, double x) {
@@ -124,14 +136,7 @@ void Questions::number(std::string_view field, double value, double abs_toleranc
     Question q;
     q.field = std::string(field);
     q.expected = value;
-    if (exact) {
-      try {
-        q.exact = exact->machine();
-        q.exact_pretty = exact->pretty();
-      } catch (const exact::ExactOverflow&) {
-        exact.reset();
-      }
-    }
+    take_exact(q, exact);
     const QuestionSpec* spec = spec_for(field);
     q.tolerance = isclose_rule(abs_tolerance, ctx_.decimals, spec);
     if (q.tolerance.kind == ToleranceRule::Kind::distance) q.tolerance.kind = ToleranceRule::Kind::isclose;
@@ -159,14 +164,7 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
     q.expected = coords[i];
     q.point_group = std::string(field);
     std::optional<exact::Surd> e = exacts[i];
-    if (e) {
-      try {
-        q.exact = e->machine();
-        q.exact_pretty = e->pretty();
-      } catch (const exact::ExactOverflow&) {
-        e.reset();
-      }
-    }
+    take_exact(q, e);
     q.tolerance = isclose_rule(tols[i], ctx_.decimals, spec);
     if (q.tolerance.kind == ToleranceRule::Kind::distance) {
       // as a whole: within the distance that both coordinates' tolerances allow together
