@@ -35,7 +35,7 @@ EPURE_FMA_KERNEL RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere
 }
 
 EPURE_FMA_KERNEL PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere,
-                                                    const RaySphere& res, double length) {
+                                                            const RaySphere& res, double length) {
   return detail::printed_values(ray, sphere.C, sphere.r, res, length);
 }
 

@@ -41,7 +41,7 @@ RayCube intersect_canonical_cube(const Ray3& ray);
 RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere);
 // As printed_values for the circle (ray_circle.h).
 PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
-                                   double length);
+                                           double length);
 RayCube intersect_canonical_cube_exact(const Ray3& ray);
 
 }  // namespace epure::geo

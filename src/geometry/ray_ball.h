@@ -399,10 +399,11 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
     radial[i] = dd_sum(dd_quotient(dd_product(t, {u_parts[i], 0}), length_u), {-ac_hi[i], -ac_lo[i]});
     radial2 = dd_sum(radial2, dd_product(radial[i], radial[i]));
   }
+  // each coordinate of I − C within this of itself
+  const double e_radial = e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss);
   // I = C + (I − C): A + t·û rounds t·û, and t itself is a length of up to 4 ulps of S, so the
   // kernel's I can reach 5 ulps where t·û is large beside S (an origin inside, a long chord).
   // Each coordinate within the radial's error plus the sum's rounding.
-  const double e_radial = e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss);
   const auto c_parts = parts(times_pow2(C, -e));
   auto I = parts(out.I);
   for (std::size_t i = 0; i < I.size(); ++i) {
@@ -413,7 +414,7 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
   out.I = point_from_parts(I);
   const DD radial_length = dd_sqrt(radial2);
   if (!(radial_length.hi > 0.5 * rs)) return out;  // not on the circle: a decision's, not a rounding
-  const double e_n = 2 * (e_t + 0x1p-96 * (std::abs(t.hi) + 2 * Ss)) / radial_length.hi + 0x1p-100;
+  const double e_n = 2 * e_radial / radial_length.hi + 0x1p-100;
   const double allowed_n = 4 * std::max(0x1p-52, ulp_at(Ss) / rs * (1 - 0x1p-50));
   auto N = parts(out.N);
   for (std::size_t i = 0; i < N.size(); ++i)

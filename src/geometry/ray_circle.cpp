@@ -18,7 +18,7 @@ EPURE_FMA_KERNEL RayCircle intersect_exact(const Ray2& ray, const Circle& circle
 }
 
 EPURE_FMA_KERNEL PrintedValues<Vec2, Point2> printed_values(const Ray2& ray, const Circle& circle,
-                                                    const RayCircle& res, double length) {
+                                                            const RayCircle& res, double length) {
   return detail::printed_values(ray, circle.C, circle.r, res, length);
 }
 

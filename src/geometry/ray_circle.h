@@ -53,9 +53,8 @@ RayCircle intersect_canonical_circle_exact(const Ray2& ray);
 // The values `epure solve` prints that its kernels can leave beyond 4 ulps: t_proj·‖u‖ and, with
 // a hit, t·‖u‖, I and N, `length` being ‖u‖ as the caller rounds it and res either kernel's
 // result for this ray and circle. Each is res's own (res.t_proj·length, hit->t·length, hit->I,
-// hit->N)
-// wherever it is within 4 ulps of max(S, |·|) (S the largest of |A|, |C| and r; N·r as a
-// length), otherwise the accurate value, rounded (ray_ball.h). The decisions are res's.
+// hit->N) wherever it is within 4 ulps of max(S, |·|) (S the largest of |A|, |C| and r; N·r as
+// a length), otherwise the accurate value, rounded (ray_ball.h). The decisions are res's.
 template <class V, class P>
 struct PrintedValues {
   double t_proj;
@@ -64,6 +63,6 @@ struct PrintedValues {
   V N;       // with a hit
 };
 PrintedValues<Vec2, Point2> printed_values(const Ray2& ray, const Circle& circle, const RayCircle& res,
-                                   double length);
+                                           double length);
 
 }  // namespace epure::geo
