@@ -120,6 +120,9 @@ Sheet WorksheetSet::rebuild(const SheetId& id) {
 
 namespace {
 
+// A student's sheet on two sheets of paper, printed duplex (issue 18's budget).
+constexpr int kSheetPageBudget = 4;
+
 render::PageSize page_size(const std::string& page) {
   return page == "letter" ? render::PageSize::letter() : render::PageSize::a4();
 }
@@ -139,6 +142,7 @@ render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
   doc.sheet_id = sheet.id.str();
   doc.language = language_;
   doc.student_fields = true;
+  doc.page_budget = kSheetPageBudget;
   doc.words = page_words(texts);
   doc.page = page_size(spec_.page);
   render::Section intro;

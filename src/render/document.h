@@ -85,6 +85,10 @@ struct Document {
   // The first page's name and student number fields, drawn as writing lines with
   // words.name and words.student_number: set for a student's sheet, left off for a key.
   bool student_fields = false;
+  // The most pages the document should take, 0 for no limit: a student's sheet is two sheets of
+  // paper printed duplex. The layout meets it, where it can, by setting its tallest figures
+  // smaller (layout.h), never by crowding the text.
+  int page_budget = 0;
   PageWords words;
   PageSize page;
   std::vector<Section> sections;

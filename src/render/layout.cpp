@@ -1282,7 +1282,18 @@ class Builder {
 }  // namespace
 
 std::vector<LaidOutPage> layout_document(const Document& doc, const LayoutStyle& style) {
-  return Builder(doc, style).run();
+  std::vector<LaidOutPage> pages = Builder(doc, style).run();
+  const auto budget = static_cast<std::size_t>(std::max(doc.page_budget, 0));
+  if (budget == 0 || pages.size() <= budget || !(style.figure_height_step > 0)) return pages;
+  // The caps in whole steps from the first, so that every platform tries the same doubles.
+  for (int step = 1;; ++step) {
+    LayoutStyle lower = style;
+    lower.figure_max_height = style.figure_max_height - step * style.figure_height_step;
+    if (lower.figure_max_height < style.figure_min_height - kFitSlack) break;
+    std::vector<LaidOutPage> fewer = Builder(doc, lower).run();
+    if (fewer.size() <= budget) return fewer;
+  }
+  return pages;
 }
 
 }  // namespace epure::render

@@ -150,13 +150,22 @@ struct LayoutStyle {
   // A figure never takes more than this share of a page's text height, so that the paragraph
   // it belongs to still fits above it.
   double figure_max_height = 0.55;
+  // A document over its page budget (Document::page_budget) is laid out again with that share
+  // lowered by this step, down to figure_min_height, and the first that meets the budget is set;
+  // when none does, the figures keep their height. Only a figure whose data are taller than wide
+  // reaches the cap: at 0.4 (286 pt on A4, 10 cm) it is still the tallest figure of a sheet,
+  // with a grid unit of about a centimetre, so there is room to draw on it.
+  double figure_min_height = 0.4;
+  double figure_height_step = 0.05;
   double figure_space = 6;         // above and below a figure (a frame needs more air than text)
   // A figure followed by answer fields (or a key's answers) gets them in a column on its right
   // when they fit there; the figure is then narrowed, but never below this share of the text width.
   double figure_min_share = 0.42;
 };
 
-// Lays out the whole document. Deterministic: the same Document and style give the same pages.
+// Lays out the whole document, within its page budget where lowering the figures' height cap
+// (figure_max_height, down to figure_min_height) achieves it. Deterministic: the same Document and
+// style give the same pages.
 std::vector<LaidOutPage> layout_document(const Document& doc, const LayoutStyle& style = {});
 
 }  // namespace epure::render

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <set>
 #include <string>
@@ -764,5 +765,92 @@ TEST_CASE("layout: a statement beside its figure when that makes the exercise sh
     CHECK(heading_on_first);
     CHECK(pages[1].figures.size() == 1);
     for (const auto& page : pages) check_inside(page, style);
+  }
+}
+
+namespace {
+
+// A section whose figure's data are four times taller than wide, so that the height cap, not
+// the width, sets its size; and one with an ordinary figure.
+Section tall_exercise(int n) {
+  Section s;
+  s.add(Heading{fmt::format("Exercise {} — projection", n), 1});
+  s.add(Paragraph{kText, false});
+  s.add(Figure{square_scene(4, 16), 0.6});
+  s.add(AnswerField{fmt::format("{}.t", n), "t =", AnswerField::Kind::number, {}});
+  return s;
+}
+
+double tallest_figure(const std::vector<LaidOutPage>& pages) {
+  double h = 0;
+  for (const auto& p : pages)
+    for (const auto& f : p.figures) h = std::max(h, f.rect.height);
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("layout: a document over its page budget sets its tallest figures smaller, down to a floor") {
+  const LayoutStyle style;
+  const double text_height = PageSize::a4().height_pt - style.margin_top - style.margin_bottom -
+                             style.header_height - style.header_gap;
+  // Documents of an ordinary exercise and two tall ones, repeated, until one whose budget (its
+  // pages at full height, less one) a lower cap meets.
+  Document doc = sample(0);
+  std::vector<LaidOutPage> full, fitted;
+  bool found = false;
+  std::size_t ordinary = 0;
+  for (int n = 1; n <= 12 && !found; ++n) {
+    const bool tall = n % 3 != 1;
+    doc.sections.push_back(tall ? tall_exercise(n) : exercise(n));
+    ordinary += tall ? 0 : 1;
+    doc.page_budget = 0;
+    full = layout_document(doc, style);
+    doc.page_budget = static_cast<int>(full.size()) - 1;
+    fitted = layout_document(doc, style);
+    found = fitted.size() <= full.size() - 1;
+  }
+  REQUIRE(found);
+  CAPTURE(doc.sections.size());
+  const double full_tall = tallest_figure(full), fitted_tall = tallest_figure(fitted);
+  CHECK(full_tall == doctest::Approx(style.figure_max_height * text_height).epsilon(0.02));
+  CHECK(fitted_tall < full_tall - 1);
+  CHECK(fitted_tall >= style.figure_min_height * text_height - 1);
+  for (const auto& page : fitted) check_inside(page, style);
+
+  SUBCASE("the cap is the first step down that meets the budget") {
+    int met = 0;
+    for (int step = 1; step <= 3 && met == 0; ++step) {
+      LayoutStyle lower = style;
+      lower.figure_max_height = style.figure_max_height - step * style.figure_height_step;
+      Document unbudgeted = doc;
+      unbudgeted.page_budget = 0;
+      const auto pages = layout_document(unbudgeted, lower);
+      if (pages.size() <= static_cast<std::size_t>(doc.page_budget)) {
+        met = step;
+        CHECK(dump(pages) == dump(fitted));
+      }
+    }
+    CHECK(met > 0);
+  }
+  SUBCASE("the ordinary figures keep their size") {
+    std::multiset<long> ordinary_full, ordinary_fitted;
+    for (const auto& [pages, sizes] : {std::pair{&full, &ordinary_full}, std::pair{&fitted, &ordinary_fitted}})
+      for (const auto& p : *pages)
+        for (const auto& f : p.figures)
+          if (f.rect.height < style.figure_min_height * text_height - 1) sizes->insert(std::lround(f.rect.height * 1000));
+    CHECK(ordinary_full.size() == ordinary);
+    CHECK(ordinary_full == ordinary_fitted);
+  }
+  SUBCASE("within its budget, or past what the floor can do, the document is laid out as without one") {
+    Document unbudgeted = doc;
+    unbudgeted.page_budget = 0;
+    Document roomy = doc;
+    roomy.page_budget = static_cast<int>(full.size());
+    CHECK(dump(layout_document(roomy, style)) == dump(full));
+    Document tight = doc;
+    tight.page_budget = 1;
+    CHECK(dump(layout_document(tight, style)) == dump(full));
+    CHECK(dump(layout_document(unbudgeted, style)) == dump(full));
   }
 }
