@@ -39,14 +39,19 @@ measure floor "$work/floor-svg" taskset -c "$cpu" "$work/floor" svg "$sheets" "$
 measure epure "$work/epure" taskset -c "$cpu" "$epure" generate "${spec_args[@]}" --format svg \
   --sheets "$sheets" --jobs 1 --quiet --out "$work/epure"
 
+# pages: the floor writes one page a file; epure's SVGs stack a document's pages, one
+# class="page" group each
+fp=$(find "$work/floor-svg" -name '*.svg' | wc -l)
+ep=$(cat "$work/epure"/sheets/*.svg "$work/epure"/keys/*.svg | grep -o 'class="page"' | wc -l)
 fb=$(du -sb "$work/floor-svg" | cut -f1)
 eb=$(du -sb "$work/epure" | cut -f1)
 read -r fw fu < "$work/floor.median"
 read -r ew eu < "$work/epure.median"
-python3 - "$sheets" "$fb" "$eb" "$fw" "$fu" "$ew" "$eu" "${spec:-built-in course}" <<'PY'
+python3 - "$sheets" "$fb" "$eb" "$fw" "$fu" "$ew" "$eu" "${spec:-built-in course}" "$fp" "$ep" <<'PY'
 import sys
 n, fb, eb = map(int, sys.argv[1:4])
 fw, fu, ew, eu = map(float, sys.argv[4:8])
+fp, ep = map(int, sys.argv[9:11])
 print(f"{n} sheets, spec: {sys.argv[8]}; floor writes {fb / n / 1024:.1f} KiB a sheet, epure {eb / n / 1024:.1f} KiB")
 print("| program | wall | user CPU | per sheet (wall) |")
 print("|---|---|---|---|")
@@ -54,4 +59,6 @@ for name, w, u in (("floor `svg`", fw, fu), ("epure --format svg --jobs 1", ew, 
     print(f"| {name} | {w:.2f} s | {u:.2f} s | {1000 * w / n:.2f} ms |")
 print(f"ratio: {ew / fw:.2f}x the floor's wall time (target <= 1.8x), {eu / max(fu, 0.01):.1f}x its user CPU; "
       f"per KiB written: {(ew / eb) / (fw / fb):.2f}x")
+print(f"per page: floor {fp} pages, {1000 * fw / fp:.3f} ms a page; epure {ep} pages ({ep / n:.1f} a sheet), "
+      f"{1000 * ew / ep:.3f} ms a page; {(ew / ep) / (fw / fp):.2f}x the floor's time per page (target <= 2.0x)")
 PY

@@ -1,5 +1,6 @@
 #include "output/generate.h"
 
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <span>
@@ -22,8 +23,14 @@ namespace epure::output {
 namespace {
 
 // Sheets drawn and written per round: enough to keep every job busy, few enough that memory
-// stays flat whatever the size of the set.
+// stays flat whatever the size of the set. The first rounds are smaller, so that the class-set
+// PDFs' drawing, the longest part of a set, starts early (batch_size).
 constexpr int kBatch = 64;
+constexpr int kFirstBatch = 8;
+
+// Round k's number of sheets: 8, 16, 32, then 64. The bytes written do not depend on it: every
+// sheet is drawn from its index, and written in index order.
+int batch_size(int round) { return round >= 3 ? kBatch : std::min(kBatch, kFirstBatch << round); }
 
 // A sheet's two documents and their pages; the pages point into the documents' scenes. The
 // key's links (to explore.html, when the set has it) go into the class set's keys.pdf.
@@ -74,31 +81,45 @@ struct Batch {
   std::vector<Printed> printed;
 };
 
-// sheets.pdf and keys.pdf. A cairo surface is drawn by one thread, in page order, so with two
-// jobs or more each file gets a thread of its own (each document has its own pango font map),
-// and a batch is drawn while the next one is generated and laid out. With one job, in line.
-// Either way the pages go in id order: the bytes do not depend on the number of jobs.
+// sheets.pdf and keys.pdf. A cairo surface is drawn by one thread at a time, in page order, and
+// keys.pdf is the longest to draw (about half the CPU of a PDF set: a key has more pages, and
+// more on them, than its sheet). So with two jobs or more keys.pdf has a thread of its own,
+// drawing one batch while the caller generates the next. With two jobs and no SVG to write, the
+// caller draws sheets.pdf itself between batches: generation, layout and sheets.pdf take about
+// as long as keys.pdf, and the two cores stay busy without a third thread taking turns with
+// keys.pdf's. With SVG pages to write as well, or three jobs or more, sheets.pdf has a thread
+// too. With one job, in line. Either way the pages go in id order: the bytes do not depend on
+// the number of jobs.
 class ClassSetWriter {
  public:
   ClassSetWriter(const GenerateOptions& o, const WorksheetSpec& spec, const Printed& first)
       : duplex_(o.duplex),
-        threaded_(o.jobs > 1),
+        keys_threaded_(o.jobs >= 2),
+        sheets_threaded_(o.jobs >= 3 || (o.jobs == 2 && o.svg)),
         sheets_(o.out / "sheets.pdf", pdf_metadata(spec, first.sheet.title, o), first.sheet.page),
         keys_(o.out / "keys.pdf", pdf_metadata(spec, first.key.title, o), first.key.page) {}
 
+  // The jobs left for generating and laying out sheets while the PDFs are drawn.
+  static int generation_jobs(int jobs) { return std::max(1, jobs - 2); }
+
   // Waits for the batch before (and rethrows its error), then draws this one.
-  void add(std::unique_ptr<Batch> batch) {
-    wait();
-    batch_ = std::move(batch);
-    if (!threaded_) {
-      draw(sheets_, &Printed::sheet_pages, &Printed::sheet_links);
-      draw(keys_, &Printed::key_pages, &Printed::key_links);
+  void add(std::shared_ptr<const Batch> batch) {
+    if (!keys_threaded_) {
+      draw(sheets_, *batch, &Printed::sheet_pages, &Printed::sheet_links);
+      draw(keys_, *batch, &Printed::key_pages, &Printed::key_links);
       return;
     }
-    sheets_thread_ = std::jthread(
-        [this] { guarded(sheets_error_, [this] { draw(sheets_, &Printed::sheet_pages, &Printed::sheet_links); }); });
-    keys_thread_ = std::jthread(
-        [this] { guarded(keys_error_, [this] { draw(keys_, &Printed::key_pages, &Printed::key_links); }); });
+    wait();
+    keys_thread_ = std::jthread([this, batch] {
+      guarded(keys_error_, [&] { draw(keys_, *batch, &Printed::key_pages, &Printed::key_links); });
+    });
+    if (sheets_threaded_) {
+      sheets_thread_ = std::jthread([this, batch] {
+        guarded(sheets_error_, [&] { draw(sheets_, *batch, &Printed::sheet_pages, &Printed::sheet_links); });
+      });
+    } else {
+      draw(sheets_, *batch, &Printed::sheet_pages, &Printed::sheet_links);
+    }
   }
 
   void commit() {
@@ -110,9 +131,9 @@ class ClassSetWriter {
  private:
   using Pages = std::vector<render::LaidOutPage> Printed::*;
   using Links = std::vector<render::PageLink> Printed::*;
-  void draw(ClassSetPdf& pdf, Pages pages, Links links) {
-    for (std::size_t i = 0; i < batch_->ids.size(); ++i)
-      pdf.add(batch_->printed[i].*pages, batch_->ids[i], duplex_, batch_->printed[i].*links);
+  void draw(ClassSetPdf& pdf, const Batch& batch, Pages pages, Links links) {
+    for (std::size_t i = 0; i < batch.ids.size(); ++i)
+      pdf.add(batch.printed[i].*pages, batch.ids[i], duplex_, batch.printed[i].*links);
   }
   template <class Fn>
   static void guarded(std::exception_ptr& error, Fn&& fn) {
@@ -129,9 +150,8 @@ class ClassSetWriter {
       if (*e) std::rethrow_exception(std::exchange(*e, nullptr));
   }
 
-  const bool duplex_, threaded_;
+  const bool duplex_, keys_threaded_, sheets_threaded_;
   ClassSetPdf sheets_, keys_;
-  std::unique_ptr<Batch> batch_;
   std::exception_ptr sheets_error_, keys_error_;
   // Declared last, so joined first when an error unwinds: nothing they use is gone before them.
   std::jthread sheets_thread_, keys_thread_;
@@ -162,14 +182,18 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   GenerateReport report;
   std::unique_ptr<ClassSetWriter> class_set;
 
-  for (int start = 0; start < options.sheets; start += kBatch) {
-    const int count = std::min(kBatch, options.sheets - start);
+  // While a class-set PDF is drawn on threads of its own, the rest of the jobs generate.
+  const bool class_set_pdf = options.pdf && !options.split;
+  const int jobs = class_set_pdf ? ClassSetWriter::generation_jobs(options.jobs) : options.jobs;
+
+  for (int start = 0, round = 0; start < options.sheets; start += batch_size(round++)) {
+    const int count = std::min(batch_size(round), options.sheets - start);
     // 1. branches (sequential and cheap), then attempt 0 of every exercise, in parallel
     std::vector<std::string> branches(static_cast<std::size_t>(count * slots));
     for (int i = 0; i < count; ++i)
       for (int s = 0; s < slots; ++s) branches[i * slots + s] = set.branch(start + i, s);
     std::vector<std::vector<ExerciseInstance>> drawn(count, std::vector<ExerciseInstance>(slots));
-    parallel_for(count * slots, options.jobs, [&](int k) {
+    parallel_for(count * slots, jobs, [&](int k) {
       const int i = k / slots, s = k % slots;
       drawn[i][s] = set.draw(start + i, s, 0, branches[k]);
     });
@@ -180,7 +204,7 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
     // 3. documents laid out, drawn as SVG (and as split PDFs) in parallel, written in order
     std::vector<Printed> printed(count);
     if (options.svg || options.pdf) {
-      parallel_for(count, options.jobs, [&](int i) {
+      parallel_for(count, jobs, [&](int i) {
         Printed& p = printed[i];
         p.sheet = set.sheet_document(sheets[i]);
         p.key = set.key_document(sheets[i]);
@@ -206,9 +230,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
       });
     }
     // 4. the class-set PDFs, in id order (behind the next batch, with two jobs or more)
-    if (options.pdf && !options.split) {
+    if (class_set_pdf) {
       if (!class_set) class_set = std::make_unique<ClassSetWriter>(options, set.spec(), printed[0]);
-      auto batch = std::make_unique<Batch>();
+      auto batch = std::make_shared<Batch>();
       for (const Sheet& s : sheets) batch->ids.push_back(s.id.str());
       batch->printed = std::move(printed);  // the buffer moves, so the pages' scene pointers hold
       class_set->add(std::move(batch));

@@ -11,6 +11,16 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$EPURE" generate --sheets 30 --seed 42 --out "$tmp/c" --quiet || fail "generate (default jobs)"
 diff -r "$tmp/a" "$tmp/b" >/dev/null || fail "--jobs 1 and --jobs 2 differ"
 diff -r "$tmp/a" "$tmp/c" >/dev/null || fail "two runs differ"
+# The class-set PDFs alone: with two jobs the caller draws sheets.pdf between batches, with three
+# it has a thread of its own (generate.cpp); 30 sheets make three batches (8, 16, 6).
+for j in 1 2 3; do
+  "$EPURE" generate --sheets 30 --seed 42 --format pdf --out "$tmp/pdf$j" --quiet --jobs $j || fail "generate --format pdf --jobs $j"
+done
+for j in 2 3; do
+  cmp -s "$tmp/pdf1/sheets.pdf" "$tmp/pdf$j/sheets.pdf" && cmp -s "$tmp/pdf1/keys.pdf" "$tmp/pdf$j/keys.pdf" &&
+    cmp -s "$tmp/pdf1/key.json" "$tmp/pdf$j/key.json" || fail "--format pdf: --jobs 1 and --jobs $j differ"
+done
+rm -rf "$tmp"/pdf?
 
 [ "$(ls "$tmp/a/sheets" | wc -l)" -eq 30 ] || fail "expected 30 sheets"
 [ "$(ls "$tmp/a/keys" | wc -l)" -eq 30 ] || fail "expected 30 keys"
