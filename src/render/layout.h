@@ -152,9 +152,9 @@ struct LayoutStyle {
   double figure_max_height = 0.55;
   // A document over its page budget (Document::page_budget) is laid out again with that share
   // lowered by this step, down to figure_min_height, and the first that meets the budget is set;
-  // when none does, the figures keep their height. Only a figure whose data are taller than wide
-  // reaches the cap: at 0.4 (286 pt on A4, 10 cm) it is still the tallest figure of a sheet,
-  // with a grid unit of about a centimetre, so there is room to draw on it.
+  // when none does, the figures keep their height. Only a figure whose data are about as tall as
+  // wide or taller reaches the cap: at 0.4 (286 pt on A4, 10 cm) it is still the tallest figure of
+  // a sheet, with a grid unit of about a centimetre, so there is room to draw on it.
   double figure_min_height = 0.4;
   double figure_height_step = 0.05;
   double figure_space = 6;         // above and below a figure (a frame needs more air than text)
