@@ -1,0 +1,259 @@
+// Rows of answer fields (a student's sheet) and of a key's answer table: the atoms of
+// SectionAtoms for AnswerField and AnswerLine blocks, with the prompt columns a run shares.
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "render/section_atoms.h"
+
+namespace epure::render::layout_detail {
+namespace {
+
+// Horizontal gaps, in points.
+constexpr double kPromptGap = 8;    // after a prompt column
+constexpr double kBoxGap = 3;       // between a box and the "(", ";" around it
+constexpr double kTickGap = 4;      // between a tick box and its option
+constexpr double kOptionGap = 16;   // between two options
+// A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
+// much indented, when that wraps it less (a point or a value is then on one line).
+constexpr double kStackIndent = 12;
+// Wider than any line a page holds: what wrapping gives for this width is the text's own lines
+// (only its '\n' break it).
+constexpr double kUnbounded = 1e9;
+
+}  // namespace
+
+// The prompt column shared by a run of consecutive fields, so that their boxes line up.
+// The prompt columns depend on the run and the column's width only: remembered.
+double SectionAtoms::field_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
+  const RowKey key{&blocks[from], 0, bits(width_), bits(prompt_share_), false, false};
+  if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
+  return prompt_columns_[key] = measure_field_prompt_column(blocks, from);
+}
+
+double SectionAtoms::key_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
+  const RowKey key{&blocks[from], 0, bits(width_), 0, true, false};
+  if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
+  return prompt_columns_[key] = measure_key_prompt_column(blocks, from);
+}
+
+double SectionAtoms::measure_field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+  double widest = 0;
+  // What the run's boxes need right of the prompts: a point's "( □ ; □ )", a number's box, a
+  // single tick option (options wrap to more rows), and the question id at the right edge.
+  double body = 0;
+  const double size = s_.body_size;
+  using K = AnswerField::Kind;
+  for (std::size_t i = from; i < blocks.size(); ++i) {
+    const auto* f = std::get_if<AnswerField>(&blocks[i]);
+    if (!f) break;
+    widest = std::max(widest, text_width(f->prompt, size));
+    const double id = f->question_id.empty() ? 0 : text_width(f->question_id, s_.id_size) + kIdGap;
+    double need = s_.number_box_width;
+    if (f->kind == K::point || f->kind == K::point3) {
+      const int n = f->kind == K::point3 ? 3 : 2;
+      const double box = f->kind == K::point3 ? s_.point3_box_width : s_.point_box_width;
+      need = text_width("(", size) + text_width(")", size) + (n - 1) * text_width(";", size) +
+             n * box + 2 * n * kBoxGap;
+    } else if (f->kind != K::number) {
+      need = 0;
+      for (const auto& c : f->choices) need = std::max(need, s_.tick_size + kTickGap + text_width(c, size));
+      if (f->kind == K::boolean)
+        for (const auto& w : {doc_.words.yes, doc_.words.no})
+          need = std::max(need, s_.tick_size + kTickGap + text_width(w, size));
+    }
+    body = std::max(body, need + id);
+  }
+  // The prompts take what the boxes leave, and at least their usual share: a narrow column
+  // beside a figure no longer wraps "If they do not intersect, why?" over four lines when the
+  // boxes leave room for two.
+  const double room = std::max(width_ * prompt_share_, width_ - body - kFitSlack);
+  return std::min(widest + kPromptGap, room);
+}
+
+double SectionAtoms::measure_key_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
+  double widest = 0;
+  for (std::size_t i = from; i < blocks.size(); ++i) {
+    const auto* l = std::get_if<AnswerLine>(&blocks[i]);
+    if (!l) break;
+    widest = std::max(widest, text_width(l->prompt, s_.body_size));
+  }
+  return std::clamp(widest + kPromptGap, s_.key_prompt_column_min, width_ * s_.key_prompt_column_max);
+}
+
+void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follows_field) {
+  const RowKey key = row_key(&f, field_column_, follows_field);
+  if (replay(key)) return;
+  const double size = s_.body_size;
+  Atom a = new_atom();
+  a.section = si;
+  a.block = bi;
+  a.space_before = follows_field ? s_.row_space : s_.block_space;
+  a.break_before = !follows_field;  // a run of fields stays whole where a page holds it
+
+  auto id = plain(f.question_id);
+  const double id_w = f.question_id.empty() ? 0 : text_width(id, s_.id_size);
+  const double limit = right_ - (id_w > 0 ? id_w + kIdGap : 0);
+  const double x0 = left_ + field_column_;
+
+  using K = AnswerField::Kind;
+  const bool ticks = f.kind == K::choice || f.kind == K::faces || f.kind == K::boolean;
+  const double row_h = ticks ? s_.tick_row_height : s_.field_box_height;
+  const double baseline = row_h / 2 + size * kCentredBaseline;
+  double body_h = row_h;
+
+  if (!ticks) {
+    const double bh = s_.field_box_height;
+    auto box = [&](double x, double w, std::string value) {
+      a.content.box({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
+    };
+    auto glyph = [&](const char* s, double x) {
+      auto runs = plain(s);
+      const double w = text_width(runs, size);
+      a.content.text(std::move(runs), x, baseline, size);
+      return x + w;
+    };
+    if (f.kind == K::number) {
+      box(x0, s_.number_box_width, {});
+    } else {
+      const bool three = f.kind == K::point3;
+      const double w = three ? s_.point3_box_width : s_.point_box_width;
+      static constexpr const char* kAxes[] = {"x", "y", "z"};
+      double x = glyph("(", x0) + kBoxGap;
+      for (int k = 0; k < (three ? 3 : 2); ++k) {
+        if (k > 0) x = glyph(";", x + kBoxGap) + kBoxGap;
+        box(x, w, kAxes[k]);
+        x += w;
+      }
+      glyph(")", x + kBoxGap);
+    }
+  }
+
+  // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
+  // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
+  // ticks: it reads better, and takes less height, on lines of its own above them.
+  const auto* prompt_lines = &text_.wrap(f.prompt, size, field_column_ - kPromptGap);
+  bool prompt_above = false;
+  if (ticks && prompt_lines->size() > 2) {
+    const auto& wide = text_.wrap(f.prompt, size, limit - left_);
+    if (wide.size() < prompt_lines->size()) {
+      prompt_lines = &wide;
+      prompt_above = true;
+    }
+  }
+  const double ticks_top = prompt_above ? static_cast<double>(prompt_lines->size()) * body_line_ : 0;
+
+  if (ticks) {
+    std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
+    if (f.kind == K::boolean) {
+      options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
+    } else {
+      for (const auto& c : f.choices) options.emplace_back(c, c);
+    }
+    // The options on as few rows as fit, in aligned columns: six faces become two rows of
+    // three rather than five and a lonely one. A last choice set apart ("none" after the
+    // sides) gets a row of its own.
+    std::vector<std::vector<TextRun>> labels;
+    std::vector<double> widths;
+    for (const auto& o : options) {
+      labels.push_back(parse_rich_text(o.first));
+      widths.push_back(s_.tick_size + kTickGap + text_width(labels.back(), size));
+    }
+    const std::size_t n = options.size();
+    const std::size_t grid = f.last_choice_apart && n > 1 ? n - 1 : n;
+    std::size_t per_row = grid;
+    std::vector<double> columns;
+    for (std::size_t rows = 1; rows <= grid; ++rows) {
+      per_row = (grid + rows - 1) / rows;
+      columns.assign(per_row, 0);
+      for (std::size_t i = 0; i < grid; ++i) columns[i % per_row] = std::max(columns[i % per_row], widths[i]);
+      double total = kOptionGap * static_cast<double>(per_row - 1);
+      for (double c : columns) total += c;
+      if (x0 + total <= limit + kFitSlack) break;
+    }
+    const std::size_t grid_rows = grid == 0 ? 1 : (grid + per_row - 1) / per_row;
+    for (std::size_t i = 0; i < n; ++i) {
+      double x = x0;
+      std::size_t row = grid_rows;  // the option after the grid
+      if (i < grid) {
+        for (std::size_t c = 0; c < i % per_row; ++c) x += columns[c] + kOptionGap;
+        row = i / per_row;
+      }
+      const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
+      const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
+      a.content.box({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
+                                 std::move(options[i].second)});
+      a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
+    }
+    const std::size_t rows = grid_rows + (grid < n ? 1 : 0);
+    body_h = ticks_top + static_cast<double>(rows) * s_.tick_row_height;
+  }
+
+  double prompt_h = 0;
+  double y = prompt_above ? size * kBaseline : baseline;
+  for (const auto& runs : *prompt_lines) {
+    a.content.text(runs, left_, y, size);
+    prompt_h = y + size * (s_.line_height - kBaseline);
+    y += body_line_;
+  }
+  if (id_w > 0) a.content.text_right(std::move(id), right_, prompt_above ? size * kBaseline : baseline, s_.id_size, Ink::muted);
+  a.height = std::max(body_h, prompt_h);
+  remember(key, a);
+  push(std::move(a));
+}
+
+void SectionAtoms::answer_line(int si, int bi, const AnswerLine& l, bool follows_line) {
+  const RowKey key = row_key(&l, key_column_, follows_line);
+  if (replay(key)) return;
+  const double size = s_.body_size;
+  const double pad = s_.key_row_padding;
+  Atom a = new_atom();
+  a.section = si;
+  a.block = bi;
+  a.space_before = follows_line ? 0 : s_.block_space;
+  a.break_before = !follows_line;  // so does a key's table
+
+  auto id = plain(l.question_id);
+  const double id_w = l.question_id.empty() ? 0 : text_width(id, s_.id_size);
+  const double id_room = id_w > 0 ? id_w + kIdGap : 0;
+  double answer_x = left_ + key_column_;
+  double prompt_w = key_column_ - kPromptGap;
+  const auto* answer = &text_.wrap(l.answer, size, right_ - answer_x - id_room);
+  const std::size_t own_lines = text_.line_count(l.answer, size, kUnbounded);
+  bool stacked = false;
+  if (answer->size() > own_lines) {
+    // Prompt on its line, the answer under it with the column's whole width.
+    answer_x = left_ + kStackIndent;
+    const auto& under = text_.wrap(l.answer, size, right_ - answer_x - id_room);
+    if (under.size() < answer->size()) {
+      answer = &under;
+      prompt_w = right_ - left_ - id_room;
+      stacked = true;
+    } else {
+      answer_x = left_ + key_column_;
+    }
+  }
+  a.wrapped = answer->size() > own_lines;
+
+  double y = pad + size * kBaseline;
+  std::size_t rows = 0;
+  for (const auto& runs : text_.wrap(l.prompt, size, prompt_w)) {
+    a.content.text(runs, left_, y + static_cast<double>(rows++) * body_line_, size);
+  }
+  const std::size_t first_answer_row = stacked ? std::max<std::size_t>(rows, 1) : 0;
+  std::size_t answer_rows = first_answer_row;
+  for (const auto& runs : *answer) {
+    a.content.text(runs, answer_x, y + static_cast<double>(answer_rows++) * body_line_,
+                   size, Ink::answer);
+  }
+  if (id_w > 0) a.content.text_right(std::move(id), right_, y, s_.id_size, Ink::muted);
+  a.height = static_cast<double>(std::max<std::size_t>({rows, answer_rows, 1})) * body_line_ + 2 * pad;
+  // A table: a rule above the first row and under every row.
+  if (!follows_line) a.content.rules.push_back({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
+  a.content.rules.push_back({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});
+  remember(key, a);
+  push(std::move(a));
+}
+
+}  // namespace epure::render::layout_detail

@@ -1,0 +1,168 @@
+#pragma once
+// What the layout's parts hand each other (internal to layout.cpp and its helpers): the atoms a
+// Document is broken into (section_atoms.h makes them, paginate.h puts them on pages) and the
+// lengths they share. Not a public header: backends see LaidOutPage only.
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/layout.h"
+
+namespace epure::render::layout_detail {
+
+// Baseline of a text line below the top of its line box, × font size: DejaVu Sans's ascent is
+// 0.93 em and an arrow over AB sits just above the capitals, both inside the line box.
+inline constexpr double kBaseline = 1.02;
+// Baseline that centres capitals and digits (cap height 0.73 em) on a box's middle, × font size.
+inline constexpr double kCentredBaseline = 0.36;
+// Page space is compared in points summed from a few dozen terms; this much rounding never
+// decides a page break.
+inline constexpr double kFitSlack = 1e-6;
+// Between a header's left and right columns, and around the name row's QR code, in points.
+inline constexpr double kHeaderGap = 12;
+// Between a figure and the fields or answers beside it, in points.
+inline constexpr double kSideGap = 18;
+// Before a question id at the right edge of a row, in points.
+inline constexpr double kIdGap = 10;
+
+inline std::vector<TextRun> plain(std::string text, bool bold = false) {
+  TextRun run;
+  run.text = std::move(text);
+  run.bold = bold;
+  return {std::move(run)};
+}
+
+// Everything one atom puts on the page; x in page coordinates, y from the atom's top.
+struct Fragment {
+  std::vector<PlacedBox> boxes;
+  std::vector<PlacedRule> rules;
+  std::vector<PlacedFigure> figures;
+  std::vector<PlacedText> texts;
+  std::vector<PlacedQr> codes;
+  // A layout option only measured (its height, whether it fits a column) keeps no text: the
+  // options tried for a figure and its neighbours would otherwise copy every run of every line
+  // again for each one. What the fit test needs of the texts is kept as two extents.
+  bool keep_texts = true;
+  bool track_extents = false;       // set for the atoms of a column beside a figure
+  double text_right_edge = -1e300;  // the right end of the furthest text that is not muted
+  double muted_left = 1e300;        // the left end of the first muted text (a question id)
+  double box_right_edge = -1e300;   // the right end of the furthest box
+
+  void box(PlacedBox b) {
+    box_right_edge = std::max(box_right_edge, b.rect.right());
+    if (keep_texts) boxes.push_back(std::move(b));
+  }
+
+  void text(const std::vector<TextRun>& runs, double x, double baseline, double size, Ink ink = Ink::text) {
+    note_extent(runs, x, size, ink);
+    if (keep_texts) texts.push_back({{x, baseline}, size, runs, ink});
+  }
+  void text(std::vector<TextRun>&& runs, double x, double baseline, double size, Ink ink = Ink::text) {
+    note_extent(runs, x, size, ink);
+    if (keep_texts) texts.push_back({{x, baseline}, size, std::move(runs), ink});
+  }
+  // Right-aligned on `right`.
+  void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
+    const double width = text_width(runs, size);
+    if (ink == Ink::muted) {
+      muted_left = std::min(muted_left, right - width);
+    } else {
+      text_right_edge = std::max(text_right_edge, right);
+    }
+    if (keep_texts) texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
+  }
+  void note_extent(const std::vector<TextRun>& runs, double x, double size, Ink ink) {
+    if (!track_extents) return;
+    if (ink == Ink::muted) {
+      muted_left = std::min(muted_left, x);
+    } else {
+      text_right_edge = std::max(text_right_edge, x + text_width(runs, size));
+    }
+  }
+
+  // Appends `other`'s content, moved down by dy.
+  void append(Fragment&& other, double dy) {
+    for (auto& b : other.boxes) {
+      b.rect.y += dy;
+      boxes.push_back(std::move(b));
+    }
+    for (auto& r : other.rules) {
+      r.a.y += dy;
+      r.b.y += dy;
+      rules.push_back(r);
+    }
+    for (auto& f : other.figures) {
+      f.rect.y += dy;
+      figures.push_back(f);
+    }
+    for (auto& t : other.texts) {
+      t.baseline.y += dy;
+      texts.push_back(std::move(t));
+    }
+    text_right_edge = std::max(text_right_edge, other.text_right_edge);
+    box_right_edge = std::max(box_right_edge, other.box_right_edge);
+    muted_left = std::min(muted_left, other.muted_left);
+  }
+
+  void move_into(LaidOutPage& page, double dy) {
+    for (auto& b : boxes) {
+      b.rect.y += dy;
+      page.boxes.push_back(std::move(b));
+    }
+    for (auto& r : rules) {
+      r.a.y += dy;
+      r.b.y += dy;
+      page.rules.push_back(r);
+    }
+    for (auto& f : figures) {
+      f.rect.y += dy;
+      page.figures.push_back(f);
+    }
+    for (auto& t : texts) {
+      t.baseline.y += dy;
+      page.texts.push_back(std::move(t));
+    }
+    for (auto& q : codes) {
+      q.rect.y += dy;
+      page.codes.push_back(std::move(q));
+    }
+  }
+};
+
+// The unit of page breaking: a line of a paragraph, a heading, a row of fields, a figure.
+struct Atom {
+  double height = 0;
+  double space_before = 0;   // dropped at the top of a page
+  bool break_before = true;  // a page may end just before this atom
+  bool section_start = false;
+  std::size_t head_atoms = 0;  // on a section's first atom: how many atoms its statement takes
+  int section = -1, block = -1;
+  // The blocks set beside a figure in this atom, with rectangles from the atom's top.
+  std::vector<PlacedBlock> side_blocks;
+  bool wrapped = false;  // a key's answer broken over lines it does not ask for
+  bool follows_heading = false;  // right after a heading: a page may not end before it
+  Fragment content;
+};
+
+// Height from the start of atoms[from] to the end of atoms[to - 1], on a page already begun.
+inline double span(const std::vector<Atom>& atoms, std::size_t from, std::size_t to) {
+  double h = 0;
+  for (std::size_t i = from; i < to; ++i) h += (i > from ? atoms[i].space_before : 0) + atoms[i].height;
+  return h;
+}
+
+// The text column of a page of `doc` with `style`: its edges, in points.
+struct TextArea {
+  double left = 0, right = 0, width = 0;
+  double top = 0, bottom = 0;  // under the header, above the bottom margin
+  TextArea(const Document& doc, const LayoutStyle& style)
+      : left(style.margin_left),
+        right(doc.page.width_pt - style.margin_right),
+        width(right - left),
+        top(style.margin_top + style.header_height + style.header_gap),
+        bottom(doc.page.height_pt - style.margin_bottom) {}
+};
+
+}  // namespace epure::render::layout_detail
