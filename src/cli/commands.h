@@ -39,5 +39,9 @@ void add_explore_command(CLI::App& app, int& status);
 void add_grade_command(CLI::App& app, int& status);
 // Registers `epure export moodle|qti`.
 void add_export_command(CLI::App& app, int& status);
+// Registers `epure starter`.
+void add_starter_command(CLI::App& app, int& status);
+// Registers `epure check`.
+void add_check_command(CLI::App& app, int& status);
 
 }  // namespace epure::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "epure " EPURE_VERSION);
   app.require_subcommand(1);
   int status = 0;
+  epure::cli::add_check_command(app, status);
   epure::cli::add_explore_command(app, status);
   epure::cli::add_generate_command(app, status);
   epure::cli::add_grade_command(app, status);
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   epure::cli::add_kinds_command(app, status);
   epure::cli::add_preview_command(app, status);
   epure::cli::add_solve_command(app, status);
+  epure::cli::add_starter_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,50 @@
+// The judge against the models: the course's method as mended is right on every case epure
+// draws, and each classic bug is wrong on some.
+#include <doctest/doctest.h>
+
+#include "check/bug_models.h"
+#include "check/cases.h"
+#include "check/judge.h"
+
+using namespace epure::check;
+
+TEST_CASE("the mended course's method is right on every standard case, and every case has an answer") {
+  for (const FunctionInfo& f : all_functions()) {
+    CAPTURE(f.name);
+    const auto cases = standard_cases(f.fn, 1);
+    CHECK(cases.size() >= 150);
+    int wrong = 0;
+    for (const Case& c : cases) {
+      REQUIRE(expected(c).has_value());
+      const Judgement j = judge(c, model(c, 0));
+      if (!j.right) {
+        ++wrong;
+        if (wrong <= 3) {
+          CAPTURE(category_name(c.category));
+          CAPTURE(c.in[0]); CAPTURE(c.in[1]); CAPTURE(c.in[2]); CAPTURE(c.in[3]); CAPTURE(c.in[4]);
+          CAPTURE(c.in[5]); CAPTURE(c.in[6]); CAPTURE(c.in[7]); CAPTURE(c.in[8]); CAPTURE(c.in[9]);
+          const Outcome m = model(c, 0);
+          CAPTURE(m.hit); CAPTURE(m.out[0]); CAPTURE(m.out[1]); CAPTURE(m.out[2]); CAPTURE(m.out[3]);
+          CAPTURE(j.expected.hit); CAPTURE(j.expected.out[0]); CAPTURE(j.expected.out[1]);
+          CAPTURE(j.expected.out[2]); CAPTURE(j.expected.out[3]);
+          FAIL_CHECK("the mended method is judged wrong");
+        }
+      }
+    }
+    CHECK(wrong == 0);
+  }
+}
+
+TEST_CASE("every classic bug of a function is wrong on some of its cases") {
+  for (const FunctionInfo& f : all_functions()) {
+    const auto cases = standard_cases(f.fn, 1);
+    for (Bug b : bugs_of(f.fn)) {
+      CAPTURE(f.name);
+      CAPTURE(bug_code(b));
+      int wrong = 0;
+      for (const Case& c : cases)
+        if (!judge(c, model(c, bit(b))).right) ++wrong;
+      CHECK(wrong > 0);
+    }
+  }
+}
