@@ -126,7 +126,7 @@ std::vector<Case> segments(Rng& rng) {
       }
       default: {  // crossing at an angle of 1e-3 to 1e-8 radians, inside both segments
         const double angle = std::pow(10.0, -3 - 5 * rng.uniform());
-        const Vec2 u = unit({d.x, d.y});
+        const Vec2 u = unit(Vec2{d.x, d.y});
         const Vec2 v{u.x * std::cos(angle) - u.y * std::sin(angle), u.x * std::sin(angle) + u.y * std::cos(angle)};
         const Point2 P = point();
         const double a = 1 + 4 * rng.uniform(), c = 1 + 4 * rng.uniform();
@@ -261,7 +261,7 @@ void square_cases(Builder& b, Rng& rng) {
   for (int i = 0; i < 16; ++i) {
     const double sx = i % 2 ? 1 : -1, sy = i % 4 < 2 ? 1 : -1;
     if (i < 8) add(Category::corner, {sx, 3 * sy}, {0, -sy});
-    else add(Category::corner, {(2 + i % 3) * sx, (2 + i % 3) * sy}, unit({-sx, -sy}));
+    else add(Category::corner, {(2 + i % 3) * sx, (2 + i % 3) * sy}, unit(Vec2{-sx, -sy}));
   }
   for (int i = 0; i < 12; ++i) {  // from far away
     const double far = std::pow(10.0, 6 + i % 7);
@@ -447,7 +447,7 @@ std::vector<Case> sheet_cases(const WorksheetSpec& spec, const SheetId& id) {
       k.fn = Fn::segments;
       pair(j["A"], &k.in[0]), pair(j["B"], &k.in[2]), pair(j["C"], &k.in[4]), pair(j["D"], &k.in[6]);
     } else if (ex.kind == "ray_circle") {
-      const Vec2 u = unit({num(j["u"][0]), num(j["u"][1])});
+      const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
       const double r = num(j["r"]);
       k.fn = Fn::circle;
       pair(j["A"], &k.in[0]), pair(j["C"], &k.in[4]);
@@ -459,7 +459,7 @@ std::vector<Case> sheet_cases(const WorksheetSpec& spec, const SheetId& id) {
       out.push_back(c);
       continue;
     } else if (ex.kind == "ray_square") {
-      const Vec2 u = unit({num(j["u"][0]), num(j["u"][1])});
+      const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
       k.fn = Fn::square_canonical;
       pair(j["A"], &k.in[0]);
       k.in[2] = u.x, k.in[3] = u.y;

@@ -95,7 +95,18 @@ struct Checker::Impl {
 
   Impl(const CheckOptions& o, std::filesystem::path w)
       : options(o), work(std::move(w)), sandbox(probe_sandbox()), seccomp(prepare()) {
-    if (sandbox.root) user = sandbox.user;
+    if (sandbox.root) {
+      user = sandbox.user;
+      // the sandbox user compiles and runs in `work`: every directory above it must let it pass
+      for (std::filesystem::path p = work.parent_path(); !p.empty(); p = p.parent_path()) {
+        struct stat st {};
+        if (stat(p.c_str(), &st) == 0 && !(st.st_mode & S_IXOTH))
+          throw SandboxError(fmt::format("{} is closed to the sandbox user (uid {}): set TMPDIR to a directory "
+                                         "others may pass through (chmod o+x), such as /tmp",
+                                         p.string(), user->uid));
+        if (p == p.root_path()) break;
+      }
+    }
     toolchain.emplace(work, user);
     for (const FunctionInfo& f : all_functions()) standard.push_back(standard_cases(f.fn, options.seed));
     spec = options.spec ? *options.spec : builtin_spec();

@@ -282,7 +282,7 @@ render::Document feedback_document(const FileReport& file, const CheckOptions& o
     s.add(render::Heading{grading::rich_escape(v.heading), 1});
     for (std::size_t i = 0; i < v.paragraphs.size(); ++i) s.add(render::Paragraph{v.paragraphs[i], i < r.bugs.size()});
     for (auto& c : v.cases) {
-      s.add(render::Paragraph{grading::rich_escape(fmt::format("{} — {}: {}. {}: {}. {}: {}.", category_text(c.category, T),
+      s.add(render::Paragraph{grading::rich_escape(fmt::format("{} — {} {}. {} {}. {} {}.", category_text(c.category, T),
                                                                T.get("check.page.input"), c.data, T.get("check.page.expected"),
                                                                c.expected, T.get("check.page.got"), c.got))});
       if (c.figure) s.add(render::Figure{std::move(*c.figure), c.figure->panels.size() > 1 ? 0.8 : 0.5});
@@ -374,11 +374,11 @@ std::string feedback_html(const FileReport& file, const CheckOptions& options) {
       out += "<figure>\n<p><b>";
       html_text(out, category_text(c.category, T));
       out += "</b><br>";
-      html_text(out, T.get("check.page.input") + ": " + c.data);
+      html_text(out, T.get("check.page.input") + " " + c.data);
       out += "<br>";
-      html_text(out, T.get("check.page.expected") + ": " + c.expected);
+      html_text(out, T.get("check.page.expected") + " " + c.expected);
       out += "<br>";
-      html_text(out, T.get("check.page.got") + ": " + c.got);
+      html_text(out, T.get("check.page.got") + " " + c.got);
       out += "</p>\n";
       if (c.figure) out += render::scene_to_svg(*c.figure, c.figure->panels.size() > 1 ? 2 * kFigureWidth : kFigureWidth);
       else html_text(out, T.format("check.page.figure_not_drawn", {{"why", c.not_drawn}}));

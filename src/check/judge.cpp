@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "geometry/projection.h"
 #include "geometry/ray_3d.h"
@@ -252,9 +253,9 @@ bool exact_safe(const Case& c) {
   for (int i = 0; i < f.inputs; ++i) {
     const double x = c.in[static_cast<std::size_t>(i)];
     if (c.fn == Fn::ellipse || c.fn == Fn::rectangle) {
-      // the angle: exact only as a multiple of 90 degrees (cos and sin then are)
+      // the angle: exact only at 0 (a student's cos and sin of 90° or 180° in radians are not)
       if (i == 8) {
-        if (std::fmod(x, 90.0) != 0) return false;
+        if (x != 0) return false;
         continue;
       }
     }

@@ -229,7 +229,11 @@ void explain_end(FunctionRun& run, const std::optional<Record>& last, const Chil
       return;
     }
   }
-  if (exit.signal == SIGXCPU || (exit.signal == SIGKILL && exit.usage.ru_utime.tv_sec + exit.usage.ru_stime.tv_sec > 0)) {
+  if (exit.signal == SIGSYS) {
+    // the filter's signal while it was blocked (a thread's creation blocks them all): the kernel
+    // then ends the process without the harness's word on which call it was
+    end_with(run, RunEnd::refused, "syscall", "a system call the sandbox forbids (with signals blocked: which one is not known)");
+  } else if (exit.signal == SIGXCPU || (exit.signal == SIGKILL && exit.usage.ru_utime.tv_sec + exit.usage.ru_stime.tv_sec > 0)) {
     end_with(run, RunEnd::timeout, "cpu", "past the CPU time limit");
   } else if (exit.signal != 0) {
     end_with(run, RunEnd::crashed, signal_name(exit.signal), fmt::format("ended by {}", signal_name(exit.signal)));

@@ -52,7 +52,7 @@ SeccompProgram SeccompProgram::harness() {
   // start-up (thread pointer, robust list, rseq, the stack's limit read, malloc's random key)
   for (const char* name :
        {"exit", "exit_group", "brk", "mmap", "munmap", "mremap", "mprotect", "madvise", "rt_sigaction",
-        "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "getpid", "gettid", "clock_gettime", "clock_getres",
+        "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "getpid", "getppid", "gettid", "clock_gettime", "clock_getres",
         "gettimeofday", "time", "futex", "getrandom", "arch_prctl", "set_tid_address", "set_robust_list", "rseq",
         // the filter is installed before the harness is executed: this execve is the sandbox's
         // own; a later one can only run files Landlock allows, which is the harness alone

@@ -94,7 +94,7 @@ class Scanner {
   SubmissionScan run(std::vector<Comment>* comments) {
     comments_ = comments;
     bool line_start = true;
-    while (!done() && (comments_ || !scan_.refusal)) {  // comments: the whole file
+    while (!done()) {  // past a refusal too: the functions it mentions are reported
       const char c = peek();
       if (c == '\n') {
         line_start = true;

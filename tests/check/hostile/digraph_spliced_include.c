@@ -1,0 +1,4 @@
+/* expect: file refused include */
+%: inc\
+lude </etc/hostname>
+G2Xpoint Projection(G2Xpoint A, G2Xpoint B, G2Xpoint C) { return A.x < B.x ? B : C; }

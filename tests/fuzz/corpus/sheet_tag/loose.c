@@ -1,0 +1,2 @@
+// feuille : 10000005002n
+// étudiant : Léo

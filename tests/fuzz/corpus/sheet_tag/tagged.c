@@ -1,0 +1,2 @@
+/* sheet: 1000-0005-002N
+ * student: Zoé Lefèvre */
