@@ -302,7 +302,7 @@ std::string feedback_html(const FileReport& file, const CheckOptions& options) {
          "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.25em .6em;text-align:left}\n"
          ".passed{color:#1a7f37}.wrong,.crashed,.timeout,.refused,.compile_error{color:#b3261e}\n"
          ".bug{background:#fff4e5;border-left:4px solid #e8a33d;padding:.5em .8em}\n"
-         "pre{background:#f5f5f5;padding:.6em;overflow-x:auto}figure{margin:1em 0}\n"
+         "pre{background:#f5f5f5;padding:.6em;overflow-x:auto}figure{margin:1em 0}svg{max-width:100%;height:auto}\n"
          "</style>\n</head>\n<body>\n<h1>";
   html_text(out, T.get("check.page.title"));
   out += "</h1>\n<p>";
@@ -351,7 +351,10 @@ std::string feedback_html(const FileReport& file, const CheckOptions& options) {
   html_text(out, T.get("check.page.bug"));
   out += "</th></tr>\n";
   for (const FunctionReport& r : file.functions) {
-    out += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">", info(r.fn).name, verdict_name(r.verdict));
+    // a link to the function's part of the page: only a function that did not pass has one
+    out += r.verdict == Verdict::passed ? fmt::format("<tr><td>{}</td>", info(r.fn).name)
+                                        : fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td>", info(r.fn).name);
+    out += fmt::format("<td class=\"{}\">", verdict_name(r.verdict));
     html_text(out, verdict_text(r.verdict, T));
     out += fmt::format("</td><td>{}/{}</td><td>{:.2f}</td><td>", r.passed, r.cases, r.mark);
     for (std::size_t i = 0; i < r.bugs.size(); ++i) out += (i ? ", " : "") + std::string(bug_code(r.bugs[i]));

@@ -227,20 +227,24 @@ std::optional<ChildExit> wait_child_until(pid_t pid, std::chrono::steady_clock::
   }
 }
 
+std::string sandbox_refusal(bool seccomp, int landlock, bool root, uid_t user) {
+  std::vector<std::string> missing;
+  if (!seccomp) missing.push_back("seccomp filters (CONFIG_SECCOMP_FILTER)");
+  if (landlock < 1) missing.push_back("Landlock (Linux 5.13 or later, with landlock in the kernel's lsm= list)");
+  if (root && user == 0) missing.push_back("an unprivileged user to run as (nobody is uid 0?)");
+  if (missing.empty()) return {};
+  std::string refusal = "refusing to run students' code unconfined: this machine lacks ";
+  for (std::size_t i = 0; i < missing.size(); ++i) refusal += (i ? " and " : "") + missing[i];
+  return refusal;
+}
+
 SandboxReport probe_sandbox() {
   SandboxReport r;
   r.root = geteuid() == 0;
   r.user = SandboxUser::nobody();
   r.seccomp = seccomp_available();
   r.landlock_abi = landlock_abi();
-  std::vector<std::string> missing;
-  if (!r.seccomp) missing.push_back("seccomp filters (CONFIG_SECCOMP_FILTER)");
-  if (r.landlock_abi < 1) missing.push_back("Landlock (Linux 5.13 or later, with landlock in the kernel's lsm= list)");
-  if (r.root && r.user.uid == 0) missing.push_back("an unprivileged user to run as (nobody is uid 0?)");
-  if (!missing.empty()) {
-    r.refusal = "refusing to run students' code unconfined: this machine lacks ";
-    for (std::size_t i = 0; i < missing.size(); ++i) r.refusal += (i ? " and " : "") + missing[i];
-  }
+  r.refusal = sandbox_refusal(r.seccomp, r.landlock_abi, r.root, r.user.uid);
   return r;
 }
 

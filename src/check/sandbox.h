@@ -82,5 +82,7 @@ struct SandboxReport {
   std::string refusal;
 };
 SandboxReport probe_sandbox();
+// Why epure check refuses to run with what was found (empty: it runs).
+std::string sandbox_refusal(bool seccomp, int landlock_abi, bool root, uid_t user);
 
 }  // namespace epure::check
