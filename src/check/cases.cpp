@@ -366,6 +366,11 @@ void sphere_cases(Builder& b, Rng& rng) {
     if (i < 8) add(Category::on_boundary, A, dirs[static_cast<std::size_t>(i % 4)], C, r);
     else add(Category::tangent, C + geo::Vec3{-9, 0, i % 2 ? r : -r}, {1, 0, 0}, C, r);
   }
+  for (int i = 0; i < 4; ++i) {  // on the sphere, along its tangent plane: a hit at t = 0
+    const geo::Point3 C{double(rng.integer(-3, 3)), double(rng.integer(-3, 3)), double(rng.integer(-3, 3))};
+    const double r = double(rng.integer(1, 5));
+    add(Category::on_boundary, C + geo::Vec3{i % 2 ? r : -r, 0, 0}, i < 2 ? geo::Vec3{0, 1, 0} : geo::Vec3{0, 0, -1}, C, r);
+  }
   const std::size_t n = b.cases.size();
   for (std::size_t i = 0; i < 20; ++i) {
     const Case k = b.cases[(i * 7) % n];

@@ -23,6 +23,7 @@
 #include "check/seccomp_filter.h"
 #include "check/sheet_tag.h"
 #include "check/summary_text.h"
+#include "exercises/texts.h"
 
 namespace epure::check {
 
@@ -130,6 +131,15 @@ struct Checker::Impl {
     return config;
   }
 
+  // Why a run ended, in the report's language.
+  std::string reason_text(const FunctionRun& run) const {
+    const Texts& T = Texts::builtin(options.language);
+    TextVars vars = run.reason_vars;
+    for (auto& [name, value] : vars)
+      if (name == "kind") value = T.get("check.call." + value), name = "what";
+    return T.format("check.reason." + run.reason_key, vars);
+  }
+
   FunctionReport judge_run(const FunctionRun& run, const std::vector<Case>& cases) const {
     FunctionReport f;
     f.fn = run.fn;
@@ -166,7 +176,7 @@ struct Checker::Impl {
       f.verdict = f.failed == 0 ? Verdict::passed : Verdict::wrong;
     } else {
       f.verdict = verdict_of(run.end);
-      f.reason = run.reason;
+      f.reason = reason_text(run);
       f.reason_code = run.reason_code;
     }
     if (f.passed < f.cases) {
@@ -205,7 +215,10 @@ struct Checker::Impl {
       file.status = Verdict::refused;
       file.refusal = scan.refusal;
       every_function(file, scan.mentioned, Verdict::refused, scan.refusal->code,
-                     fmt::format("refused before compiling: line {}: {}", scan.refusal->line, scan.refusal->detail), cases);
+                     Texts::builtin(options.language)
+                         .format("check.reason.refused_before", {{"line", std::to_string(scan.refusal->line)},
+                                                                  {"detail", scan.refusal->detail}}),
+                     cases);
       compute_total(file);
       return file;
     }
@@ -228,7 +241,8 @@ struct Checker::Impl {
     const FileRun run = run_program(compiled.program, cases, run_config());
     if (run.startup) {
       every_function(file, scan.mentioned, verdict_of(run.startup->end), run.startup->reason_code,
-                     "before any function ran: " + run.startup->reason, cases);
+                     Texts::builtin(options.language).format("check.reason.before_start", {{"why", reason_text(*run.startup)}}),
+                     cases);
       if (!file.functions.empty()) {
         file.functions.front().output = run.startup->output;
         file.functions.front().output_bytes = run.startup->output_bytes;

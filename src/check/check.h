@@ -43,6 +43,13 @@ struct FunctionReport {
   std::string output;       // what it printed (the start)
   std::size_t output_bytes = 0;
   double mark = 0;          // in points
+  // The function ran and its run ended early (a crash, a timeout, a call the sandbox forbids),
+  // as opposed to a file that did not build or was refused before it did.
+  bool stopped_running() const {
+    return verdict == Verdict::crashed || verdict == Verdict::timeout ||
+           (verdict == Verdict::refused && reason_code != "include" && reason_code != "directive" &&
+            reason_code != "pragma" && reason_code != "identifier" && reason_code != "size" && reason_code != "nul");
+  }
 };
 
 inline constexpr std::size_t kMaxFailures = 5;

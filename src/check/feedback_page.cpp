@@ -159,8 +159,12 @@ FunctionView function_view(const FunctionReport& r, const std::string& language,
   FunctionView v;
   v.heading = fmt::format("{} — {} ({}/{})", info(r.fn).name, verdict_text(r.verdict, T), r.passed, r.cases);
   for (Bug b : r.bugs) v.paragraphs.push_back(T.get("check.bug." + std::string(bug_code(b))));
-  if (!r.reason.empty() && r.verdict != Verdict::wrong && r.verdict != Verdict::passed)
-    v.paragraphs.push_back(T.format("check.page.stopped", {{"why", grading::rich_escape(r.reason)}}));
+  // why a run stopped (not why a file did not build: the page says that above)
+  if (!r.reason.empty() && r.stopped_running()) {
+    std::string why = r.reason;
+    if (why.back() != '?' && why.back() != '.') why += '.';
+    v.paragraphs.push_back(T.format("check.page.stopped", {{"why", grading::rich_escape(why)}}));
+  }
   if (!r.failed_by_category.empty() && r.verdict != Verdict::compile_error && r.verdict != Verdict::refused) {
     std::string list;
     for (const auto& [c, n] : r.failed_by_category) list += (list.empty() ? "" : ", ") + fmt::format("{} ({})", category_text(c, T), n);

@@ -44,22 +44,20 @@ struct Pipe {
   }
 };
 
-// What a forbidden system call was, for a teacher.
-std::string what_call(const std::string& name) {
+// What kind of thing a forbidden system call does (check.call.<kind> in the texts).
+std::string call_kind(const std::string& name) {
   static const std::pair<const char*, const char*> kinds[] = {
-      {"open", "opening a file"},          {"openat", "opening a file"},    {"openat2", "opening a file"},
-      {"creat", "creating a file"},        {"unlink", "deleting a file"},   {"unlinkat", "deleting a file"},
-      {"socket", "opening a network socket"}, {"connect", "the network"}, {"bind", "the network"},
-      {"clone", "starting a process or thread"}, {"clone3", "starting a process or thread"},
-      {"fork", "starting a process"},      {"vfork", "starting a process"}, {"kill", "a signal to another process"},
-      {"tgkill", "a signal to another process"}, {"tkill", "a signal to another process"},
-      {"nanosleep", "sleeping"},           {"clock_nanosleep", "sleeping"}, {"ptrace", "tracing a process"},
-      {"prlimit64", "changing its limits"}, {"setrlimit", "changing its limits"}, {"pipe2", "making a pipe"},
-      {"mkdir", "making a directory"},     {"mkdirat", "making a directory"}, {"chdir", "changing directory"},
+      {"open", "file"},        {"openat", "file"},        {"openat2", "file"},     {"creat", "file"},
+      {"unlink", "file"},      {"unlinkat", "file"},      {"rename", "file"},      {"mkdir", "file"},
+      {"mkdirat", "file"},     {"chdir", "file"},         {"socket", "network"},   {"connect", "network"},
+      {"bind", "network"},     {"sendto", "network"},     {"clone", "process"},    {"clone3", "process"},
+      {"fork", "process"},     {"vfork", "process"},      {"kill", "signal"},      {"tgkill", "signal"},
+      {"tkill", "signal"},     {"nanosleep", "sleep"},    {"clock_nanosleep", "sleep"}, {"ptrace", "trace"},
+      {"prlimit64", "limits"}, {"setrlimit", "limits"},   {"pipe", "pipe"},        {"pipe2", "pipe"},
   };
-  for (const auto& [call, what] : kinds)
-    if (name == call) return what;
-  return "a call no function of the course needs";
+  for (const auto& [call, kind] : kinds)
+    if (name == call) return kind;
+  return "other";
 }
 
 std::string signal_name(int s) {
@@ -190,10 +188,11 @@ class Child {
   ResultReader reader_;
 };
 
-void end_with(FunctionRun& run, RunEnd end, std::string code, std::string reason) {
+void end_with(FunctionRun& run, RunEnd end, std::string code, std::string key, TextVars vars = {}) {
   run.end = end;
   run.reason_code = std::move(code);
-  run.reason = std::move(reason);
+  run.reason_key = std::move(key);
+  run.reason_vars = std::move(vars);
 }
 
 // Why the child ended, from the last record it sent and its exit.
@@ -201,45 +200,39 @@ void explain_end(FunctionRun& run, const std::optional<Record>& last, const Chil
   if (last) {
     if (const auto* f = std::get_if<record::Forbidden>(&*last)) {
       const std::string name = SeccompProgram::name_of(f->syscall_number);
-      end_with(run, RunEnd::refused, name,
-               fmt::format("a system call the sandbox forbids: {} ({})", name, what_call(name)));
+      end_with(run, RunEnd::refused, name, "syscall", {{"call", name}, {"kind", call_kind(name)}});
       return;
     }
     if (const auto* r = std::get_if<record::Raised>(&*last)) {
-      if (r->signal == SIGABRT) end_with(run, RunEnd::crashed, "abort", "abort() (SIGABRT): an assert failed, or abort() was called");
-      else end_with(run, RunEnd::crashed, signal_name(r->signal), fmt::format("it raised {} itself", signal_name(r->signal)));
+      if (r->signal == SIGABRT) end_with(run, RunEnd::crashed, "abort", "abort");
+      else end_with(run, RunEnd::crashed, signal_name(r->signal), "raised", {{"signal", signal_name(r->signal)}});
       return;
     }
     if (const auto* f = std::get_if<record::Fatal>(&*last)) {
-      if (f->stack_overflow) {
-        end_with(run, RunEnd::crashed, "stack_overflow", "stack overflow (SIGSEGV): a recursion without end?");
-      } else if (f->signal == SIGSEGV || f->signal == SIGBUS) {
-        const std::string where = f->address < 4096 ? fmt::format("address {:#x}: a null pointer (malloc returns NULL past the memory limit)", f->address)
-                                                    : fmt::format("address {:#x}", f->address);
-        end_with(run, RunEnd::crashed, signal_name(f->signal), fmt::format("invalid memory access ({}) at {}", signal_name(f->signal), where));
-      } else if (f->signal == SIGFPE) {
-        end_with(run, RunEnd::crashed, "SIGFPE", "arithmetic trap (SIGFPE): an integer division by zero?");
-      } else {
-        end_with(run, RunEnd::crashed, signal_name(f->signal), fmt::format("fatal signal {}", signal_name(f->signal)));
-      }
+      const TextVars where{{"signal", signal_name(f->signal)}, {"address", fmt::format("{:#x}", f->address)}};
+      if (f->stack_overflow) end_with(run, RunEnd::crashed, "stack_overflow", "stack_overflow");
+      else if ((f->signal == SIGSEGV || f->signal == SIGBUS) && f->address < 4096)
+        end_with(run, RunEnd::crashed, signal_name(f->signal), "null_pointer", where);
+      else if (f->signal == SIGSEGV || f->signal == SIGBUS) end_with(run, RunEnd::crashed, signal_name(f->signal), "memory", where);
+      else if (f->signal == SIGFPE) end_with(run, RunEnd::crashed, "SIGFPE", "fpe");
+      else end_with(run, RunEnd::crashed, signal_name(f->signal), "fatal", where);
       return;
     }
     if (const auto* n = std::get_if<record::NotWritten>(&*last); n && !n->fn) {
-      end_with(run, RunEnd::crashed, "todo_outside", "TO_WRITE()/A_ECRIRE() called outside the course's functions");
+      end_with(run, RunEnd::crashed, "todo_outside", "todo_outside");
       return;
     }
   }
   if (exit.signal == SIGSYS) {
     // the filter's signal while it was blocked (a thread's creation blocks them all): the kernel
     // then ends the process without the harness's word on which call it was
-    end_with(run, RunEnd::refused, "syscall", "a system call the sandbox forbids (with signals blocked: which one is not known)");
+    end_with(run, RunEnd::refused, "syscall", "syscall_blocked");
   } else if (exit.signal == SIGXCPU || (exit.signal == SIGKILL && exit.usage.ru_utime.tv_sec + exit.usage.ru_stime.tv_sec > 0)) {
-    end_with(run, RunEnd::timeout, "cpu", "past the CPU time limit");
+    end_with(run, RunEnd::timeout, "cpu", "cpu");
   } else if (exit.signal != 0) {
-    end_with(run, RunEnd::crashed, signal_name(exit.signal), fmt::format("ended by {}", signal_name(exit.signal)));
+    end_with(run, RunEnd::crashed, signal_name(exit.signal), "signal", {{"signal", signal_name(exit.signal)}});
   } else {
-    end_with(run, RunEnd::crashed, "exit",
-             fmt::format("the program ended (exit status {}) in the middle of the cases: exit() in the function?", exit.status));
+    end_with(run, RunEnd::crashed, "exit", "exit", {{"status", std::to_string(exit.status)}});
   }
 }
 
@@ -256,7 +249,7 @@ std::unique_ptr<Child> start(const std::filesystem::path& program, const RunConf
     if (event == Child::Event::records) {
       if (child->reader().broken()) {
         child->stop();
-        end_with(probe, RunEnd::refused, "protocol", "it wrote on the checker's result channel: " + child->reader().error());
+        end_with(probe, RunEnd::refused, "protocol", "protocol", {{"error", child->reader().error()}});
         startup = std::move(probe);
         return nullptr;
       }
@@ -271,10 +264,10 @@ std::unique_ptr<Child> start(const std::filesystem::path& program, const RunConf
     }
     if (event == Child::Event::deadline) {
       child->stop();
-      end_with(probe, RunEnd::timeout, "startup", "it did not start in time (a constructor that never returns?)");
+      end_with(probe, RunEnd::timeout, "startup", "startup");
     } else if (event == Child::Event::output_flood) {
       child->stop();
-      end_with(probe, RunEnd::refused, "output", fmt::format("more than {} bytes of output", config.output_cap));
+      end_with(probe, RunEnd::refused, "output", "output", {{"bytes", std::to_string(config.output_cap)}});
     } else {
       explain_end(probe, last, child->reap());
     }
@@ -306,7 +299,8 @@ FileRun run_program(const std::filesystem::path& program, const std::vector<std:
       std::optional<FunctionRun> failed;
       child = start(program, config, again, failed);
       if (!child) {  // it started once and not now: the same verdict as its start-up
-        run.end = failed->end, run.reason = failed->reason, run.reason_code = failed->reason_code;
+        run.end = failed->end, run.reason_code = failed->reason_code;
+        run.reason_key = failed->reason_key, run.reason_vars = failed->reason_vars;
         run.stopped_at = 0;
         file.functions.push_back(std::move(run));
         continue;
@@ -333,15 +327,13 @@ FileRun run_program(const std::filesystem::path& program, const std::vector<std:
         const auto event = child->wait(deadline, records, run, config);
         if (event == Child::Event::deadline) {
           child->stop();
-          end_with(run, RunEnd::timeout, "time",
-                   fmt::format("past {} ms for its cases (a loop without end?)", config.function_time.count()));
+          end_with(run, RunEnd::timeout, "time", "time", {{"ms", std::to_string(config.function_time.count())}});
           ended = true;
           break;
         }
         if (event == Child::Event::output_flood) {
           child->stop();
-          end_with(run, RunEnd::refused, "output",
-                   fmt::format("more than {} bytes of output (a print in a loop without end?)", config.output_cap));
+          end_with(run, RunEnd::refused, "output", "output", {{"bytes", std::to_string(config.output_cap)}});
           ended = true;
           break;
         }
@@ -352,7 +344,7 @@ FileRun run_program(const std::filesystem::path& program, const std::vector<std:
         }
         if (child->reader().broken()) {
           child->stop();
-          end_with(run, RunEnd::refused, "protocol", "it wrote on the checker's result channel: " + child->reader().error());
+          end_with(run, RunEnd::refused, "protocol", "protocol", {{"error", child->reader().error()}});
           ended = true;
           break;
         }
@@ -361,7 +353,7 @@ FileRun run_program(const std::filesystem::path& program, const std::vector<std:
             const std::uint32_t want = base + static_cast<std::uint32_t>(answered);
             if (res->fn != fn || res->seq != want) {
               child->stop();
-              end_with(run, RunEnd::refused, "protocol", "it wrote on the checker's result channel: a result out of order");
+              end_with(run, RunEnd::refused, "protocol", "protocol", {{"error", "a result out of order"}});
               ended = true;
               break;
             }

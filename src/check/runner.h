@@ -13,6 +13,7 @@
 
 #include "check/functions.h"
 #include "check/sandbox.h"
+#include "exercises/texts.h"
 
 namespace epure::check {
 
@@ -41,8 +42,12 @@ struct FunctionRun {
   Fn fn;
   std::vector<std::optional<Outcome>> outcomes;  // per case; nothing for a case not answered
   RunEnd end = RunEnd::completed;
-  std::string reason;        // why it ended, for crashed / timeout / refused (plain English)
-  std::string reason_code;   // short: "SIGSEGV", "stack_overflow", "abort", "exit", "openat", "output", …
+  // why it ended, for crashed / timeout / refused: a short code ("SIGSEGV", "stack_overflow",
+  // "abort", "exit", "openat", "output", …) and the sentence's key (check.reason.<key> in the
+  // texts) with its values
+  std::string reason_code;
+  std::string reason_key;
+  TextVars reason_vars;
   std::optional<std::size_t> stopped_at;  // the case being run when it ended
   std::string output;        // the first bytes it printed
   std::size_t output_bytes = 0;
