@@ -9,6 +9,7 @@
 #include "check/protocol.h"
 #include "fuzz_support.h"
 
+using namespace epure;
 using namespace epure::check;
 
 namespace {
