@@ -172,13 +172,17 @@ Toolchain::Run Toolchain::run_gcc(const std::filesystem::path& dir, std::vector<
   for (const char* tree : {"/usr", "/bin", "/lib", "/lib64", "/lib32", "/libx32"})
     if (std::filesystem::exists(tree)) rules.allow(tree, landlock_access::read_tree);
   if (std::filesystem::exists("/etc/ld.so.cache")) rules.allow("/etc/ld.so.cache", landlock_access::read_file);
-  rules.allow("/dev/null", landlock_access::read_file | landlock_access::write_file);
+  if (std::filesystem::is_character_file("/dev/null"))
+    rules.allow("/dev/null", landlock_access::read_file | landlock_access::write_file);
   rules.allow(harness_dir_, landlock_access::read_tree);
   rules.allow(dir, rules.everything());
 
-  int err[2];
-  if (pipe2(err, O_CLOEXEC) != 0) throw SandboxError(fmt::format("pipe: {}", std::strerror(errno)));
-  int null = open("/dev/null", O_RDWR | O_CLOEXEC);
+  int err[2], in[2];
+  if (pipe2(err, O_CLOEXEC) != 0 || pipe2(in, O_CLOEXEC) != 0)
+    throw SandboxError(fmt::format("pipe: {}", std::strerror(errno)));
+  // gcc's standard input: an empty pipe (not /dev/null, which a machine may keep from others)
+  close(in[1]);
+  const int null = in[0];
   SpawnSpec spec;
   spec.program = gcc_;
   spec.argv = {"gcc"};

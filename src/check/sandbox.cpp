@@ -89,19 +89,21 @@ bool set_limit(int resource, rlim_t value) {
   const int report = fcntl(report_fd, F_DUPFD_CLOEXEC, top + 16);
   if (report < 0) fail(report_fd, step_descriptors);
   report_fd = report;
-  // the Landlock ruleset right after it (the rest is closed around the two)
+  // the Landlock ruleset above it (the rest is closed around the two)
   int ruleset = -1;
   if (spec.landlock_ruleset >= 0) {
     ruleset = fcntl(spec.landlock_ruleset, F_DUPFD_CLOEXEC, report_fd + 1);
-    if (ruleset != report_fd + 1) fail(report_fd, step_descriptors);
+    if (ruleset < 0) fail(report_fd, step_descriptors);
   }
   for (std::size_t i = 0; i < n; ++i)
     if (dup2(sources[i], spec.descriptors[i].first) < 0) fail(report_fd, step_descriptors);
   int first_free = 0;
   for (std::size_t i = 0; i < n; ++i) first_free = std::max(first_free, spec.descriptors[i].first + 1);
-  // close everything past the wanted descriptors but the report pipe
+  // close everything past the wanted descriptors but the report pipe and the ruleset
   if (syscall(SYS_close_range, first_free, report_fd - 1, 0) != 0) fail(report_fd, step_descriptors);
-  if (syscall(SYS_close_range, (ruleset >= 0 ? ruleset : report_fd) + 1, ~0U, 0) != 0) fail(report_fd, step_descriptors);
+  if (ruleset > report_fd + 1 && syscall(SYS_close_range, report_fd + 1, ruleset - 1, 0) != 0)
+    fail(report_fd, step_descriptors);
+  if (syscall(SYS_close_range, std::max(report_fd, ruleset) + 1, ~0U, 0) != 0) fail(report_fd, step_descriptors);
 
   // every signal to its default, none blocked (the parent ignores SIGPIPE, its threads block some)
   struct sigaction dfl {};
