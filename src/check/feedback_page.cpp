@@ -13,6 +13,7 @@
 #include "exercises/exercise.h"
 #include "exercises/kinds/space_common.h"
 #include "exercises/texts.h"
+#include "grading/feedback_sheet.h"
 #include "grading/feedback_text.h"
 #include "output/atomic_file.h"
 #include "render/layout.h"
@@ -84,19 +85,6 @@ nlohmann::json instance_of(Fn fn, const Inputs& in) {
   return {};
 }
 
-// Grows the view to hold p (a student's point near the figure), as grading's feedback sheets do.
-bool make_room(render::Panel& panel, render::P2 p) {
-  render::Box& v = panel.view;
-  const double w = v.width(), h = v.height();
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
-  if (p.x < v.x_min - 2 * w || p.x > v.x_max + 2 * w || p.y < v.y_min - 2 * h || p.y > v.y_max + 2 * h) return false;
-  v.x_min = std::min(v.x_min, std::floor(p.x - 0.5));
-  v.x_max = std::max(v.x_max, std::ceil(p.x + 0.5));
-  v.y_min = std::min(v.y_min, std::floor(p.y - 0.5));
-  v.y_max = std::max(v.y_max, std::ceil(p.y + 0.5));
-  return true;
-}
-
 std::string label_of(Fn fn) { return fn == Fn::projection ? "P" : fn == Fn::segments ? "I" : "J"; }
 
 // The student's point (and normal) on the key's world panel.
@@ -114,9 +102,9 @@ void overlay(render::Scene& scene, Fn fn, const Outcome& got, const Texts& T) {
     J = {got.out[0], got.out[1]};
     tip = {got.out[0] + got.out[2], got.out[1] + got.out[3]};
   }
-  if (!make_room(panel, J)) return;
+  if (!std::isfinite(J.x) || !std::isfinite(J.y) || !grading::make_room(panel, J)) return;
   panel.add(render::PointMark{J, render::Role::highlight, render::Label{label, J, render::Side::auto_, render::Role::highlight}});
-  if (f.has_normal && std::isfinite(tip.x) && std::isfinite(tip.y) && make_room(panel, tip))
+  if (f.has_normal && std::isfinite(tip.x) && std::isfinite(tip.y) && grading::make_room(panel, tip))
     panel.add(render::Arrow{J, tip, render::Role::highlight});
 }
 

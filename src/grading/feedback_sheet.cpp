@@ -32,7 +32,8 @@ bool group_wrong(const ExerciseKey& ex, const ExerciseMarks& marks, std::string_
   return false;
 }
 
-// Grows the view to hold p when it is near enough to be drawn in the same frame.
+}  // namespace
+
 bool make_room(render::Panel& panel, render::P2 p) {
   render::Box& v = panel.view;
   const double w = v.width(), h = v.height();
@@ -43,8 +44,6 @@ bool make_room(render::Panel& panel, render::P2 p) {
   v.y_max = std::max(v.y_max, std::ceil(p.y + 0.5));
   return true;
 }
-
-}  // namespace
 
 void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const ExerciseMarks& marks, const FeedbackText& text) {
   if (!ex.grader) return;

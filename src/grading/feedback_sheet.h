@@ -21,6 +21,10 @@ namespace epure::grading {
 render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
                                    KeyDiagrams* diagrams);
 
+// Grows a panel's view to hold p (a student's point) when it is near enough to be drawn in the
+// same frame (within twice the view's size); false, and the view unchanged, when it is not.
+bool make_room(render::Panel& panel, render::P2 p);
+
 // A scene with the student's wrong points and vectors of one exercise added to `scene`.
 void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const ExerciseMarks& marks,
                      const FeedbackText& text);
