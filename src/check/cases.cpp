@@ -442,49 +442,60 @@ std::vector<Case> sheet_cases(const WorksheetSpec& spec, const SheetId& id) {
     to[2] = num(j[2]);
   };
   for (const ExerciseInstance& ex : sheet.exercises) {
+    // the function of the exercise's kind (functions.h: the circle's own first; the canonical
+    // circle takes the same instance carried to the origin)
+    std::optional<Fn> fn;
+    for (const FunctionInfo& f : all_functions())
+      if (f.kind == ex.kind) {
+        fn = f.fn;
+        break;
+      }
+    if (!fn) continue;  // the vectors: no function of the course's to run
     const nlohmann::json j = nlohmann::json::parse(ex.instance);
-    Case k{};
-    k.category = Category::sheet;
-    if (ex.kind == "projection") {
-      k.fn = Fn::projection;
-      pair(j["A"], &k.in[0]), pair(j["B"], &k.in[2]), pair(j["C"], &k.in[4]);
-    } else if (ex.kind == "segments") {
-      k.fn = Fn::segments;
-      pair(j["A"], &k.in[0]), pair(j["B"], &k.in[2]), pair(j["C"], &k.in[4]), pair(j["D"], &k.in[6]);
-    } else if (ex.kind == "ray_circle") {
-      const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
-      const double r = num(j["r"]);
-      k.fn = Fn::circle;
-      pair(j["A"], &k.in[0]), pair(j["C"], &k.in[4]);
-      k.in[2] = u.x, k.in[3] = u.y, k.in[6] = r;
-      out.push_back(k);
-      // the same ray seen in the circle's own frame: the canonical circle's case
-      Case c{Fn::circle_canonical, Category::sheet, {}};
-      c.in[0] = (k.in[0] - k.in[4]) / r, c.in[1] = (k.in[1] - k.in[5]) / r, c.in[2] = u.x, c.in[3] = u.y;
-      out.push_back(c);
-      continue;
-    } else if (ex.kind == "ray_square") {
-      const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
-      k.fn = Fn::square_canonical;
-      pair(j["A"], &k.in[0]);
-      k.in[2] = u.x, k.in[3] = u.y;
-    } else if (ex.kind == "ray_ellipse" || ex.kind == "ray_rectangle") {
-      k.fn = ex.kind == "ray_ellipse" ? Fn::ellipse : Fn::rectangle;
-      pair(j["A"], &k.in[0]), pair(j["u"], &k.in[2]), pair(j["C"], &k.in[4]);
-      pair(j[ex.kind == "ray_ellipse" ? "radii" : "half"], &k.in[6]);
-      k.in[8] = num(j["angle"]);
-    } else if (ex.kind == "ray_sphere") {
-      const geo::Vec3 u = unit(geo::Vec3{num(j["u"][0]), num(j["u"][1]), num(j["u"][2])});
-      k.fn = Fn::sphere;
-      triple(j["A"], &k.in[0]), triple(j["C"], &k.in[6]);
-      k.in[3] = u.x, k.in[4] = u.y, k.in[5] = u.z, k.in[9] = num(j["r"]);
-    } else if (ex.kind == "ray_cube") {
-      const geo::Vec3 u = unit(geo::Vec3{num(j["u"][0]), num(j["u"][1]), num(j["u"][2])});
-      k.fn = Fn::cube_canonical;
-      triple(j["A"], &k.in[0]);
-      k.in[3] = u.x, k.in[4] = u.y, k.in[5] = u.z;
-    } else {
-      continue;  // the vectors: no function of the course's to run
+    Case k{*fn, Category::sheet, {}};
+    switch (*fn) {
+      case Fn::projection: pair(j["A"], &k.in[0]), pair(j["B"], &k.in[2]), pair(j["C"], &k.in[4]); break;
+      case Fn::segments:
+        pair(j["A"], &k.in[0]), pair(j["B"], &k.in[2]), pair(j["C"], &k.in[4]), pair(j["D"], &k.in[6]);
+        break;
+      case Fn::circle:
+      case Fn::circle_canonical: {
+        const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
+        const double r = num(j["r"]);
+        k.fn = Fn::circle;
+        pair(j["A"], &k.in[0]), pair(j["C"], &k.in[4]);
+        k.in[2] = u.x, k.in[3] = u.y, k.in[6] = r;
+        out.push_back(k);
+        // the same ray seen in the circle's own frame: the canonical circle's case
+        Case c{Fn::circle_canonical, Category::sheet, {}};
+        c.in[0] = (k.in[0] - k.in[4]) / r, c.in[1] = (k.in[1] - k.in[5]) / r, c.in[2] = u.x, c.in[3] = u.y;
+        out.push_back(c);
+        continue;
+      }
+      case Fn::square_canonical: {
+        const Vec2 u = unit(Vec2{num(j["u"][0]), num(j["u"][1])});
+        pair(j["A"], &k.in[0]);
+        k.in[2] = u.x, k.in[3] = u.y;
+        break;
+      }
+      case Fn::ellipse:
+      case Fn::rectangle:
+        pair(j["A"], &k.in[0]), pair(j["u"], &k.in[2]), pair(j["C"], &k.in[4]);
+        pair(j[*fn == Fn::ellipse ? "radii" : "half"], &k.in[6]);
+        k.in[8] = num(j["angle"]);
+        break;
+      case Fn::sphere: {
+        const geo::Vec3 u = unit(geo::Vec3{num(j["u"][0]), num(j["u"][1]), num(j["u"][2])});
+        triple(j["A"], &k.in[0]), triple(j["C"], &k.in[6]);
+        k.in[3] = u.x, k.in[4] = u.y, k.in[5] = u.z, k.in[9] = num(j["r"]);
+        break;
+      }
+      case Fn::cube_canonical: {
+        const geo::Vec3 u = unit(geo::Vec3{num(j["u"][0]), num(j["u"][1]), num(j["u"][2])});
+        triple(j["A"], &k.in[0]);
+        k.in[3] = u.x, k.in[4] = u.y, k.in[5] = u.z;
+        break;
+      }
     }
     out.push_back(k);
   }

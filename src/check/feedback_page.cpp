@@ -68,21 +68,19 @@ nlohmann::json instance_of(Fn fn, const Inputs& in) {
   auto triple = [&](int i) {
     return json::array({in[static_cast<std::size_t>(i)], in[static_cast<std::size_t>(i) + 1], in[static_cast<std::size_t>(i) + 2]});
   };
+  json j{{"kind", std::string(info(fn).kind)}};
   switch (fn) {
-    case Fn::projection: return {{"kind", "projection"}, {"A", pair(0)}, {"B", pair(2)}, {"C", pair(4)}};
-    case Fn::segments: return {{"kind", "segments"}, {"A", pair(0)}, {"B", pair(2)}, {"C", pair(4)}, {"D", pair(6)}};
-    case Fn::circle: return {{"kind", "ray_circle"}, {"A", pair(0)}, {"u", pair(2)}, {"C", pair(4)}, {"r", in[6]}};
-    case Fn::circle_canonical:
-      return {{"kind", "ray_circle"}, {"A", pair(0)}, {"u", pair(2)}, {"C", json::array({0, 0})}, {"r", 1}};
-    case Fn::square_canonical: return {{"kind", "ray_square"}, {"A", pair(0)}, {"u", pair(2)}};
-    case Fn::ellipse:
-      return {{"kind", "ray_ellipse"}, {"A", pair(0)}, {"u", pair(2)}, {"C", pair(4)}, {"radii", pair(6)}, {"angle", in[8]}};
-    case Fn::rectangle:
-      return {{"kind", "ray_rectangle"}, {"A", pair(0)}, {"u", pair(2)}, {"C", pair(4)}, {"half", pair(6)}, {"angle", in[8]}};
-    case Fn::sphere: return {{"kind", "ray_sphere"}, {"A", triple(0)}, {"u", triple(3)}, {"C", triple(6)}, {"r", in[9]}};
-    case Fn::cube_canonical: return {{"kind", "ray_cube"}, {"A", triple(0)}, {"u", triple(3)}};
+    case Fn::projection: j["A"] = pair(0), j["B"] = pair(2), j["C"] = pair(4); break;
+    case Fn::segments: j["A"] = pair(0), j["B"] = pair(2), j["C"] = pair(4), j["D"] = pair(6); break;
+    case Fn::circle: j["A"] = pair(0), j["u"] = pair(2), j["C"] = pair(4), j["r"] = in[6]; break;
+    case Fn::circle_canonical: j["A"] = pair(0), j["u"] = pair(2), j["C"] = json::array({0, 0}), j["r"] = 1; break;
+    case Fn::square_canonical: j["A"] = pair(0), j["u"] = pair(2); break;
+    case Fn::ellipse: j["A"] = pair(0), j["u"] = pair(2), j["C"] = pair(4), j["radii"] = pair(6), j["angle"] = in[8]; break;
+    case Fn::rectangle: j["A"] = pair(0), j["u"] = pair(2), j["C"] = pair(4), j["half"] = pair(6), j["angle"] = in[8]; break;
+    case Fn::sphere: j["A"] = triple(0), j["u"] = triple(3), j["C"] = triple(6), j["r"] = in[9]; break;
+    case Fn::cube_canonical: j["A"] = triple(0), j["u"] = triple(3); break;
   }
-  return {};
+  return j;
 }
 
 std::string label_of(Fn fn) { return fn == Fn::projection ? "P" : fn == Fn::segments ? "I" : "J"; }
