@@ -30,6 +30,21 @@ void AtomicFile::write(std::string_view bytes) {
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path_.string(), std::strerror(errno)));
 }
 
+void AtomicFile::overwrite(std::uint64_t offset, std::string_view bytes) {
+  // pwrite leaves the stream's position at the end; what stdio still buffers goes out first
+  if (std::fflush(file_) != 0)
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path_.string(), std::strerror(errno)));
+  const int fd = ::fileno(file_);
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      throw std::runtime_error(fmt::format("cannot write '{}': {}", path_.string(),
+                                           n < 0 ? std::strerror(errno) : "nothing written"));
+    done += static_cast<std::size_t>(n);
+  }
+}
+
 void AtomicFile::commit() {
   const bool flushed = std::fflush(file_) == 0;
   const bool closed = std::fclose(file_) == 0;

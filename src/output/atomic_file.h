@@ -2,6 +2,7 @@
 // Files are written whole or not at all: the bytes go to a temporary file beside the target,
 // which is flushed and renamed over it (rename is atomic on one file system). A crash leaves at
 // worst a stray *.tmp file, never a half file that looks whole.
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
@@ -17,6 +18,9 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   void write(std::string_view bytes);
+  // Rewrites bytes already written, from `offset` (the file's end does not move); throws
+  // std::runtime_error naming the path.
+  void overwrite(std::uint64_t offset, std::string_view bytes);
   // Flushes, closes and renames over the target; throws std::runtime_error on any failure.
   void commit();
 

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <stdexcept>
+#include <utility>
 
 #include "embed/embedded.h"
 
@@ -21,26 +22,50 @@ std::string explore_unavailable_message() {
          "see README, \"epure explore\")";
 }
 
-std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets) {
+ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write) : write_(std::move(write)) {
   const auto page = explore_page();
   if (!page) throw std::runtime_error(explore_unavailable_message());
-  nlohmann::json config = {{"lang", language}, {"set", nlohmann::json::object()}};
-  for (const auto& s : sheets) {
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& i : s.instances) list.push_back(nlohmann::json::parse(i));
-    config["set"][s.id] = std::move(list);
-  }
-  std::string text = config.dump();
-  // inside <script>: no "</" may close it early
+  page_ = *page;
+  config_at_ = page_.find(kConfig);
+  if (config_at_ == std::string_view::npos) throw std::logic_error("explore page: no configuration element");
+  write_(page_.substr(0, config_at_));
+  write_("<script id=\"epure-config\" type=\"application/json\">");
+  // {"lang":…,"set":{"<id>":[…],…}}, as nlohmann::json's dump() writes the object: no spaces,
+  // keys in order ("lang" < "set"; the ids added in increasing order)
+  put("{\"lang\":" + nlohmann::json(language).dump() + ",\"set\":{");
+}
+
+void ExplorePageWriter::add(const ExploreSheet& sheet) {
+  if (!first_ && !(last_id_ < sheet.id)) throw std::logic_error("explore page: sheets out of id order");
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& i : sheet.instances) list.push_back(nlohmann::json::parse(i));
+  std::string piece = first_ ? "" : ",";
+  piece.append(nlohmann::json(sheet.id).dump()).append(":").append(list.dump());
+  put(std::move(piece));
+  first_ = false;
+  last_id_ = sheet.id;
+}
+
+void ExplorePageWriter::finish() {
+  put("}}");
+  write_("</script>");
+  write_(page_.substr(config_at_ + kConfig.size()));
+}
+
+// Inside <script>, no "</" may close it early. A piece never ends with '<' nor starts with '/'
+// (pieces end with '{', ']' or '}' and start with '{', ',', '"' or '}'), so escaping each piece
+// escapes the whole.
+void ExplorePageWriter::put(std::string text) {
   for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
     text.replace(at, 2, "<\\/");
-  const auto at = page->find(kConfig);
-  if (at == std::string_view::npos) throw std::logic_error("explore page: no configuration element");
+  write_(text);
+}
+
+std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets) {
   std::string html;
-  html.reserve(page->size() + text.size());
-  html.append(page->substr(0, at));
-  html.append("<script id=\"epure-config\" type=\"application/json\">").append(text).append("</script>");
-  html.append(page->substr(at + kConfig.size()));
+  ExplorePageWriter page(language, [&](std::string_view bytes) { html.append(bytes); });
+  for (const auto& s : sheets) page.add(s);
+  page.finish();
   return html;
 }
 

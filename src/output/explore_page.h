@@ -3,6 +3,7 @@
 // binary at build time, with its configuration written in: the language it opens in and, when a
 // set wrote it, every sheet's instances, so that explore.html#<sheet id>.<n> opens that
 // student's exercise n.
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,8 +23,30 @@ bool explore_available();
 // Why it does not, for the user.
 std::string explore_unavailable_message();
 
-// The page, opening in `language`, with `sheets` reachable by their ids. Throws
-// std::runtime_error when the page is not available (explore_unavailable_message()).
+// The page, opening in `language`, with `sheets` (in increasing id order) reachable by their ids.
+// Throws std::runtime_error when the page is not available (explore_unavailable_message()).
 std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets = {});
+
+// The same page written as a set's sheets come, into `write`: the page up to its configuration
+// first, each sheet's instances as they are added, the rest at finish(). Nothing of the sheets
+// is kept, so a set of any size writes it in the same memory. Sheets come in increasing id order
+// (a set's index order; std::logic_error otherwise): the configuration is then the JSON object
+// nlohmann writes, whose keys are sorted.
+class ExplorePageWriter {
+ public:
+  using Write = std::function<void(std::string_view)>;
+  // Throws std::runtime_error when the page is not available.
+  ExplorePageWriter(std::string_view language, Write write);
+  void add(const ExploreSheet& sheet);
+  void finish();
+
+ private:
+  void put(std::string text);
+  Write write_;
+  std::string_view page_;
+  std::size_t config_at_ = 0;
+  std::string last_id_;
+  bool first_ = true;
+};
 
 }  // namespace epure::output

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <span>
 #include <thread>
 #include <utility>
@@ -51,15 +52,16 @@ render::PdfMetadata pdf_metadata(const WorksheetSpec& spec, const std::string& t
   return m;
 }
 
-// A class-set PDF written as it is drawn, committed at the end (never a half file). With links,
-// the committed file is then read again by qpdf and replaced by its linked copy (the file is
-// streamed: the set's PDF is never held in memory whole).
+// A class-set PDF written as it is drawn, its links with it (render/pdf_link_writer.h),
+// committed at the end (never a half file). Nothing of the set's PDF is held in memory.
 struct ClassSetPdf {
-  std::filesystem::path path;
   AtomicFile file;
   render::PdfDocument pdf;
   ClassSetPdf(const std::filesystem::path& path, const render::PdfMetadata& metadata, render::PageSize page)
-      : path(path), file(path), pdf([this](std::string_view bytes) { file.write(bytes); }, metadata, page) {}
+      : file(path),
+        pdf(render::PdfSink{[this](std::string_view bytes) { file.write(bytes); },
+                            [this](std::uint64_t offset, std::string_view bytes) { file.overwrite(offset, bytes); }},
+            metadata, page) {}
 
   void add(const std::vector<render::LaidOutPage>& pages, const std::string& id, bool duplex,
            std::span<const render::PageLink> links) {
@@ -69,10 +71,6 @@ struct ClassSetPdf {
   void commit() {
     pdf.finish();
     file.commit();
-    if (pdf.links().empty()) return;
-    AtomicFile linked(path);
-    render::add_links_to_file(path, pdf.links(), [&](std::string_view bytes) { linked.write(bytes); });
-    linked.commit();
   }
 };
 
@@ -89,7 +87,9 @@ struct Batch {
 // as long as keys.pdf, and the two cores stay busy without a third thread taking turns with
 // keys.pdf's. With SVG pages to write as well, or three jobs or more, sheets.pdf has a thread
 // too. With one job, in line. Either way the pages go in id order: the bytes do not depend on
-// the number of jobs.
+// the number of jobs. And memory does not depend on the number of sheets: add() waits until
+// both PDFs have drawn the batch before (a queue one batch deep), so generation runs at most one
+// batch ahead of the slower PDF, and two batches at most are held (128 sheets' documents).
 class ClassSetWriter {
  public:
   ClassSetWriter(const GenerateOptions& o, const WorksheetSpec& spec, const Printed& first)
@@ -175,9 +175,15 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   fmt::memory_buffer key;
   KeyJson::begin(key, set, options.epure_version);
   std::vector<IndexEntry> index;
-  // explore.html beside index.html, every sheet's exercises reachable from their ids
+  // explore.html beside index.html, every sheet's exercises reachable from their ids, written
+  // as the sheets come
   const bool explore = options.svg && explore_available();
-  std::vector<ExploreSheet> explore_sheets;
+  std::optional<AtomicFile> explore_file;
+  std::optional<ExplorePageWriter> explore_page;
+  if (explore) {
+    explore_file.emplace(options.out / "explore.html");
+    explore_page.emplace(set.language(), [&](std::string_view bytes) { explore_file->write(bytes); });
+  }
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;
   std::unique_ptr<ClassSetWriter> class_set;
@@ -241,9 +247,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
       KeyJson::sheet(key, sheets[i], start + i == 0);
       index.push_back({sheets[i].id.str(), static_cast<int>(sheets[i].exercises.size())});
       if (explore) {
-        ExploreSheet& e = explore_sheets.emplace_back();
-        e.id = sheets[i].id.str();
+        ExploreSheet e{sheets[i].id.str(), {}};
         for (const auto& x : sheets[i].exercises) e.instances.push_back(x.instance);
+        explore_page->add(e);
       }
     }
     key_file.write(std::string_view(key.data(), key.size()));
@@ -257,14 +263,20 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   key_file.write(std::string_view(key.data(), key.size()));
   if (class_set) class_set->commit();
   key_file.commit();
-  if (options.svg)
-    write_file_atomically(options.out / "index.html",
-                          index_html(set.spec().title, set.spec().course, set.language(), index,
-                                     !options.pdf    ? PdfLinks::none
-                                     : options.split ? PdfLinks::per_sheet
-                                                     : PdfLinks::class_set,
-                                     explore));
-  if (explore) write_file_atomically(options.out / "explore.html", explore_html(set.language(), explore_sheets));
+  if (options.svg) {
+    AtomicFile index_file(options.out / "index.html");
+    write_index_html([&](std::string_view bytes) { index_file.write(bytes); }, set.spec().title, set.spec().course,
+                     set.language(), index,
+                     !options.pdf    ? PdfLinks::none
+                     : options.split ? PdfLinks::per_sheet
+                                     : PdfLinks::class_set,
+                     explore);
+    index_file.commit();
+  }
+  if (explore) {
+    explore_page->finish();
+    explore_file->commit();
+  }
   return report;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // Writes a worksheet set to a directory: key.json, and as SVG sheets/<id>.svg, keys/<id>.svg and
 // index.html, as PDF sheets.pdf and keys.pdf (the class set in id order) or, split, one
-// sheets/<id>.pdf and keys/<id>.pdf per sheet. Sheets stream through in small batches (memory
-// stays flat for 10,000 sheets); with several jobs, drawing, layout and SVG run in parallel and
-// the output (order and bytes) is the same as with one.
+// sheets/<id>.pdf and keys/<id>.pdf per sheet. Sheets stream through in small batches and every
+// file is written as they come, so memory stays flat whatever the number of sheets (issue 37);
+// with several jobs, drawing, layout and SVG run in parallel and the output (order and bytes) is
+// the same as with one.
 #include <cstdint>
 #include <filesystem>
 #include <functional>

@@ -31,10 +31,10 @@ std::string explore_links(const IndexEntry& e, bool explore) {
 
 }  // namespace
 
-std::string index_html(const std::string& title, const std::string& course,
-                       const std::string& language, const std::vector<IndexEntry>& entries, PdfLinks pdfs,
-                       bool explore) {
-  std::string html = fmt::format(
+void write_index_html(const std::function<void(std::string_view)>& write, const std::string& title,
+                      const std::string& course, const std::string& language,
+                      const std::vector<IndexEntry>& entries, PdfLinks pdfs, bool explore) {
+  write(fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>{}</title>\n<style>\n"
       "body{{font-family:'DejaVu Sans',sans-serif;margin:2em;background:#f4f4f4;color:#222}}\n"
@@ -47,12 +47,12 @@ std::string index_html(const std::string& title, const std::string& course,
       "</style>\n</head>\n<body>\n<h1>{}</h1>\n<p class=\"course\">{}</p>\n"
       "<p>{} sheets. <a href=\"key.json\">key.json</a>{}</p>\n<nav>\n",
       escape(language), escape(title), escape(title), escape(course), entries.size(),
-      pdfs == PdfLinks::class_set ? " · <a href=\"sheets.pdf\">sheets.pdf</a> · <a href=\"keys.pdf\">keys.pdf</a>" : "");
-  for (const auto& e : entries) html += fmt::format("<a href=\"#s-{0}\">{0}</a>\n", escape(e.id));
-  html += "</nav>\n";
+      pdfs == PdfLinks::class_set ? " · <a href=\"sheets.pdf\">sheets.pdf</a> · <a href=\"keys.pdf\">keys.pdf</a>" : ""));
+  for (const auto& e : entries) write(fmt::format("<a href=\"#s-{0}\">{0}</a>\n", escape(e.id)));
+  write("</nav>\n");
   for (const auto& e : entries) {
     const std::string id = escape(e.id);
-    html += fmt::format(
+    write(fmt::format(
         "<section id=\"s-{0}\">\n<h2>{0}{1}</h2>\n<div class=\"pair\">\n"
         "<a href=\"sheets/{0}.svg\"><img src=\"sheets/{0}.svg\" alt=\"sheet {0}\" loading=\"lazy\"></a>\n"
         "<a href=\"keys/{0}.svg\"><img src=\"keys/{0}.svg\" alt=\"key {0}\" loading=\"lazy\"></a>\n"
@@ -61,10 +61,9 @@ std::string index_html(const std::string& title, const std::string& course,
         pdfs == PdfLinks::per_sheet
             ? fmt::format(" <a href=\"sheets/{0}.pdf\">sheet PDF</a> <a href=\"keys/{0}.pdf\">key PDF</a>", id)
             : std::string(),
-        explore_links(e, explore));
+        explore_links(e, explore)));
   }
-  html += "</body>\n</html>\n";
-  return html;
+  write("</body>\n</html>\n");
 }
 
 }  // namespace epure::output

@@ -3,16 +3,11 @@
 #include <cairo-pdf.h>
 #include <cairo.h>
 #include <pango/pangocairo.h>
-#include <qpdf/Pipeline.hh>
-#include <qpdf/QPDF.hh>
-#include <qpdf/QPDFExc.hh>
-#include <qpdf/QPDFPageDocumentHelper.hh>
-#include <qpdf/QPDFPageObjectHelper.hh>
-#include <qpdf/QPDFWriter.hh>
 
 #include <charconv>
 #include <cstdlib>
 #include <ctime>
+#include <exception>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -22,16 +17,6 @@
 
 namespace epure::render {
 namespace {
-
-cairo_status_t write_to_sink(void* closure, const unsigned char* data, unsigned int length) {
-  auto* sink = static_cast<PdfDocument::Sink*>(closure);
-  try {
-    (*sink)(std::string_view(reinterpret_cast<const char*>(data), length));
-  } catch (...) {
-    return CAIRO_STATUS_WRITE_ERROR;  // cairo reports it; finish() turns it into an exception
-  }
-  return CAIRO_STATUS_SUCCESS;
-}
 
 cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -52,67 +37,30 @@ void check(cairo_status_t status, const char* what) {
     throw std::runtime_error(fmt::format("{}: {}", what, cairo_status_to_string(status)));
 }
 
-// qpdf's output into a sink (QPDFWriter writes to a Pipeline).
-class SinkPipeline : public Pipeline {
- public:
-  explicit SinkPipeline(const PdfDocument::Sink& sink) : Pipeline("epure sink", nullptr), sink_(sink) {}
-  void write(unsigned char const* data, size_t length) override {
-    sink_(std::string_view(reinterpret_cast<const char*>(data), length));
-  }
-  void finish() override {}
-
- private:
-  const PdfDocument::Sink& sink_;
-};
-
-// The annotations into `pdf` (read), then the whole file out through qpdf.
-void write_with_links(QPDF& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
-  std::vector<QPDFPageObjectHelper> pages = QPDFPageDocumentHelper(pdf).getAllPages();
-  for (const PageLink& link : links) {
-    if (link.page < 0 || static_cast<std::size_t>(link.page) >= pages.size())
-      throw std::runtime_error(fmt::format("a PDF link on page {} of {}", link.page + 1, pages.size()));
-    QPDFPageObjectHelper& page = pages[static_cast<std::size_t>(link.page)];
-    // the layout's rectangle has its origin at the top left, PDF's user space at the bottom left
-    const double top = page.getMediaBox().getArrayItem(3).getNumericValue();
-    const PageRect& r = link.rect;
-    const auto number = [](double v) { return QPDFObjectHandle::newReal(v, 2); };
-    QPDFObjectHandle action = QPDFObjectHandle::newDictionary();
-    action.replaceKey("/S", QPDFObjectHandle::newName("/URI"));
-    action.replaceKey("/URI", QPDFObjectHandle::newString(link.uri));
-    QPDFObjectHandle annotation = QPDFObjectHandle::newDictionary();
-    annotation.replaceKey("/Type", QPDFObjectHandle::newName("/Annot"));
-    annotation.replaceKey("/Subtype", QPDFObjectHandle::newName("/Link"));
-    annotation.replaceKey("/Rect", QPDFObjectHandle::newArray({number(r.x), number(top - r.bottom()),
-                                                               number(r.right()), number(top - r.y)}));
-    annotation.replaceKey("/Border", QPDFObjectHandle::newArray({QPDFObjectHandle::newInteger(0),
-                                                                 QPDFObjectHandle::newInteger(0),
-                                                                 QPDFObjectHandle::newInteger(0)}));
-    annotation.replaceKey("/A", action);
-    QPDFObjectHandle page_object = page.getObjectHandle();
-    if (!page_object.getKey("/Annots").isArray()) page_object.replaceKey("/Annots", QPDFObjectHandle::newArray());
-    page_object.getKey("/Annots").appendItem(pdf.makeIndirectObject(annotation));
-  }
-  SinkPipeline out(sink);
-  QPDFWriter writer(pdf);
-  writer.setOutputPipeline(&out);
-  writer.setDeterministicID(true);  // not a random one: the same bytes every run
-  writer.write();
-}
-
-// qpdf's exceptions as the std::runtime_error the callers expect.
-template <class Read>
-void with_qpdf(Read&& read, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
-  try {
-    QPDF pdf;
-    pdf.setSuppressWarnings(true);
-    read(pdf);
-    write_with_links(pdf, links, sink);
-  } catch (const QPDFExc& e) {
-    throw std::runtime_error(fmt::format("cannot add the PDF's links: {}", e.what()));
-  }
-}
-
 }  // namespace
+
+// cairo's bytes go through the link writer to the sink. An exception from the sink (a file that
+// cannot be written) is kept and rethrown to the caller as it is: cairo only learns that the
+// write failed.
+struct PdfDocument::Stream {
+  explicit Stream(PdfSink sink) : writer(std::move(sink)) {}
+  PdfLinkWriter writer;
+  std::exception_ptr error;
+  bool discard = false;  // a document dropped unfinished: whatever cairo still writes goes nowhere
+
+  static cairo_status_t write(void* closure, const unsigned char* data, unsigned int length) {
+    auto* self = static_cast<Stream*>(closure);
+    if (self->discard) return CAIRO_STATUS_SUCCESS;
+    if (self->error) return CAIRO_STATUS_WRITE_ERROR;
+    try {
+      self->writer.write(std::string_view(reinterpret_cast<const char*>(data), length));
+    } catch (...) {
+      self->error = std::current_exception();
+      return CAIRO_STATUS_WRITE_ERROR;  // cairo reports it; check_stream() rethrows the cause
+    }
+    return CAIRO_STATUS_SUCCESS;
+  }
+};
 
 std::optional<std::int64_t> source_date_epoch() {
   const char* value = std::getenv("SOURCE_DATE_EPOCH");
@@ -126,8 +74,10 @@ std::optional<std::int64_t> source_date_epoch() {
   return seconds;
 }
 
-PdfDocument::PdfDocument(Sink sink, const PdfMetadata& metadata, PageSize first_page) : sink_(std::move(sink)) {
-  surface_ = cairo_pdf_surface_create_for_stream(write_to_sink, &sink_, first_page.width_pt, first_page.height_pt);
+PdfDocument::PdfDocument(PdfSink sink, const PdfMetadata& metadata, PageSize first_page)
+    : stream_(std::make_unique<Stream>(std::move(sink))) {
+  surface_ = cairo_pdf_surface_create_for_stream(Stream::write, stream_.get(), first_page.width_pt,
+                                                 first_page.height_pt);
   check(cairo_surface_status(surface_), "cannot start a PDF");
   cairo_pdf_surface_restrict_to_version(surface_, CAIRO_PDF_VERSION_1_5);
   const auto set = [&](cairo_pdf_metadata_t key, const std::string& value) {
@@ -154,8 +104,7 @@ PdfDocument::~PdfDocument() {
   if (fonts_ != nullptr) g_object_unref(fonts_);
   if (cr_ != nullptr) cairo_destroy(cr_);
   if (surface_ != nullptr) {
-    // Not finished: whatever cairo still writes goes nowhere.
-    if (!finished_) sink_ = [](std::string_view) {};
+    stream_->discard = !finished_;
     cairo_surface_destroy(surface_);
   }
 }
@@ -184,18 +133,34 @@ std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const
   return links;
 }
 
+int PdfDocument::links() const { return stream_->writer.annotations(); }
+
+void PdfDocument::check_stream() {
+  if (stream_->error) std::rethrow_exception(stream_->error);
+}
+
 void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
                       const PageStyle& style, std::span<const PageLink> links) {
-  for (const PageLink& link : links) links_.push_back({pages_ + link.page, link.rect, link.uri});
+  for (const PageLink& link : links)
+    if (link.page < 0 || static_cast<std::size_t>(link.page) >= pages.size())
+      throw std::runtime_error(fmt::format("a PDF link on page {} of {}", link.page + 1, pages.size()));
   if (outline && !label.empty()) {
     const std::string link = fmt::format("page={}", pages_ + 1);
     cairo_pdf_surface_add_outline(surface_, CAIRO_PDF_OUTLINE_ROOT, std::string(label).c_str(), link.c_str(),
                                   static_cast<cairo_pdf_outline_flags_t>(0));
   }
-  for (const LaidOutPage& page : pages) {
+  std::vector<PageLink> on_page;
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    const LaidOutPage& page = pages[i];
     begin_page(page.size, label.empty() ? std::string() : fmt::format("{} {}/{}", label, page.number, page.count));
+    on_page.clear();
+    for (const PageLink& link : links)
+      if (static_cast<std::size_t>(link.page) == i) on_page.push_back(link);
+    stream_->writer.begin_page(pages_, page.size.height_pt, on_page);
     paint_page(*canvas_, page, style);
     cairo_show_page(cr_);
+    check_stream();
+    stream_->writer.end_page();
   }
   check(cairo_status(cr_), "cannot draw a PDF page");
 }
@@ -203,36 +168,28 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
 void PdfDocument::add_blank(PageSize size, std::string_view label) {
   begin_page(size, label);
   cairo_show_page(cr_);
+  check_stream();
 }
 
 void PdfDocument::finish() {
   canvas_.reset();
   cairo_destroy(cr_);
   cr_ = nullptr;
+  stream_->writer.begin_trailer();
   cairo_surface_finish(surface_);
   finished_ = true;
+  check_stream();
   check(cairo_surface_status(surface_), "cannot write the PDF");
+  stream_->writer.finish();
 }
 
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
                          const PdfMetadata& metadata, const PageStyle& style, std::span<const PageLink> links) {
   std::string bytes;
-  PdfDocument pdf([&](std::string_view b) { bytes.append(b); }, metadata,
-                  pages.empty() ? PageSize::a4() : pages.front().size);
+  PdfDocument pdf(string_sink(bytes), metadata, pages.empty() ? PageSize::a4() : pages.front().size);
   pdf.add(pages, label, false, style, links);
   pdf.finish();
-  if (links.empty()) return bytes;
-  std::string linked;
-  add_links(bytes, links, [&](std::string_view b) { linked.append(b); });
-  return linked;
-}
-
-void add_links(std::string_view pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
-  with_qpdf([&](QPDF& q) { q.processMemoryFile("PDF", pdf.data(), pdf.size()); }, links, sink);
-}
-
-void add_links_to_file(const std::filesystem::path& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink) {
-  with_qpdf([&](QPDF& q) { q.processFile(pdf.c_str()); }, links, sink);
+  return bytes;
 }
 
 namespace {

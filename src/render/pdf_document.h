@@ -1,11 +1,10 @@
 #pragma once
 // Laid-out pages as a PDF, drawn with cairo and pango (cairo_canvas.h) through the same page
 // painter as the SVG pages. Text is real text in embedded DejaVu Sans subsets, so it can be
-// selected, searched and extracted. The bytes are streamed to a sink as cairo produces them;
-// with the creation date fixed (SOURCE_DATE_EPOCH), the same pages give the same bytes.
+// selected, searched and extracted. The bytes are streamed to a sink as cairo produces them,
+// the links written in on the way (pdf_link_writer.h); with the creation date fixed
+// (SOURCE_DATE_EPOCH), the same pages give the same bytes.
 #include <cstdint>
-#include <filesystem>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -15,6 +14,7 @@
 
 #include "render/layout.h"
 #include "render/page_painter.h"
+#include "render/pdf_link_writer.h"
 
 typedef struct _cairo cairo_t;
 typedef struct _cairo_surface cairo_surface_t;
@@ -34,15 +34,6 @@ struct PdfMetadata {
 // seconds, nothing otherwise. Throws std::runtime_error for a value that is not a number.
 std::optional<std::int64_t> source_date_epoch();
 
-// A link annotation: a rectangle of one of a document's pages (index in its laid-out pages; in
-// PdfDocument::links(), in the whole PDF) that opens `uri`. The rectangle is in page points from
-// the top left corner, like the layout's.
-struct PageLink {
-  int page = 0;
-  PageRect rect;
-  std::string uri;
-};
-
 // The links of a document's sections (Section::link), each on the sections' heading where it is
 // placed (a section split across pages: on its first part), the uri prefixed with `base` ("../"
 // for a PDF one directory below the set's).
@@ -53,50 +44,38 @@ std::vector<PageLink> section_links(const std::vector<LaidOutPage>& pages, const
 // threads (pango's font maps are not thread-safe); one document is used by one thread at a time.
 class PdfDocument {
  public:
-  using Sink = std::function<void(std::string_view bytes)>;
-
-  PdfDocument(Sink sink, const PdfMetadata& metadata, PageSize first_page = PageSize::a4());
+  PdfDocument(PdfSink sink, const PdfMetadata& metadata, PageSize first_page = PageSize::a4());
   ~PdfDocument();
   PdfDocument(const PdfDocument&) = delete;
   PdfDocument& operator=(const PdfDocument&) = delete;
 
   // Appends the pages of one document. `label` names them in a viewer's page list ("<label>
   // 1/3") and, when `outline` is set, in the bookmarks, pointing at the first page.
-  // `links`: annotations on these pages (PageLink::page indexes `pages`); cairo does not write
-  // them (see links()), they are collected.
+  // `links`: annotations on these pages (PageLink::page indexes `pages`), written with them.
   void add(const std::vector<LaidOutPage>& pages, std::string_view label, bool outline,
            const PageStyle& style = {}, std::span<const PageLink> links = {});
   // An empty page, to make the next document start on an odd page for duplex printing.
   void add_blank(PageSize size, std::string_view label);
   int pages() const { return pages_; }
-  // The links added so far, PageLink::page counting the PDF's pages from 0. Debian 12's cairo
-  // (1.16.0) writes a link tag (cairo_tag_begin(cr, CAIRO_TAG_LINK, "rect=[…] uri='…'")) as an
-  // annotation whose /StructParent leads to objects it never writes, and qpdf calls the file
-  // damaged; so the finished PDF goes through add_links() instead.
-  const std::vector<PageLink>& links() const { return links_; }
+  // The link annotations written so far.
+  int links() const;
 
-  // Writes the trailer; throws std::runtime_error when cairo failed at any point.
+  // Writes the trailer; throws std::runtime_error when cairo or the sink failed at any point
+  // (the sink's own exception, e.g. the file's "cannot write").
   void finish();
 
  private:
   void begin_page(PageSize size, std::string_view label);
-  Sink sink_;
+  void check_stream();
+  struct Stream;  // what cairo writes into: the link writer, and the sink's error
+  std::unique_ptr<Stream> stream_;
   cairo_surface_t* surface_ = nullptr;
   cairo_t* cr_ = nullptr;
   PangoFontMap* fonts_ = nullptr;
   std::unique_ptr<class CairoCanvas> canvas_;
   int pages_ = 0;
   bool finished_ = false;
-  std::vector<PageLink> links_;
 };
-
-// A finished PDF (its bytes, or a file) again, into `sink`, with one Link annotation per link
-// (PageLink::page counts the PDF's pages from 0; a link past the last page is an error) opening
-// its URI, borderless, over its rectangle. Written by qpdf with an ID derived from the content:
-// the same PDF and links give the same bytes. Throws std::runtime_error when qpdf cannot read or
-// write the file.
-void add_links(std::string_view pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink);
-void add_links_to_file(const std::filesystem::path& pdf, std::span<const PageLink> links, const PdfDocument::Sink& sink);
 
 // The pages as one PDF in memory (tests and --split), with their links.
 std::string pages_to_pdf(const std::vector<LaidOutPage>& pages, std::string_view label,
