@@ -84,6 +84,7 @@ OptionDoc describe_option(CLI::Option& option) {
     doc.excludes.push_back(l.empty() ? other->get_name() : "--" + l.front());
   }
   std::sort(doc.excludes.begin(), doc.excludes.end());
+  doc.environment = option.get_envname();
   if (!doc.takes_value) return doc;
 
   ValueDoc& value = doc.value;

@@ -35,6 +35,7 @@ struct OptionDoc {
   bool required = false;
   bool repeats = false;                // may be given several times (a positional: several values)
   std::vector<std::string> excludes;  // the options it cannot be given with (their first long name)
+  std::string environment;            // the variable it is also read from (CLI11's envname), if any
   ValueDoc value;
 
   // "--sheets" (or "-n" if there is no long name; the positional's name for a positional).

@@ -55,11 +55,15 @@ set(CPACK_PACKAGE_NAME epure)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_CONTACT "${EPURE_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "randomised geometry worksheets, their answer keys and grading")
-set(CPACK_PACKAGE_DESCRIPTION "epure turns the geometry of a ray tracer into randomised worksheets: each student gets \
-an own instance of each exercise (dot and cross products, projections, segment intersections, \
-ray/circle, ray/square, ellipse, rectangle, and their 3D forms), solved by epure's geometry core \
-and written with its answer key as SVG and print-ready PDF. It grades a class's answers from a \
-spreadsheet export with reports and feedback sheets, and exports sets to Moodle and QTI.")
+# (the extended description in lines of under 80 characters, as dpkg shows it)
+string(JOIN "\n" CPACK_PACKAGE_DESCRIPTION
+  "epure turns the geometry of a ray tracer into randomised worksheets: each"
+  "student gets their own instance of each exercise (dot and cross products,"
+  "projections, segment intersections, ray/circle, ray/square, ellipse,"
+  "rectangle, and their forms in space), solved by epure's geometry core and"
+  "written with its answer key as SVG and print-ready PDF. It grades a class's"
+  "answers from a spreadsheet export, with reports and feedback sheets, and"
+  "exports sets to Moodle and QTI.")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION education)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)

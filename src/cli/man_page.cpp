@@ -98,6 +98,7 @@ std::string option_text(const OptionDoc& o) {
   if (!o.default_value.empty()) text += fmt::format("Default: \\fB{}\\fR.\n", roff_escape(o.default_value));
   if (o.required) text += "Required.\n";
   if (!o.excludes.empty()) text += "Not with " + bold_list(o.excludes) + ".\n";
+  if (!o.environment.empty()) text += fmt::format("Also read from \\fB{}\\fR.\n", name_escape(o.environment));
   return text;
 }
 

@@ -38,6 +38,7 @@ TEST_CASE("man_pages: a page per command, every option with its value, default a
   gen->add_option("--sheets,-n", sheets, "Number of sheets")->check(CLI::Range(1, 99))->capture_default_str();
   gen->add_option("--lang", lang, "Language")->check(CLI::IsMember({"en", "fr"}));
   gen->add_flag("--quiet,-q", quiet, "No summary");
+  gen->add_option("--key", key, "Key")->envname("TOOL_KEY");
   auto* preview = app.add_subcommand("preview", "Draw a kind");
   preview->add_option("kind", kind, "Kind")->required()->check(CLI::IsMember({"dot", "cross"}));
   auto* exp = app.add_subcommand("export", "Export");
@@ -68,6 +69,7 @@ TEST_CASE("man_pages: a page per command, every option with its value, default a
   CHECK(contains(g, "\\fB\\-n\\fR, \\fB\\-\\-sheets\\fR \\fISHEETS\\fR\nNumber of sheets.\nFrom 1 to 99.\nDefault: \\fB30\\fR.\n"));
   CHECK(contains(g, "\\fB\\-\\-lang\\fR \\fILANG\\fR\nLanguage.\nOne of: \\fBen\\fR, \\fBfr\\fR.\n"));
   CHECK(contains(g, "\\fB\\-q\\fR, \\fB\\-\\-quiet\\fR\nNo summary.\n"));
+  CHECK(contains(g, "\\fB\\-\\-key\\fR \\fIKEY\\fR\nKey.\nAlso read from \\fBTOOL_KEY\\fR.\n"));
 
   const std::string& p = pages[2].roff;
   CHECK(contains(p, ".SH ARGUMENTS\n.TP\n\\fIKIND\\fR\nKind.\nOne of: \\fBdot\\fR, \\fBcross\\fR.\nRequired.\n"));
