@@ -47,8 +47,8 @@ install(CODE "
 
 # The Debian package. The version is the project's (CMakeLists.txt: project(VERSION)), as
 # `epure --version` says it; Depends is what dpkg-shlibdeps finds the binary linked with (libc,
-# cairo, pango, qpdf, libzip, qrencode, fmt, jemalloc, …) plus the font the PDFs embed, which pango
-# loads at run time by name.
+# cairo, pango, qpdf, libzip, qrencode, fmt, jemalloc, libseccomp, …) plus the font the PDFs
+# embed, which pango loads at run time by name.
 set(EPURE_PACKAGE_MAINTAINER "epure maintainers <epure@example.org>" CACHE STRING "The Debian package's Maintainer field")
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME epure)
@@ -68,6 +68,9 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION education)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
+# `epure check` compiles students' C files with gcc and the static C library: recommended (apt
+# installs them by default), not required by the rest of the program
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gcc, libc6-dev")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "bash-completion")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 set(CPACK_STRIP_FILES ON)
