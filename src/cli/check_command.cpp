@@ -135,7 +135,8 @@ void add_check_command(CLI::App& app, int& status) {
   cmd->add_option("submissions", o->submissions, "C files (one per student), or directories of them");
   cmd->add_option("--out,-o", o->out, "Directory for report.json, summary.txt, marks.csv and feedback/");
   auto* spec = cmd->add_option("--spec", o->spec,
-                               "The spec the students' sheets were drawn from (TOML, 'builtin' or 'builtin:3d'; default: the course)");
+                               "The spec the students' sheets were drawn from (TOML, 'builtin' or 'builtin:3d'; default: the course)")
+                   ->check(spec_check());
   auto* key = cmd->add_option("--key", o->key, "Instead of --spec: the set's key.json (it carries its spec)")->check(CLI::ExistingFile);
   spec->excludes(key);
   cmd->add_option("--lang", o->language, "Language of the feedback pages and the summary (default: fr)")

@@ -43,5 +43,13 @@ void add_export_command(CLI::App& app, int& status);
 void add_starter_command(CLI::App& app, int& status);
 // Registers `epure check`.
 void add_check_command(CLI::App& app, int& status);
+// Registers `epure completion bash|zsh` and the hidden `epure __docs` (the manual pages and the
+// completion scripts, written by the build): after every other command.
+void add_docs_commands(CLI::App& app, int& status);
+
+// A kind's name, checked against the registry (option_checks.cpp).
+CLI::Validator kind_name_check();
+// A spec: an existing file or a built-in spec's name (builtin, builtin:3d).
+CLI::Validator spec_check();
 
 }  // namespace epure::cli

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -25,7 +26,7 @@ struct GenerateCliOptions {
   std::string language;
   std::string difficulty;
   std::string out = "out";
-  std::string format = "svg,pdf";
+  std::vector<std::string> formats = {"svg", "pdf"};  // --format svg,pdf: a list, each checked
   std::string paper;
   bool split = false;
   bool duplex = false;
@@ -89,8 +90,8 @@ int run_generate(const GenerateCliOptions& o) {
   output::GenerateOptions options;
   options.sheets = o.sheets;
   options.out = o.out;
-  options.svg = o.format.find("svg") != std::string::npos;
-  options.pdf = o.format.find("pdf") != std::string::npos;
+  options.svg = std::find(o.formats.begin(), o.formats.end(), "svg") != o.formats.end();
+  options.pdf = std::find(o.formats.begin(), o.formats.end(), "pdf") != o.formats.end();
   options.split = o.split;
   options.duplex = o.duplex;
   if (options.pdf) options.pdf_date = render::source_date_epoch();
@@ -116,14 +117,15 @@ void add_generate_command(CLI::App& app, int& status) {
       ->check(CLI::Range(std::uint64_t{0}, (std::uint64_t{1} << 35) - 1))
       ->capture_default_str();
   cmd->add_option("--spec", o->spec_file, "Worksheet spec (TOML), or builtin (the course) or builtin:3d (the course in space); default: builtin")
-      ->check(CLI::ExistingFile | CLI::IsMember({"builtin", "builtin:3d"}));
+      ->check(spec_check());
   cmd->add_option("--lang", o->language, "Language of the texts (overrides the spec)")
       ->check(CLI::IsMember({"en", "fr"}));
   cmd->add_option("--difficulty", o->difficulty, "Difficulty of every exercise (overrides the spec)")
       ->check(CLI::IsMember({"easy", "standard", "hard"}));
   cmd->add_option("--out,-o", o->out, "Output directory")->capture_default_str();
-  cmd->add_option("--format", o->format, "Output formats: svg, pdf, or both (svg,pdf)")
-      ->check(CLI::IsMember({"svg", "pdf", "svg,pdf", "pdf,svg"}))
+  cmd->add_option("--format", o->formats, "Output formats: svg, pdf, or both (svg,pdf)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"svg", "pdf"}))
       ->capture_default_str();
   cmd->add_flag("--split", o->split, "PDF: one file per sheet and per key (sheets/<id>.pdf, keys/<id>.pdf) instead of sheets.pdf and keys.pdf");
   cmd->add_flag("--duplex", o->duplex, "PDF: start every sheet on an odd page (a blank page where needed), for double-sided printing");

@@ -197,7 +197,8 @@ void add_grade_command(CLI::App& app, int& status) {
       "grade", "Mark students' answers (CSV or JSON) against the key: reports, statistics, feedback sheets");
   auto* key = cmd->add_option("--key,-k", o->key_file, "The set's key.json (from epure generate)")->check(CLI::ExistingFile);
   auto* spec = cmd->add_option("--spec", o->spec_file,
-                               "Instead of --key: the set's spec (TOML, or 'builtin' or 'builtin:3d'); keys rebuilt from the sheet ids");
+                               "Instead of --key: the set's spec (TOML, or 'builtin' or 'builtin:3d'); keys rebuilt from the sheet ids")
+                   ->check(spec_check());
   key->excludes(spec);
   cmd->add_option("--answers,-a", o->answers,
                   "Answers: CSV with a header row (a 'sheet' column, optional 'student', one column per question id) "

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "exercises/sheet_id.h"
 
 #ifndef EPURE_VERSION
 #define EPURE_VERSION "0.0.0"
@@ -12,7 +13,8 @@
 int main(int argc, char** argv) {
   CLI::App app{"epure: randomised geometry worksheets, their answer keys, and the solver behind them",
                "epure"};
-  app.set_version_flag("--version", "epure " EPURE_VERSION);
+  // the program's version, and the generator's that sheet ids carry (a key is rebuilt only by it)
+  app.set_version_flag("--version", "epure " EPURE_VERSION " (draw version " + std::to_string(epure::kDrawVersion) + ")");
   app.require_subcommand(1);
   int status = 0;
   epure::cli::add_check_command(app, status);
@@ -24,6 +26,7 @@ int main(int argc, char** argv) {
   epure::cli::add_preview_command(app, status);
   epure::cli::add_solve_command(app, status);
   epure::cli::add_starter_command(app, status);
+  epure::cli::add_docs_commands(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -101,7 +101,7 @@ int run_preview(const PreviewOptions& o) {
 void add_preview_command(CLI::App& app, int& status) {
   auto o = std::make_shared<PreviewOptions>();
   CLI::App* cmd = app.add_subcommand("preview", "Draw one exercise's question and key diagrams as PNG");
-  cmd->add_option("kind", o->kind, "Exercise kind (as 'epure kinds' lists them)")->required();
+  cmd->add_option("kind", o->kind, "Exercise kind (as 'epure kinds' lists them)")->required()->check(kind_name_check());
   cmd->add_option("--seed,-s", o->seed, "Seed")->capture_default_str();
   cmd->add_option("--lang", o->language, "Language of the labels")->check(CLI::IsMember({"en", "fr"}));
   cmd->add_option("--difficulty", o->difficulty, "Difficulty")->check(CLI::IsMember({"easy", "standard", "hard"}));

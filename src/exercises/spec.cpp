@@ -316,20 +316,45 @@ int exercise_number(const WorksheetSpec& spec, std::size_t slot) {
   return n;
 }
 
-WorksheetSpec builtin_spec() {
-  static const WorksheetSpec spec = parse_spec(*embedded_file("course.toml"), "templates/course.toml");
-  return spec;
+namespace {
+
+// The built-in specs: their command-line name and the templates/ file they are read from, the
+// course's first. The one table builtin_spec, builtin_specs and builtin_spec_names read.
+struct BuiltinSpecFile {
+  std::string_view name, file;
+};
+constexpr BuiltinSpecFile kBuiltinSpecs[] = {{"builtin", "course.toml"}, {"builtin:3d", "course-3d.toml"}};
+
+const WorksheetSpec& parsed_builtin(std::size_t i) {
+  static const std::vector<WorksheetSpec> specs = [] {
+    std::vector<WorksheetSpec> all;
+    for (const auto& b : kBuiltinSpecs)
+      all.push_back(parse_spec(*embedded_file(b.file), fmt::format("templates/{}", b.file)));
+    return all;
+  }();
+  return specs[i];
 }
 
+}  // namespace
+
+WorksheetSpec builtin_spec() { return parsed_builtin(0); }
+
 std::optional<WorksheetSpec> builtin_spec(std::string_view name) {
-  if (name == "builtin") return builtin_spec();
-  if (name == "builtin:3d") {
-    static const WorksheetSpec spec = parse_spec(*embedded_file("course-3d.toml"), "templates/course-3d.toml");
-    return spec;
-  }
+  for (std::size_t i = 0; i < std::size(kBuiltinSpecs); ++i)
+    if (kBuiltinSpecs[i].name == name) return parsed_builtin(i);
   return std::nullopt;
 }
 
-std::vector<WorksheetSpec> builtin_specs() { return {builtin_spec(), *builtin_spec("builtin:3d")}; }
+std::vector<WorksheetSpec> builtin_specs() {
+  std::vector<WorksheetSpec> specs;
+  for (std::size_t i = 0; i < std::size(kBuiltinSpecs); ++i) specs.push_back(parsed_builtin(i));
+  return specs;
+}
+
+std::vector<std::string> builtin_spec_names() {
+  std::vector<std::string> names;
+  for (const auto& b : kBuiltinSpecs) names.emplace_back(b.name);
+  return names;
+}
 
 }  // namespace epure

@@ -94,5 +94,8 @@ WorksheetSpec builtin_spec();
 std::optional<WorksheetSpec> builtin_spec(std::string_view name);
 // The built-in specs, the course's first.
 std::vector<WorksheetSpec> builtin_specs();
+// Their command-line names, in the same order ("builtin", "builtin:3d"): the one list the
+// options' checks, the manual pages and the shell completion read.
+std::vector<std::string> builtin_spec_names();
 
 }  // namespace epure

@@ -9,6 +9,8 @@
 # at -O2. fmt and toml++ are used header-only (Debian's libraries are native); their headers and
 # nlohmann's are reached through a directory of links, so that em++ sees no other native header.
 option(EPURE_EXPLORE "Build the WebAssembly page of `epure explore` when em++ is found" ON)
+# CMakePresets.json's "wasm": the page or an error, never a program without it by surprise
+option(EPURE_EXPLORE_REQUIRED "Fail when the page cannot be built (em++ or node missing)" OFF)
 set(EPURE_EXPLORE_PAGE "")
 if(NOT EPURE_EXPLORE)
   return()
@@ -16,6 +18,9 @@ endif()
 find_program(EPURE_EMXX em++)
 find_program(EPURE_NODE node)
 if(NOT EPURE_EMXX OR NOT EPURE_NODE)
+  if(EPURE_EXPLORE_REQUIRED)
+    message(FATAL_ERROR "epure explore: em++ or node not found, and the page is required (apt-get install emscripten)")
+  endif()
   message(STATUS "epure explore: em++ or node not found; the page is not built (install emscripten)")
   return()
 endif()
