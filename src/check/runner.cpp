@@ -178,7 +178,12 @@ class Child {
       const std::size_t room = config.output_kept > sink.output.size() ? config.output_kept - sink.output.size() : 0;
       sink.output.append(buffer, std::min(room, static_cast<std::size_t>(n)));
       sink.output_bytes += static_cast<std::size_t>(n);
-      if (sink.output_bytes > config.output_cap) return true;
+      if (sink.output_bytes > config.output_cap) {
+        // how far past the cap the pipe got before the kill depends on scheduling: the report
+        // says only "over the cap" (cap + 1), so that two runs write the same report.json
+        sink.output_bytes = config.output_cap + 1;
+        return true;
+      }
     }
   }
 
@@ -213,7 +218,8 @@ void explain_end(FunctionRun& run, const std::optional<Record>& last, const Chil
       if (f->stack_overflow) end_with(run, RunEnd::crashed, "stack_overflow", "stack_overflow");
       else if ((f->signal == SIGSEGV || f->signal == SIGBUS) && f->address < 4096)
         end_with(run, RunEnd::crashed, signal_name(f->signal), "null_pointer", where);
-      else if (f->signal == SIGSEGV || f->signal == SIGBUS) end_with(run, RunEnd::crashed, signal_name(f->signal), "memory", where);
+      // a wild address is not said: under ASLR it differs between runs, and report.json must not
+      else if (f->signal == SIGSEGV || f->signal == SIGBUS) end_with(run, RunEnd::crashed, signal_name(f->signal), "memory", {{"signal", signal_name(f->signal)}});
       else if (f->signal == SIGFPE) end_with(run, RunEnd::crashed, "SIGFPE", "fpe");
       else end_with(run, RunEnd::crashed, signal_name(f->signal), "fatal", where);
       return;

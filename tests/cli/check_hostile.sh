@@ -36,6 +36,10 @@ chmod 711 "$tmp" "$tmp/work"  # the sandbox user must reach the programs compile
 TMPDIR="$tmp/work" "$EPURE" check "$EPURE_SOURCE_DIR/tests/check/hostile" "$tmp/made" --out "$tmp/out" --lang en --jobs 2 \
   --functions Projection --quiet
 echo "hostile corpus checked in $(( $(date +%s) - start )) s"
+# the same files checked again give the same report, byte for byte (no address, time or pid in it)
+TMPDIR="$tmp/work" "$EPURE" check "$EPURE_SOURCE_DIR/tests/check/hostile" "$tmp/made" --out "$tmp/again" --lang en --jobs 2 \
+  --functions Projection --quiet
+cmp "$tmp/out/report.json" "$tmp/again/report.json" || { echo "FAIL: report.json differs between two runs"; diff "$tmp/out/report.json" "$tmp/again/report.json" | head; exit 1; }
 
 python3 - "$tmp/out/report.json" <<'PY'
 import json, re, sys
