@@ -14,6 +14,8 @@
 #include "grading/answer_key.h"
 #include "grading/answer_reading.h"
 #include "grading/answer_source.h"
+#include "grading/corrections.h"
+#include "grading/mark_scale.h"
 #include "grading/feedback_sheet.h"
 #include "grading/histogram.h"
 #include "grading/report_csv.h"
@@ -43,6 +45,9 @@ struct GradeCliOptions {
   std::string histogram;
   std::string language;
   std::string delimiter;
+  std::string corrections;
+  double out_of = 0;
+  double round_to = 0;
   bool follow_through = false;
   bool no_follow_through = false;
   bool quiet = false;
@@ -138,8 +143,21 @@ int run_grade(const GradeCliOptions& o) {
     }
   }
 
+  // the teacher's corrections: read before anything is marked; a file that cannot be read at all
+  // stops the run, a bad entry is said and the rest applied (corrections.h)
+  std::optional<Corrections> corrections;
+  if (!o.corrections.empty()) {
+    std::error_code size_error;
+    const auto bytes = std::filesystem::file_size(o.corrections, size_error);
+    if (!size_error && bytes > kMaxCorrectionsBytes)
+      throw std::runtime_error(fmt::format("{}: {} bytes: a corrections file holds at most {} bytes", o.corrections, bytes,
+                                           kMaxCorrectionsBytes));
+    corrections = read_corrections(read_text(o.corrections), o.corrections);
+  }
+
   SessionOptions options;
   options.answers_name = o.answers;
+  if (corrections) options.corrections = &*corrections;
   if (o.follow_through) options.follow_through = true;
   if (o.no_follow_through) options.follow_through = false;
   options.language = o.language;
@@ -158,6 +176,7 @@ int run_grade(const GradeCliOptions& o) {
 
   const std::string language = o.language.empty() ? key->info.language : o.language;
   const FeedbackText text(language, key->info.decimals);
+  const MarkScale scale = MarkScale::choose(key->info, language, o.out_of, o.round_to);
   std::optional<CsvReport> report;
   std::optional<JsonReport> json;
   std::optional<FeedbackSheets> sheets;
@@ -165,19 +184,20 @@ int run_grade(const GradeCliOptions& o) {
     // the report in the dialect the first pass found
     const bool csv = dialect.format == "csv";
     report.emplace(o.report, *key,
-                   CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf});
+                   CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf},
+                   texts, scale);
     session.add_sink(*report);
   }
   if (!o.json.empty()) {
-    json.emplace(o.json, *key, text, o.answers, session.follow_through());
+    json.emplace(o.json, *key, text, o.answers, session.follow_through(), scale);
     session.add_sink(*json);
   }
   if (!o.feedback.empty()) {
-    sheets.emplace(o.feedback, *key, text);
+    sheets.emplace(o.feedback, *key, text, scale);
     session.add_sink(*sheets);
   }
   const bool rows_on_stdout = o.report.empty() && o.json.empty();
-  TextSummary summary(stdout, *key, text, rows_on_stdout);
+  TextSummary summary(stdout, *key, text, scale, rows_on_stdout);
   if (!o.quiet || rows_on_stdout) session.add_sink(summary);
 
   const SourceInfo info = read_answers(o.answers, session, delimiter);
@@ -214,6 +234,12 @@ void add_grade_command(CLI::App& app, int& status) {
   cmd->add_option("--lang", o->language, "Language of the feedback (default: the key's)")->check(CLI::IsMember({"en", "fr"}));
   cmd->add_option("--delimiter", o->delimiter, "CSV delimiter (default: detected among , ; and tab)")
       ->check(CLI::IsMember({",", ";", "tab", "\\t"}));
+  cmd->add_option("--corrections", o->corrections,
+                  "The teacher's corrections (JSON, as epure scan's review page writes them): cells replaced before marking")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out-of", o->out_of,
+                  "Marks out of N (default: the spec's scale, else 20 for a French set, else the points)");
+  cmd->add_option("--round-to", o->round_to, "Round each mark to the nearest multiple of this step, halves up (default 0.01)");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stdout when a report is written");
   cmd->callback([o, &status] {
     if (o->key_file.empty() && o->spec_file.empty()) {
