@@ -15,7 +15,8 @@ namespace {
 // The contract words the lists map to.
 constexpr std::string_view kTokens[] = {"true",     "false",     "none",   "before", "between", "after",
                                         "intersects", "outside", "parallel", "collinear", "behind", "miss",
-                                        "sheet",    "student",   "student_number"};
+                                        "sheet",    "student",   "student_number", "email", "first_name",
+                                        "last_name"};
 
 // The ASCII letter a Latin-1 letter (the byte after 0xC3 in UTF-8) folds to, or 0.
 char fold_latin1(unsigned char b) {
