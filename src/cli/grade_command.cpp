@@ -182,7 +182,8 @@ int run_grade(const GradeCliOptions& o) {
 
   const std::string language = o.language.empty() ? key->info.language : o.language;
   const FeedbackText text(language, key->info.decimals);
-  const MarkScale scale = MarkScale::choose(key->info, language, o.out_of, o.round_to);
+  // out of 20 for a French set (the set's language, not the feedback's)
+  const MarkScale scale = MarkScale::choose(key->info, key->info.language, o.out_of, o.round_to);
   std::optional<CsvReport> report;
   std::optional<JsonReport> json;
   std::optional<FeedbackSheets> sheets;

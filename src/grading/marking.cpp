@@ -127,16 +127,18 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
     }
   }
   if (!any_open) return;
-  // two neighbouring answers typed in each other's cell
-  read_swapped_cells(key, cells, out);
   bool any_wrong = false;
   for (const QuestionMark& m : out) any_wrong = any_wrong || m.verdict == Verdict::wrong;
-  if (!any_wrong) return;
-  name_swapped_coordinates(key, out);
-  if (key.grader) {
-    ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
-    key.grader->review(key.prepared, review);
+  if (any_wrong) {
+    name_swapped_coordinates(key, out);
+    if (key.grader) {
+      ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
+      key.grader->review(key.prepared, review);
+    }
   }
+  // two neighbouring answers typed in each other's cell, where the kind's method names no
+  // mistake that explains them (t_ab and t_cd swapped is the segments' own "t_swapped")
+  read_swapped_cells(key, cells, out);
 }
 
 }  // namespace epure::grading

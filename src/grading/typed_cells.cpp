@@ -102,7 +102,8 @@ void read_swapped_cells(const ExerciseKey& key, std::span<const std::string_view
   const std::size_t n = key.questions.size();
   const auto open = [&](std::size_t i) {
     const Verdict v = out[i].verdict;
-    return (v == Verdict::wrong || v == Verdict::to_check) && out[i].note.empty() && i < cells.size() && !blank(cells[i]);
+    return (v == Verdict::wrong || v == Verdict::to_check) && out[i].mistake.empty() && out[i].note.empty() &&
+           i < cells.size() && !blank(cells[i]);
   };
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const std::size_t j = i + 1;
