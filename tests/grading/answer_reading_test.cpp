@@ -131,6 +131,8 @@ TEST_CASE("every spelling the templates list reads back to its word, in every la
     const auto& texts = epure::Texts::builtin(language);
     for (const auto& [key, list] : texts.all()) {
       if (key.rfind("grading.read.", 0) != 0) continue;
+      // what surrounds an answer (lead, tail) is no answer
+      if (key == "grading.read.lead" || key == "grading.read.tail") continue;
       const std::string token = key.substr(13);
       std::string_view rest = list;
       while (!rest.empty()) {
@@ -248,29 +250,6 @@ TEST_CASE("the wordings students use for every choice answer, in both languages 
     for (const char* cell : {"pas d'intersection", "no intersection", "les segments ne se coupent pas", "hors"}) {
       CAPTURE(cell);
       CHECK(read_answer(cell, AnswerType::word).state == Given::State::unreadable);
-    }
-  }
-}
-
-TEST_CASE("no wording of the templates means two answers") {
-  // every entry of every [grading.read] list, in every language, read back as its own token
-  for (const auto& language : epure::builtin_languages()) {
-    const auto& texts = epure::Texts::builtin(language);
-    for (const auto& [key, list] : texts.all()) {
-      if (!key.starts_with("grading.read.") || key == "grading.read.lead" || key == "grading.read.tail") continue;
-      const std::string token = key.substr(std::string_view("grading.read.").size());
-      std::string_view rest = list;
-      while (!rest.empty()) {
-        const auto comma = rest.find(',');
-        const std::string entry(epure::grading::trim_cell(rest.substr(0, comma)));
-        CAPTURE(language);
-        CAPTURE(entry);
-        const auto w = epure::grading::read_word(entry);
-        REQUIRE(w.has_value());
-        CHECK(*w == token);
-        if (comma == std::string_view::npos) break;
-        rest.remove_prefix(comma + 1);
-      }
     }
   }
 }
