@@ -73,9 +73,12 @@ Roster read(CsvReader& reader, std::string_view source) {
         }
         columns = Columns{0, 1, -1, -1, 2};  // no header: number, name, e-mail
       }
+      // read as UTF-8 (Windows-1252 when it is not), then trimmed: a Windows-1252 no-break space
+      // is a blank like any other
       const auto cell = [&](int c) -> std::string {
-        return c >= 0 && static_cast<std::size_t>(c) < rec.cells.size() ? utf8(trim_cell(rec.cells[static_cast<std::size_t>(c)]))
-                                                                          : std::string();
+        if (c < 0 || static_cast<std::size_t>(c) >= rec.cells.size()) return {};
+        const std::string text = utf8(rec.cells[static_cast<std::size_t>(c)]);
+        return std::string(trim_cell(text));
       };
       RosterEntry e;
       e.line = rec.line;

@@ -66,11 +66,13 @@ const WordTable& word_table() {
         const std::string choice_key = "choice." + std::string(token);
         if (texts.has(choice_key)) add(texts.get(choice_key), token);
       }
-      for (auto [key, into] : {std::pair{"grading.read.lead", &t.leads}, std::pair{"grading.read.tail", &t.tails}})
-        if (texts.has(key))
-          each_entry(texts.get(key), [&](std::string_view w) {
+      for (const auto& affix : {std::pair{"grading.read.lead", &t.leads}, std::pair{"grading.read.tail", &t.tails}}) {
+        std::vector<std::string>* into = affix.second;
+        if (texts.has(affix.first))
+          each_entry(texts.get(affix.first), [into](std::string_view w) {
             if (std::string f = fold_word(w); !f.empty()) into->push_back(std::move(f));
           });
+      }
     }
     for (auto* list : {&t.leads, &t.tails}) {
       std::sort(list->begin(), list->end(), [](const std::string& a, const std::string& b) {
