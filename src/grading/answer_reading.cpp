@@ -141,12 +141,12 @@ PointCell read_point_cell(std::string_view cell, int dims, bool decimal_comma, s
   if (s.find(';') != std::string_view::npos) n = split(semicolon);
   else if (comma_blank(s).first != std::string_view::npos) n = split(comma_blank);
   else if (s.find(',') != std::string_view::npos) {
-    // "(3,5)": a point in a language of decimal points, but in one of decimal commas it may be
-    // the number 3,5; "3,5" without brackets likewise the other way round. Not guessed.
-    const bool ambiguous = decimal_comma == bracketed;
-    if (decimal_comma && !bracketed) return PointCell::not_a_point;  // 3,5: a number
+    // "3,5" without brackets is a number in every language (a decimal comma is read anywhere);
+    // "(3,5)" is a point in a language of decimal points, but in one of decimal commas it may be
+    // the number 3,5 in brackets: not guessed.
+    if (!bracketed) return PointCell::not_a_point;
     n = split(comma);
-    if (ambiguous) {
+    if (decimal_comma) {
       bool numbers = n == dims;
       for (int i = 0; numbers && i < n; ++i) numbers = parse_number(parts[static_cast<std::size_t>(i)]).ok;
       return numbers ? PointCell::ambiguous : PointCell::not_a_point;

@@ -26,9 +26,10 @@ bool read_faces(std::string_view text, FaceBits& out);
 
 // A whole point typed in one coordinate's cell: "(3 ; 5)", "3;5", "(3, 5)", "[1,5 ; −2]",
 // "P = (2 ; 1 ; 0)". The coordinates are split at ';', else at a comma followed by a blank
-// ("(3, 5)"), else, in a language that writes decimal points, at a comma ("(3,5)"); each part
-// must read as a number. In a language that writes decimal commas, "(3,5)" is the point (3 ; 5)
-// or the number 3.5: `ambiguous`, for the teacher to check.
+// ("(3, 5)"), else, in brackets and in a language that writes decimal points, at a comma
+// ("(3,5)"); each part must read as a number. "3,5" without brackets is a number (a decimal
+// comma is read in every language); in a language that writes decimal commas, "(3,5)" is the
+// point (3 ; 5) or the number 3,5: `ambiguous`, for the teacher to check.
 enum class PointCell { not_a_point, point, ambiguous };
 PointCell read_point_cell(std::string_view cell, int dims, bool decimal_comma, std::array<std::string_view, 3>& parts);
 

@@ -170,7 +170,9 @@ std::optional<render::Scene> branches_plot(const ItemAnalysis& items, std::size_
   if (bs.size() < 2 && mistakes.empty()) return std::nullopt;
   render::Scene s;
   s.title = T.get("grading.report.plot_branches");
-  s.description = T.get("grading.report.plot_branches_description");
+  s.description = T.get(bs.size() >= 2 && !mistakes.empty() ? "grading.report.plot_branches_description"
+                        : bs.size() >= 2                    ? "grading.report.plot_branches_only"
+                                                            : "grading.report.plot_mistakes_only");
   // each row: its name above its bar, two units high
   // both panels as high, so that both are drawn at kRow points a unit
   const int total = static_cast<int>(std::max(bs.size() >= 2 ? bs.size() : 0, mistakes.size()));
@@ -178,7 +180,7 @@ std::optional<render::Scene> branches_plot(const ItemAnalysis& items, std::size_
                                const std::vector<double>& shares, const std::vector<std::string>& values,
                                const std::vector<bool>& marked) {
     const int rows = static_cast<int>(names.size());
-    p.view = {0, -2.0 * total - 1.4, width_pt / kRow, 0.2};
+    p.view = {-0.3, -2.0 * total - 1.4, width_pt / kRow - 0.3, 0.2};
     double value_room = 0;
     for (const auto& v : values) value_room = std::max(value_room, width_of(v));
     const double L = (width_pt - value_room - 10) / kRow;

@@ -103,8 +103,11 @@ void ClassReport::build(const ClassStatistics& stats, const Outcome& outcome) {
     html += fmt::format("<p{}>{}</p>\n", emphasis ? " class=\"note\"" : "", escaped(text));
   };
   auto figure = [&](render::Section& sec, render::Scene scene) {
-    html += fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n", render::scene_to_svg(scene, plot_width(scene)),
-                        escaped(scene.description));
+    // the description under the figure, unless a panel already says it
+    bool said = false;
+    for (const auto& p : scene.panels) said = said || p.caption == scene.description;
+    html += fmt::format("<figure>{}{}</figure>\n", render::scene_to_svg(scene, plot_width(scene)),
+                        said ? std::string() : fmt::format("<figcaption>{}</figcaption>", escaped(scene.description)));
     const double fraction = plot_width(scene) / kPlotWidth;
     sec.add(render::Figure{std::move(scene), fraction});
   };

@@ -33,6 +33,10 @@ std::string ClassWords::name(std::string_view table, std::string_view code) cons
 
 std::string ClassWords::branch(std::string_view code) const { return name("branch", code); }
 std::string ClassWords::mistake(std::string_view code) const { return name("mistake_name", code); }
-std::string ClassWords::flag(std::string_view code) const { return name("flag_name", code); }
+std::string ClassWords::flag(std::string_view code) const {
+  auto it = flags_.find(code);
+  if (it == flags_.end()) it = flags_.emplace(std::string(code), name("flag_name", code)).first;
+  return it->second;
+}
 
 }  // namespace epure::grading

@@ -4,6 +4,7 @@
 // mistakes and of the flags (templates/text/<lang>/grading.toml: [grading.branch],
 // [grading.mistake_name], [grading.flag_name]). The summary, the reports and the class report
 // print these; the codes stay in --json.
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,8 @@ class ClassWords {
  private:
   std::string name(std::string_view table, std::string_view code) const;
   const Texts& texts_;
+  // flag names asked again and again (a report names each row's flags): code → name
+  mutable std::map<std::string, std::string, std::less<>> flags_;
   std::optional<WorksheetSpec> spec_;
 };
 

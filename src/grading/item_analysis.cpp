@@ -88,9 +88,13 @@ void ItemAccumulator::add(const Submission& s) {
     X->max_points = std::max(X->max_points, worth);
     const double share = worth > 0 ? earned / worth : 0;
     X->share.add(share);
-    auto it = X->branches.find(ex.branch);
-    if (it == X->branches.end()) it = X->branches.emplace(ex.branch, Moments{}).first;
-    it->second.add(share);
+    if (!X->last_branch || *X->last_branch != ex.branch) {
+      auto it = X->branches.find(ex.branch);
+      if (it == X->branches.end()) it = X->branches.emplace(ex.branch, Moments{}).first;
+      X->last_branch = &ex.branch;
+      X->last_moments = &it->second;
+    }
+    X->last_moments->add(share);
   }
 }
 

@@ -129,6 +129,9 @@ class ItemAccumulator {
     double follow_through_points = 0;
     std::map<std::string_view, int> mistakes;
     std::map<std::string, Moments, std::less<>> branches;  // share, by branch
+    // the last row's branch and its moments: a short string compared before a map is searched
+    const std::string* last_branch = nullptr;
+    Moments* last_moments = nullptr;
   };
   std::vector<std::string> ids_;
   std::vector<Question> questions_;

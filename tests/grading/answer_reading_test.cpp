@@ -213,8 +213,9 @@ TEST_CASE("a whole point typed in one cell is split into its coordinates, or is 
   SUBCASE("(3,5): a point with decimal points, but 3,5 itself with decimal commas: not guessed") {
     CHECK(read_point_cell("(3,5)", 2, false, parts) == PointCell::point);
     CHECK(read_point_cell("(3,5)", 2, true, parts) == PointCell::ambiguous);
-    CHECK(read_point_cell("3,5", 2, true, parts) == PointCell::not_a_point);  // the number 3,5
-    CHECK(read_point_cell("3,5", 2, false, parts) == PointCell::ambiguous);
+    // without brackets, the number 3,5 in every language (decimal commas are read anywhere)
+    CHECK(read_point_cell("3,5", 2, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("3,5", 2, false, parts) == PointCell::not_a_point);
   }
   SUBCASE("the wrong number of coordinates, or parts that are no numbers") {
     CHECK(read_point_cell("(3 ; 5)", 3, true, parts) == PointCell::not_a_point);
