@@ -130,6 +130,14 @@ head = report.splitlines()[0].split(";")
 assert head[:4] == ["feuille", "étudiant", "points", "max"] and "note/20" in head and head[-1] == "remarques", head
 PY
 
+# the issue's own codes: an export whose students make the mistakes norm_not_rooted and
+# cross_sign, summarised in French: the mistakes' names, never their codes
+"$EPURE" grade --key "$EPURE_SOURCE_DIR/tests/grading/data/key_small.json" --answers "$EPURE_SOURCE_DIR/tests/grading/data/export_fr.csv" \
+  --lang fr >"$tmp/fr_summary.txt" 2>/dev/null
+grep -q "‖u‖ sans la racine carrée" "$tmp/fr_summary.txt" || fail "French summary: norm_not_rooted not named"
+grep -q "signe d’un produit vectoriel" "$tmp/fr_summary.txt" || fail "French summary: cross_sign not named"
+grep -qE "\((norm_not_rooted|cross_sign)\)|norm_not_rooted|cross_sign" "$tmp/fr_summary.txt" && fail "French summary prints a mistake code"
+
 # the class report: the HTML parses, the PDF is sound, the plots are there
 if command -v xmllint >/dev/null; then
   xmllint --html --noout "$tmp/cr/class-report.html" 2>"$tmp/xmllint.err" || fail "class-report.html: $(head -3 "$tmp/xmllint.err")"
