@@ -1,10 +1,9 @@
 #include "grading/answer_reading.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "grading/expression.h"
-
-#include <utility>
 #include "grading/words.h"
 
 namespace epure::grading {

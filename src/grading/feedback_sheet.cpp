@@ -111,8 +111,8 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
   intro.add(render::Paragraph{T.get("grading.sheet.legend")});
   std::string flags;
   for (const auto& f : s.flags)
-    if (f.code == "duplicate" || f.code == "ragged" || f.code == "not_asked" || f.code == "to_check" || f.code == "swapped_cells")
-      flags += (flags.empty() ? "" : "; ") + f.message;
+    // (answers to check and cells swapped are said at each answer, in the student's words)
+    if (f.code == "duplicate" || f.code == "ragged" || f.code == "not_asked") flags += (flags.empty() ? "" : "; ") + f.message;
   if (!flags.empty()) intro.add(render::Paragraph{T.format("grading.sheet.flags", {{"flags", rich_escape(flags)}}), true});
   doc.sections.push_back(std::move(intro));
 
