@@ -94,6 +94,10 @@ for i, t in enumerate(["2.17", "2,17", "\u22120.25", "3/4", "5-sqrt(11)", "\u221
                        "1,5\u00d72", "((((2))))", "-3*sqrt(34)/34", "180/4\u00b0", "~ 0,5", "= 1/3", "1/0",
                        "sqrt(-2)", "  4  ", "-12\u00a0\u00b0", "2 \u00f7 3", "2\u00b73", "\u03c0"]):
     put("expression", "%02d" % i, t)
+# units and names typed around a number (issue 31)
+for i, t in enumerate(["4,75 cm", "1,04 u", "1,8 u\u00b2", "3 unit\u00e9s", "t = 4,75", "d\u00b2 = 1,8", "I.x=2,14 cm",
+                       "0.89 rad", "5 cm cm", "4,75.", "\u221a11 u"]):
+    put("expression", "unit-%02d" % i, t)
 
 # answers CSV: the French export of the tests, and realistic exports of each spreadsheet
 put("answers_csv", "export_fr.csv", b"\x00" + read(root, "tests/grading/data/export_fr.csv"))
