@@ -152,14 +152,7 @@ int run_grade(const GradeCliOptions& o) {
   // the teacher's corrections: read before anything is marked; a file that cannot be read at all
   // stops the run, a bad entry is said and the rest applied (corrections.h)
   std::optional<Corrections> corrections;
-  if (!o.corrections.empty()) {
-    std::error_code size_error;
-    const auto bytes = std::filesystem::file_size(o.corrections, size_error);
-    if (!size_error && bytes > kMaxCorrectionsBytes)
-      throw std::runtime_error(fmt::format("{}: {} bytes: a corrections file holds at most {} bytes", o.corrections, bytes,
-                                           kMaxCorrectionsBytes));
-    corrections = read_corrections(read_text(o.corrections), o.corrections);
-  }
+  if (!o.corrections.empty()) corrections = read_corrections_file(o.corrections);
 
   SessionOptions options;
   options.answers_name = o.answers;

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <tuple>
 
 namespace epure::grading {
@@ -129,6 +132,40 @@ Corrections read_corrections(std::string_view text, std::string_view source) {
     out.entries.push_back(std::move(c));
   }
   return out;
+}
+
+Corrections read_corrections_file(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path, error);
+  if (!error && bytes > kMaxCorrectionsBytes) {
+    Corrections out;
+    out.source = path.string();
+    out.problems.push_back({0, "too_large", {{"bytes", std::to_string(bytes)}, {"max", std::to_string(kMaxCorrectionsBytes)}}});
+    return out;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path.string()));
+  std::stringstream text;
+  text << in.rdbuf();
+  return read_corrections(text.str(), path.string());
+}
+
+std::string corrections_json(std::span<const Correction> entries) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& e : entries) {
+    nlohmann::ordered_json o;
+    o["sheet"] = e.sheet;
+    o["question"] = e.question;
+    o["value"] = e.value;
+    if (!e.note.empty()) o["note"] = e.note;
+    list.push_back(std::move(o));
+  }
+  nlohmann::ordered_json root;
+  root["format"] = kCorrectionsFormat;
+  root["version"] = kCorrectionsVersion;
+  root["corrections"] = std::move(list);
+  // strings as they are (no \u escapes), invalid UTF-8 replaced rather than thrown on
+  return root.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace epure::grading

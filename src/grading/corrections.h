@@ -15,6 +15,8 @@
 // is not this format stops the reading with its reason; an entry that is wrong (a missing
 // field, a value that is not a string) is reported with its number and skipped, the rest applied.
 #include <cstddef>
+#include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,5 +62,12 @@ struct Corrections {
 
 // Reads a corrections file's text. Never throws for bad content: every problem is in `problems`.
 Corrections read_corrections(std::string_view text, std::string_view source);
+// The same from a file, named by its path in messages; a file past kMaxCorrectionsBytes is refused
+// before it is read (a problem). Throws std::runtime_error naming it when it cannot be opened.
+Corrections read_corrections_file(const std::filesystem::path& path);
+
+// The entries as a corrections file, in the canonical shape (2-space indented, keys in the
+// format's order, UTF-8 as is): what review pages and tests write. Reads back to the same entries.
+std::string corrections_json(std::span<const Correction> entries);
 
 }  // namespace epure::grading

@@ -193,3 +193,23 @@ TEST_CASE("to check, then settled by a corrections file and grade run again") {
     CHECK(said == 6);
   }
 }
+
+TEST_CASE("corrections written in the canonical shape read back the same") {
+  std::vector<Correction> entries(2);
+  entries[0].sheet = "1000-0005-002N";
+  entries[0].question = "2.t";
+  entries[0].value = "−0,48";
+  entries[0].note = "une tache sur le 8, \"lue\"";
+  entries[1].sheet = "1000-0005-0089";
+  entries[1].question = "student_number";
+  const std::string text = corrections_json(entries);
+  CHECK(text.find("\"format\": \"epure-corrections\"") != std::string::npos);
+  CHECK(text.find("−0,48") != std::string::npos);  // UTF-8 as is
+  const auto back = read_corrections(text, "c.json");
+  REQUIRE(back.readable);
+  CHECK(back.problems.empty());
+  REQUIRE(back.entries.size() == 2);
+  CHECK(back.entries[0].value == "−0,48");
+  CHECK(back.entries[0].note == entries[0].note);
+  CHECK(back.entries[1].value.empty());
+}
