@@ -14,7 +14,12 @@
 #include "grading/answer_key.h"
 #include "grading/answer_reading.h"
 #include "grading/answer_source.h"
+#include "grading/corrections.h"
+#include "grading/mark_scale.h"
+#include "grading/class_report.h"
 #include "grading/feedback_sheet.h"
+#include "grading/gradebook.h"
+#include "grading/roster.h"
 #include "grading/histogram.h"
 #include "grading/report_csv.h"
 #include "grading/report_json.h"
@@ -43,6 +48,12 @@ struct GradeCliOptions {
   std::string histogram;
   std::string language;
   std::string delimiter;
+  std::string corrections;
+  std::string class_report;
+  std::vector<std::string> gradebook;  // format, file
+  std::string roster;
+  double out_of = 0;
+  double round_to = 0;
   bool follow_through = false;
   bool no_follow_through = false;
   bool quiet = false;
@@ -138,8 +149,14 @@ int run_grade(const GradeCliOptions& o) {
     }
   }
 
+  // the teacher's corrections: read before anything is marked; a file that cannot be read at all
+  // stops the run, a bad entry is said and the rest applied (corrections.h)
+  std::optional<Corrections> corrections;
+  if (!o.corrections.empty()) corrections = read_corrections_file(o.corrections);
+
   SessionOptions options;
   options.answers_name = o.answers;
+  if (corrections) options.corrections = &*corrections;
   if (o.follow_through) options.follow_through = true;
   if (o.no_follow_through) options.follow_through = false;
   options.language = o.language;
@@ -158,26 +175,49 @@ int run_grade(const GradeCliOptions& o) {
 
   const std::string language = o.language.empty() ? key->info.language : o.language;
   const FeedbackText text(language, key->info.decimals);
+  // out of 20 for a French set (the set's language, not the feedback's)
+  const MarkScale scale = MarkScale::choose(key->info, key->info.language, o.out_of, o.round_to);
   std::optional<CsvReport> report;
   std::optional<JsonReport> json;
   std::optional<FeedbackSheets> sheets;
+  std::optional<ClassReport> class_report;
+  std::optional<Roster> roster;
+  std::optional<Gradebook> gradebook;
+  if (!o.roster.empty()) {
+    roster = read_roster(o.roster);
+    for (const auto& p : roster->problems) session.problem(p.line, describe(p, texts), p.error, "roster", o.roster);
+  }
+  // first among the outputs: what it finds (students left out) is in the JSON report's problems
+  if (!o.gradebook.empty()) {
+    const GradebookFormat format = o.gradebook[0] == "moodle" ? GradebookFormat::moodle : GradebookFormat::csv;
+    gradebook.emplace(o.gradebook[1], format, *key, texts, scale, roster ? &*roster : nullptr,
+                      [&session](int line, std::string message, bool error) {
+                        session.problem(line, std::move(message), error, "gradebook");
+                      });
+    session.add_sink(*gradebook);
+  }
   if (!o.report.empty()) {
     // the report in the dialect the first pass found
     const bool csv = dialect.format == "csv";
     report.emplace(o.report, *key,
-                   CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf});
+                   CsvDialect{csv ? dialect.delimiter : ',', csv && dialect.delimiter == ';', dialect.bom, dialect.crlf},
+                   texts, scale);
     session.add_sink(*report);
   }
   if (!o.json.empty()) {
-    json.emplace(o.json, *key, text, o.answers, session.follow_through());
+    json.emplace(o.json, *key, text, o.answers, session.follow_through(), scale);
     session.add_sink(*json);
   }
   if (!o.feedback.empty()) {
-    sheets.emplace(o.feedback, *key, text);
+    sheets.emplace(o.feedback, *key, text, scale);
     session.add_sink(*sheets);
   }
+  if (!o.class_report.empty()) {
+    class_report.emplace(o.class_report, *key, text, scale);
+    session.add_sink(*class_report);
+  }
   const bool rows_on_stdout = o.report.empty() && o.json.empty();
-  TextSummary summary(stdout, *key, text, rows_on_stdout);
+  TextSummary summary(stdout, *key, text, scale, rows_on_stdout);
   if (!o.quiet || rows_on_stdout) session.add_sink(summary);
 
   const SourceInfo info = read_answers(o.answers, session, delimiter);
@@ -186,6 +226,10 @@ int run_grade(const GradeCliOptions& o) {
   if (sheets && !o.quiet)
     fmt::print("{}\n", texts.format("grading.problem.feedback_written",
                                      {{"count", std::to_string(sheets->written())}, {"dir", o.feedback}}));
+  if (gradebook && !o.quiet)
+    fmt::print("{}\n", texts.format("grading.roster.written", {{"file", o.gradebook[1]},
+                                                                {"count", std::to_string(gradebook->written())},
+                                                                {"format", o.gradebook[0]}}));
   return outcome.exit_status();
 }
 
@@ -215,8 +259,28 @@ void add_grade_command(CLI::App& app, int& status) {
   cmd->add_option("--lang", o->language, "Language of the feedback (default: the key's)")->check(CLI::IsMember({"en", "fr"}));
   cmd->add_option("--delimiter", o->delimiter, "CSV delimiter (default: detected among , ; and tab)")
       ->check(CLI::IsMember({",", ";", "tab", "\\t"}));
+  cmd->add_option("--corrections", o->corrections,
+                  "The teacher's corrections (JSON, as epure scan's review page writes them): cells replaced before marking")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--class-report", o->class_report,
+                  "Write the class report (class-report.html and class-report.pdf: plots and item analysis) into this directory");
+  cmd->add_option("--gradebook", o->gradebook,
+                  "Write the marks for a gradebook: 'moodle FILE' (Moodle's CSV grade import) or 'csv FILE' (every student, "
+                  "in the set's language)")
+      ->expected(2);
+  cmd->add_option("--roster", o->roster,
+                  "The class roster (CSV: student number; name; optional e-mail): who is who in the gradebook")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out-of", o->out_of,
+                  "Marks out of N (default: the spec's scale, else 20 for a French set, else the points)");
+  cmd->add_option("--round-to", o->round_to, "Round each mark to the nearest multiple of this step, halves up (default 0.01)");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stdout when a report is written");
   cmd->callback([o, &status] {
+    if (!o->gradebook.empty() && o->gradebook[0] != "moodle" && o->gradebook[0] != "csv") {
+      fmt::print(stderr, "epure grade: --gradebook {}: the format is moodle or csv (--gradebook moodle marks.csv)\n", o->gradebook[0]);
+      status = 2;
+      return;
+    }
     if (o->key_file.empty() && o->spec_file.empty()) {
       fmt::print(stderr, "epure grade: give the set's key (--key key.json) or its spec (--spec FILE)\n");
       status = 2;

@@ -1,6 +1,7 @@
 #include "grading/answer_reading.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "grading/expression.h"
 #include "grading/words.h"
@@ -98,6 +99,62 @@ bool read_faces(std::string_view text, FaceBits& out) {
     any = true;
   }
   return any;
+}
+
+PointCell read_point_cell(std::string_view cell, int dims, bool decimal_comma, std::array<std::string_view, 3>& parts) {
+  std::string_view s = trim_cell(cell);
+  // "P = (3 ; 5)", "P(3 ; 5)": the point's name before it
+  if (const auto open = s.find_first_of("(["); open != std::string_view::npos && open > 0 && open <= 4) {
+    std::string_view name = s.substr(0, open);
+    while (!name.empty() && (name.back() == ' ' || name.back() == '=')) name.remove_suffix(1);
+    if (!name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+          return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+        }))
+      s = s.substr(open);
+  }
+  bool bracketed = false;
+  if (s.size() >= 2 && ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']'))) {
+    s = trim_cell(s.substr(1, s.size() - 2));
+    bracketed = true;
+  }
+  const auto split = [&](auto&& at) -> int {
+    int n = 0;
+    std::string_view rest = s;
+    for (;;) {
+      const auto [where, width] = at(rest);
+      const std::string_view part = trim_cell(rest.substr(0, where));
+      if (n == 3 || part.empty()) return -1;
+      parts[static_cast<std::size_t>(n++)] = part;
+      if (where == std::string_view::npos) return n;
+      rest.remove_prefix(where + width);
+    }
+  };
+  auto semicolon = [](std::string_view r) { return std::pair{r.find(';'), std::size_t(1)}; };
+  auto comma_blank = [](std::string_view r) {
+    for (std::size_t i = 0; i + 1 < r.size(); ++i)
+      if (r[i] == ',' && (r[i + 1] == ' ' || r[i + 1] == '\t')) return std::pair{i, std::size_t(1)};
+    return std::pair{std::string_view::npos, std::size_t(1)};
+  };
+  auto comma = [](std::string_view r) { return std::pair{r.find(','), std::size_t(1)}; };
+  int n = -1;
+  if (s.find(';') != std::string_view::npos) n = split(semicolon);
+  else if (comma_blank(s).first != std::string_view::npos) n = split(comma_blank);
+  else if (s.find(',') != std::string_view::npos) {
+    // "3,5" without brackets is a number in every language (a decimal comma is read anywhere);
+    // "(3,5)" is a point in a language of decimal points, but in one of decimal commas it may be
+    // the number 3,5 in brackets: not guessed.
+    if (!bracketed) return PointCell::not_a_point;
+    n = split(comma);
+    if (decimal_comma) {
+      bool numbers = n == dims;
+      for (int i = 0; numbers && i < n; ++i) numbers = parse_number(parts[static_cast<std::size_t>(i)]).ok;
+      return numbers ? PointCell::ambiguous : PointCell::not_a_point;
+    }
+  }
+  if (n != dims) return PointCell::not_a_point;
+  for (int i = 0; i < n; ++i)
+    if (!parse_number(parts[static_cast<std::size_t>(i)]).ok) return PointCell::not_a_point;
+  return PointCell::point;
 }
 
 void read_answer(std::string_view cell, AnswerType type, Given& g) {

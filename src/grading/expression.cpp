@@ -286,31 +286,113 @@ class Parser {
   std::string_view why_;
 };
 
-// A unit typed after an angle ("50,91°", "−71,57 °", "50.91 deg", "50,91 degrés"), and the
-// spaces before it, cut off: the sheet asks for degrees, and a student who writes the unit
-// means the number. Radians are not a unit dropped: "0.89 rad" stays unreadable, so that it is
-// never read as 0.89°. Returns the text unchanged when it ends in no such unit.
-std::string_view without_degree_unit(std::string_view s) {
-  static constexpr std::string_view kUnits[] = {"\u00b0", "\u00ba", "degrees", "degree", "degr\u00e9s", "degr\u00e9",
-                                                "degres", "degre", "degs", "deg"};
-  for (const std::string_view unit : kUnits) {
-    if (s.size() <= unit.size()) continue;
-    const std::string_view tail = s.substr(s.size() - unit.size());
-    bool same = true;
-    for (std::size_t i = 0; same && i < unit.size(); ++i) {
-      char c = tail[i];
-      if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-      same = c == unit[i];
+bool same_letters(std::string_view text, std::string_view lower) {
+  if (text.size() != lower.size()) return false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != lower[i]) return false;
+  }
+  return true;
+}
+
+// `s` without blanks (ASCII and the no-break ones) at its end.
+std::string_view without_trailing_blanks(std::string_view s) {
+  for (;;) {
+    if (!s.empty() && (s.back() == ' ' || s.back() == '\t')) {
+      s.remove_suffix(1);
+      continue;
     }
-    if (!same) continue;
-    std::string_view number = s.substr(0, s.size() - unit.size());
-    while (!number.empty() && (number.back() == ' ' || number.back() == '\t')) number.remove_suffix(1);
+    bool cut = false;
     for (const std::string_view space : {kNbsp, kNarrowNbsp, kThinSpace})
-      while (number.size() > space.size() && number.substr(number.size() - space.size()) == space)
-        number.remove_suffix(space.size());
-    return number;
+      if (s.size() > space.size() && s.substr(s.size() - space.size()) == space) {
+        s.remove_suffix(space.size());
+        cut = true;
+      }
+    if (!cut) return s;
+  }
+}
+
+// A unit typed after the number, and the spaces before it, cut off: the sheet asks for the
+// number in the figure's units (a length, a squared length such as d²) or in degrees, and a
+// student who writes the unit means the number ("50,91°", "−71,57 °", "4,75 cm", "1,04 u",
+// "1,8 u²", "3 unités"). Radians are not a unit dropped: "0.89 rad" stays unreadable (so to be
+// checked), never read as 0.89°. Returns the text unchanged when it ends in no such unit.
+std::string_view without_unit(std::string_view s) {
+  // the tail after the last digit, closing parenthesis or root's argument: a unit is letters
+  // (and '.', '²', '^2') only, after optional spaces
+  static constexpr std::string_view kAngles[] = {"\u00b0", "\u00ba", "degrees", "degree", "degr\u00e9s", "degr\u00e9",
+                                                 "degres", "degre", "degs", "deg"};
+  static constexpr std::string_view kLengths[] = {"cm", "mm", "dm", "m", "u", "u.", "ua", "u.a.", "u.a", "ul", "u.l.",
+                                                  "unit", "units", "unit\u00e9", "unit\u00e9s", "unite", "unites",
+                                                  "unit\u00e9s de longueur", "units of length"};
+  static constexpr std::string_view kSquares[] = {"", "\u00b2", "^2", "2"};
+  for (const std::string_view unit : kAngles) {
+    if (s.size() <= unit.size() || !same_letters(s.substr(s.size() - unit.size()), unit)) continue;
+    return without_trailing_blanks(s.substr(0, s.size() - unit.size()));
+  }
+  for (const std::string_view square : kSquares) {
+    if (s.size() <= square.size() || s.substr(s.size() - square.size()) != square) continue;
+    const std::string_view body = s.substr(0, s.size() - square.size());
+    for (const std::string_view unit : kLengths) {
+      if (body.size() <= unit.size() || !same_letters(body.substr(body.size() - unit.size()), unit)) continue;
+      const std::string_view number = body.substr(0, body.size() - unit.size());
+      // a whole word: "4,75 cm" or "4,75cm", never the end of a word ("sqrt(2)m" is no unit of "m")
+      const char before = number.back();
+      if ((before >= 'a' && before <= 'z') || (before >= 'A' && before <= 'Z')) continue;
+      // "2" after a letter as a square only right after the unit ("u2"), never after a blank
+      if (square == "2" && unit.back() == '.') continue;
+      return without_trailing_blanks(number);
+    }
   }
   return s;
+}
+
+// The name a student copied before the value ("t = 4,75", "d² = 1,8", "I.x = 2,14",
+// "t_proj=4,02"): letters, digits, '_', '.', '²' and blanks before a single '=', with a letter
+// first. Returns what follows it, or nothing.
+std::string_view after_name(std::string_view s) {
+  const auto eq = s.find('=');
+  if (eq == std::string_view::npos || eq == 0 || s.find('=', eq + 1) != std::string_view::npos) return {};
+  const std::string_view name = without_trailing_blanks(s.substr(0, eq));
+  if (name.empty() || !((name[0] >= 'a' && name[0] <= 'z') || (name[0] >= 'A' && name[0] <= 'Z'))) return {};
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == ' ')
+      continue;
+    if (name.substr(i, kSquared.size()) == kSquared) {
+      i += kSquared.size() - 1;
+      continue;
+    }
+    return {};
+  }
+  if (name.size() > 12) return {};
+  std::string_view value = s.substr(eq + 1);
+  while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+  return value;
+}
+
+ParsedNumber parse_plain(std::string_view text) {
+  double v = 0;
+  if (plain_decimal(text, v) || fast_decimal(text, v)) return {true, v, {}};
+  return Parser(text).run();
+}
+
+// The number of a cell once a unit after it, a name before it ("t = ") and a full stop that ends
+// it ("4,75.") are set aside, each at most once.
+ParsedNumber parse_with_extras(std::string_view text) {
+  std::string_view body = text;
+  if (const std::string_view value = after_name(body); !value.empty()) body = value;
+  const std::string_view number = without_unit(body);
+  if (number.size() != body.size()) {
+    // the unit alone ("°", "cm") is no number; one unit only ("5°°", "5 cm cm" are not read)
+    if (number.empty() || without_unit(number).size() != number.size()) return {false, 0, "number"};
+    body = number;
+  }
+  if (body.size() >= 2 && body.back() == '.' && body[body.size() - 2] >= '0' && body[body.size() - 2] <= '9')
+    body.remove_suffix(1);
+  if (body.size() == text.size()) return Parser(text).run();
+  return parse_plain(body);
 }
 
 }  // namespace
@@ -327,14 +409,9 @@ ParsedNumber parse_number(std::string_view text) {
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
   double v = 0;
   if (plain_decimal(text, v) || fast_decimal(text, v)) return {true, v, {}};
-  const std::string_view number = without_degree_unit(text);
-  if (number.size() != text.size()) {
-    // the unit alone ("°") is no number; one unit only ("5°°" is not read)
-    if (number.empty() || without_degree_unit(number).size() != number.size()) return {false, 0, "number"};
-    if (plain_decimal(number, v) || fast_decimal(number, v)) return {true, v, {}};
-    return Parser(number).run();
-  }
-  return Parser(text).run();
+  const ParsedNumber whole = Parser(text).run();
+  if (whole.ok || whole.why != "number") return whole;
+  return parse_with_extras(text);
 }
 
 }  // namespace epure::grading

@@ -75,7 +75,7 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
 }
 
 render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
-                                   KeyDiagrams* diagrams) {
+                                   KeyDiagrams* diagrams, const MarkScale& scale) {
   const Texts& T = text.texts();
   render::Document doc;
   doc.title = T.format("grading.sheet.title", {{"title", key.info.title}});
@@ -87,14 +87,15 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
   std::string note = rich_escape(s.student);
   if (s.marked()) {
     if (!note.empty()) note += " — ";
-    if (key.info.scale && s.max > 0)
+    if (scale.out_of && s.max > 0)
       note += T.format("grading.sheet.score_scaled",
                        {{"score", text.points(s.score)},
                         {"max", text.points(s.max)},
-                        {"mark", text.points(std::round(s.score / s.max * *key.info.scale * 100) / 100)},
-                        {"scale", text.points(*key.info.scale)}});
+                        {"mark", text.points(scale.mark(s.score, s.max))},
+                        {"scale", text.points(*scale.out_of)}});
     else
       note += T.format("grading.sheet.score", {{"score", text.points(s.score)}, {"max", text.points(s.max)}});
+    if (s.to_check > 0) note += " " + T.format("grading.sheet.held", {{"points", text.points(s.held)}});
   }
   doc.header_note = note;
 
@@ -109,6 +110,7 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
   intro.add(render::Paragraph{T.get("grading.sheet.legend")});
   std::string flags;
   for (const auto& f : s.flags)
+    // (answers to check and cells swapped are said at each answer, in the student's words)
     if (f.code == "duplicate" || f.code == "ragged" || f.code == "not_asked") flags += (flags.empty() ? "" : "; ") + f.message;
   if (!flags.empty()) intro.add(render::Paragraph{T.format("grading.sheet.flags", {{"flags", rich_escape(flags)}}), true});
   doc.sections.push_back(std::move(intro));
@@ -137,14 +139,15 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
       const std::string prompt_key = fmt::format("{}.q.{}", ex.kind, qk.field);
       const std::string prompt = T.has(prompt_key) ? T.get(prompt_key) : qk.field;
       const bool right = m.verdict == Verdict::right;
-      std::string answer = fmt::format("{} {}", right ? "\u2713" : m.verdict == Verdict::follow_through ? "\u2197" : "\u2717",
+      const char* sign = right                                  ? "\u2713"
+                         : m.verdict == Verdict::follow_through ? "\u2197"
+                         : m.verdict == Verdict::to_check       ? "?"
+                                                                : "\u2717";
+      std::string answer = fmt::format("{} {}", sign,
                                        m.given.raw.empty() ? std::string("—") : rich_escape(text.given_shown(qk, m)));
       answer += fmt::format("  ({}/{})", text.points(m.points), text.points(qk.points));
-      if (!right) {
-        answer += fmt::format(" — {} {}", T.get("grading.sheet.expected"), text.expected(qk));
-        const std::string why = text.explanation(qk, m);
-        if (!why.empty()) answer += ". " + why;
-      }
+      if (!right) answer += fmt::format(" — {} {}", T.get("grading.sheet.expected"), text.expected(qk));
+      if (const std::string why = text.explanation(qk, m); !why.empty()) answer += (right ? " — " : ". ") + why;
       section.add(render::AnswerLine{qk.id, prompt, answer});
     }
     doc.sections.push_back(std::move(section));
@@ -152,8 +155,8 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
   return doc;
 }
 
-FeedbackSheets::FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text)
-    : dir_(std::move(dir)), key_(key), text_(text), diagrams_(key, text.texts().language()),
+FeedbackSheets::FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale)
+    : dir_(std::move(dir)), key_(key), text_(text), scale_(scale), diagrams_(key, text.texts().language()),
       pdf_date_(render::source_date_epoch()) {
   std::filesystem::create_directories(dir_);
 }
@@ -163,7 +166,7 @@ void FeedbackSheets::submission(const Submission& s) {
   if (!s.marked()) name = fmt::format("line{}", s.line);
   else if (s.flagged("duplicate")) name = fmt::format("{}-line{}", s.sheet->id, s.line);
   else name = s.sheet->id;
-  const render::Document doc = feedback_document(s, key_, text_, &diagrams_);
+  const render::Document doc = feedback_document(s, key_, text_, &diagrams_, scale_);
   // Laid out once, drawn twice: the SVG for a screen, the PDF to print or hand back.
   const std::vector<render::LaidOutPage> pages = render::layout_document(doc);
   output::write_file_atomically(dir_ / (name + ".svg"), render::pages_to_svg(pages, doc));

@@ -12,6 +12,7 @@
 
 #include "grading/feedback_text.h"
 #include "grading/key_diagrams.h"
+#include "grading/mark_scale.h"
 #include "grading/submission.h"
 #include "render/document.h"
 
@@ -19,7 +20,7 @@ namespace epure::grading {
 
 // The marked sheet of one submission, as a document (separate from the files, for tests).
 render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
-                                   KeyDiagrams* diagrams);
+                                   KeyDiagrams* diagrams, const MarkScale& scale);
 
 // Grows a panel's view to hold p (a student's point) when it is near enough to be drawn in the
 // same frame (within twice the view's size); false, and the view unchanged, when it is not.
@@ -31,7 +32,7 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
 
 class FeedbackSheets final : public SubmissionSink {
  public:
-  FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text);
+  FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale);
   void submission(const Submission& s) override;
   void finish(const ClassStatistics& stats, const Outcome& outcome) override;
   int written() const { return written_; }
@@ -40,6 +41,7 @@ class FeedbackSheets final : public SubmissionSink {
   std::filesystem::path dir_;
   const AnswerKey& key_;
   const FeedbackText& text_;
+  MarkScale scale_;
   KeyDiagrams diagrams_;
   std::optional<std::int64_t> pdf_date_;  // SOURCE_DATE_EPOCH, read once
   int written_ = 0;

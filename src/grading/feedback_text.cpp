@@ -180,7 +180,8 @@ std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, b
                          {"value", std::isfinite(m.value) ? number(m.value) : std::string()},
                          {"detail", theirs(m.detail)},
                          {"why", m.given.why.empty() ? std::string()
-                                                     : texts_.get(fmt::format("grading.why.{}", m.given.why))}};
+                                                     : texts_.get(fmt::format("grading.why.{}", m.given.why))},
+                         {"other", rich_escape(m.note_field)}};
   auto say = [&](std::string_view key) {
     std::string text = texts_.format(key, vars);
     return plain ? plain_text(text) : text;
@@ -191,13 +192,16 @@ std::string FeedbackText::compose(const QuestionKey& q, const QuestionMark& m, b
     if (b.empty()) return a;
     return a + " " + b;
   };
+  // how the answer was read, when not as typed where asked
+  std::string read_as = m.note.empty() ? std::string() : say(fmt::format("grading.say.{}", m.note));
+  if (m.corrected) read_as = join(read_as, say("grading.say.corrected"));
   switch (m.verdict) {
-    case Verdict::right: return {};
-    case Verdict::follow_through: return join(mistake, say("grading.say.follow_through"));
+    case Verdict::right: return read_as;
+    case Verdict::follow_through: return join(read_as, join(mistake, say("grading.say.follow_through")));
     case Verdict::unanswered: return whole ? say("grading.say.unanswered") : std::string();
-    case Verdict::unreadable: return whole ? say("grading.say.unreadable") : say("grading.say.unreadable_short");
+    case Verdict::to_check: return join(read_as, whole ? say("grading.say.to_check") : say("grading.say.to_check_short"));
     case Verdict::wrong: {
-      std::string s = join(whole ? say("grading.say.wrong") : std::string(), mistake);
+      std::string s = join(read_as, join(whole ? say("grading.say.wrong") : std::string(), mistake));
       if (!m.from.empty()) s = join(s, say("grading.say.follow_through_off"));
       return s;
     }

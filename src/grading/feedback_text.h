@@ -31,7 +31,7 @@ class FeedbackText {
   // The verdict's word in the language ("right", "juste", …).
   const std::string& verdict(Verdict v) const;
   // Why, as a sentence that stands alone (expected and given included): empty for a right
-  // answer. Plain text (plain_text below), for JSON and terminals: no label markup.
+  // answer typed as asked (one read from the neighbouring cell, or corrected, says so). Plain text (plain_text below), for JSON and terminals: no label markup.
   std::string sentence(const QuestionKey& q, const QuestionMark& m) const;
   // Why, for a page that already shows the answer and the expected one beside it: the named
   // mistake, the follow-through, why a cell was unreadable; empty when there is nothing more.

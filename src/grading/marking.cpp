@@ -5,6 +5,7 @@
 #include "grading/answer_reading.h"
 #include "grading/kind_grader.h"
 #include "grading/review.h"
+#include "grading/typed_cells.h"
 
 namespace epure::grading {
 
@@ -14,33 +15,12 @@ std::string_view to_string(Verdict v) {
     case Verdict::follow_through: return "follow_through";
     case Verdict::wrong: return "wrong";
     case Verdict::unanswered: return "unanswered";
-    case Verdict::unreadable: return "unreadable";
+    case Verdict::to_check: return "to_check";
   }
   return "?";
 }
 
 namespace {
-
-bool within_hot(const HotQuestion& q, double given) {
-  if (!std::isfinite(given)) return false;
-  const double d = std::abs(given - q.number);
-  switch (q.rule) {
-    case ToleranceRule::Kind::isclose: return d <= std::max(q.rel * std::abs(q.number), q.abs);
-    case ToleranceRule::Kind::distance: return d <= q.abs;
-    case ToleranceRule::Kind::exact: break;
-  }
-  return d <= 1e-9 * std::max(1.0, std::abs(q.number));
-}
-
-bool equal_by_rule(const HotQuestion& q, const Given& g) {
-  switch (q.type) {
-    case AnswerType::number: return within_hot(q, g.number);
-    case AnswerType::boolean: return g.boolean == q.boolean;
-    case AnswerType::word: return g.word.data() == q.word;
-    case AnswerType::faces: return g.faces == q.faces;
-  }
-  return false;
-}
 
 // Whether `given` is what the question `q` expects, by q's rule, for the value `target`.
 bool within_rule_of(const HotQuestion& q, double given, double target) {
@@ -92,7 +72,7 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
                    ExerciseMarks& out) {
   const std::size_t n = key.questions.size();
   out.resize(n);
-  bool any_wrong = false;
+  bool any_blank = false, any_open = false;  // open: read, but not (yet) right
   for (std::size_t i = 0; i < n; ++i) {
     const HotQuestion& q = key.hot[i];
     QuestionMark& m = out[i];
@@ -102,22 +82,34 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
     m.from = {};
     m.detail.clear();
     m.value = NAN;
+    m.note = {};
+    m.note_field = {};
+    m.corrected = false;
     switch (m.given.state) {
-      case Given::State::blank: m.verdict = Verdict::unanswered; break;
-      case Given::State::unreadable: m.verdict = Verdict::unreadable; break;
+      case Given::State::blank:
+        m.verdict = Verdict::unanswered;
+        any_blank = true;
+        break;
+      case Given::State::unreadable:
+        m.verdict = Verdict::to_check;
+        any_open = true;
+        break;
       case Given::State::value:
         if (q.partner >= 0) {
           m.verdict = Verdict::wrong;  // decided below, with its partner
+          any_open = true;
         } else if (equal_by_rule(q, m.given)) {
           m.verdict = Verdict::right;
           m.points = q.points;
         } else {
           m.verdict = Verdict::wrong;
-          any_wrong = true;
+          any_open = true;
         }
         break;
     }
   }
+  // answers typed where or as not asked (typed_cells.h): a point in one cell
+  if (any_blank && any_open) read_points_in_one_cell(key, cells, options.numbers.decimal_comma, out);
   // Points marked as a whole: right when the given point is within the distance.
   for (std::size_t i = 0; i < n; ++i) {
     const int j = key.hot[i].partner;
@@ -132,15 +124,21 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
       a.verdict = b.verdict = Verdict::right;
       a.points = qa.points;
       b.points = qb.points;
-    } else {
-      any_wrong = true;
     }
   }
-  if (any_wrong) name_swapped_coordinates(key, out);
-  if (any_wrong && key.grader) {
-    ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
-    key.grader->review(key.prepared, review);
+  if (!any_open) return;
+  bool any_wrong = false;
+  for (const QuestionMark& m : out) any_wrong = any_wrong || m.verdict == Verdict::wrong;
+  if (any_wrong) {
+    name_swapped_coordinates(key, out);
+    if (key.grader) {
+      ExerciseReview review(key, out, options.follow_through, options.numbers, options.decimals);
+      key.grader->review(key.prepared, review);
+    }
   }
+  // two neighbouring answers typed in each other's cell, where the kind's method names no
+  // mistake that explains them (t_ab and t_cd swapped is the segments' own "t_swapped")
+  read_swapped_cells(key, cells, out);
 }
 
 }  // namespace epure::grading

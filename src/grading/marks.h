@@ -30,7 +30,9 @@ enum class Verdict : unsigned char {
   follow_through,  // wrong by the key, right from the student's own earlier answers: credited
   wrong,
   unanswered,
-  unreadable,      // marked wrong, and said so: "unreadable: …"
+  // A cell that could not be read for its question (corrections.h): its points are held, neither
+  // given nor refused, and the row is listed for the teacher until a corrections file settles it.
+  to_check,
 };
 
 std::string_view to_string(Verdict v);
@@ -43,6 +45,11 @@ struct QuestionMark {
   std::string_view from;     // follow-through: the fields it followed from ("t", "t_proj d2")
   std::string detail;        // those earlier answers as the student gave them ("t = 0.31")
   double value = NAN;        // what the named mistake or the student's own values give
+  // How the answer was read when it was not typed where or as asked, static storage:
+  // "swapped_cells" (read from the neighbouring cell, whose answer it is), "point_in_one_cell".
+  std::string_view note;
+  std::string_view note_field;  // swapped_cells: the question id whose cell it was read from
+  bool corrected = false;       // the cell's text came from the teacher's corrections file
 
   bool credited() const { return points > 0; }
 };

@@ -13,11 +13,14 @@ struct CsvReport::Impl {
   output::AtomicFile file;
   const AnswerKey& key;
   CsvDialect dialect;
+  ClassWords words;
+  MarkScale scale;
   fmt::memory_buffer buf;
   std::vector<double> points;  // by question id index; NaN: not asked
-  std::vector<char> asked;
+  std::vector<char> asked;     // by question id index: 0 not asked, 1 marked, 2 to check
 
-  Impl(const std::filesystem::path& path, const AnswerKey& k, CsvDialect d) : file(path), key(k), dialect(d) {}
+  Impl(const std::filesystem::path& path, const AnswerKey& k, CsvDialect d, const Texts& texts, MarkScale s)
+      : file(path), key(k), dialect(d), words(k, texts), scale(s) {}
 
   void end_line() {
     if (dialect.crlf) buf.push_back('\r');
@@ -81,18 +84,21 @@ struct CsvReport::Impl {
   void number(double x) { close_room(put_number(open_room(1), x)); }
 };
 
-CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, CsvDialect dialect)
-    : impl_(std::make_unique<Impl>(path, key, dialect)) {
+CsvReport::CsvReport(const std::filesystem::path& path, const AnswerKey& key, CsvDialect dialect, const Texts& texts,
+                     MarkScale scale)
+    : impl_(std::make_unique<Impl>(path, key, dialect, texts, scale)) {
   auto& m = *impl_;
   if (dialect.bom) m.buf.append(std::string_view("\xef\xbb\xbf"));
-  m.cell("sheet", true);
-  m.cell("student");
-  m.cell("score");
-  m.cell("max");
-  if (key.info.scale) m.cell(fmt::format("mark/{}", *key.info.scale));  // "mark/20"
+  m.cell(texts.get("grading.report.sheet"), true);
+  m.cell(texts.get("grading.report.student"));
+  m.cell(texts.get("grading.report.score"));
+  m.cell(texts.get("grading.report.max"));
+  if (scale.out_of)  // "mark/20", "note/20"
+    m.cell(texts.format("grading.report.mark", {{"out_of", fmt::format("{}", *scale.out_of)}}));
+  m.cell(texts.get("grading.report.held"));
   for (const auto& id : key.question_ids()) m.cell(id);
-  m.cell("line");
-  m.cell("flags");
+  m.cell(texts.get("grading.report.line"));
+  m.cell(texts.get("grading.report.flags"));
   m.end_line();
   m.points.assign(key.question_ids().size(), 0);
   m.asked.assign(key.question_ids().size(), 0);
@@ -107,8 +113,9 @@ void CsvReport::submission(const Submission& s) {
   if (s.marked()) {
     m.number(s.score);
     m.number(s.max);
-    // the mark out of the scale, to hundredths as a teacher writes it
-    if (m.key.info.scale) m.number(s.max > 0 ? std::round(s.score / s.max * *m.key.info.scale * 100) / 100 : 0);
+    // the mark out of N, rounded as mark_scale.h says
+    if (m.scale.out_of) m.number(m.scale.mark(s.score, s.max));
+    m.number(s.held);
     std::fill(m.asked.begin(), m.asked.end(), 0);
     // through local pointers: a store to asked (char) may alias anything, and would make the
     // compiler reload every vector's bounds at each question
@@ -121,28 +128,34 @@ void CsvReport::submission(const Submission& s) {
       for (std::size_t q = 0; q < n; ++q) {
         const auto i = static_cast<std::size_t>(index[q]);
         points[i] = marks[q].points;
-        asked[i] = 1;
+        asked[i] = marks[q].verdict == Verdict::to_check ? 2 : 1;
       }
     }
     char* p = m.open_room(m.points.size());
     for (std::size_t i = 0; i < m.points.size(); ++i) {
-      if (m.asked[i]) p = m.put_number(p, m.points[i]);
-      else *p++ = m.dialect.delimiter;
+      if (m.asked[i] == 1) {
+        p = m.put_number(p, m.points[i]);
+      } else {
+        *p++ = m.dialect.delimiter;
+        if (m.asked[i] == 2) *p++ = '?';  // to check: not a number, so that a sum leaves it out
+      }
     }
     m.close_room(p);
   } else {
     m.buf.push_back(m.dialect.delimiter);
     m.buf.push_back(m.dialect.delimiter);
-    if (m.key.info.scale) m.buf.push_back(m.dialect.delimiter);
+    m.buf.push_back(m.dialect.delimiter);
+    if (m.scale.out_of) m.buf.push_back(m.dialect.delimiter);
     for (std::size_t i = 0; i < m.points.size(); ++i) m.buf.push_back(m.dialect.delimiter);
   }
   m.buf.push_back(m.dialect.delimiter);
   fmt::format_to(fmt::appender(m.buf), "{}", s.line);
   std::string flags;
   for (const auto& f : s.flags) {
-    if (flags.find(f.code) != std::string::npos) continue;
-    if (!flags.empty()) flags += ' ';
-    flags += f.code;
+    const std::string name = m.words.flag(f.code);
+    if (flags.find(name) != std::string::npos) continue;
+    if (!flags.empty()) flags += "; ";
+    flags += name;
   }
   m.cell(flags);
   m.end_line();

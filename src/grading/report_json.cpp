@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "grading/class_words.h"
 #include "grading/encoding.h"
 #include "grading/session.h"
 #include "grading/statistics.h"
@@ -30,16 +31,111 @@ void expected_value(JsonWriter& w, const QuestionKey& q) {
   }
 }
 
+void optional_number(JsonWriter& w, std::string_view key, const std::optional<double>& x) {
+  w.key(key);
+  if (x && std::isfinite(*x)) w.number(*x);
+  else w.raw("null");
+}
+
+// The item analysis (item_analysis.h): per question, exercise and branch, Cronbach's α, the
+// named mistakes and the follow-through credit.
+void write_items(JsonWriter& w, const ItemAnalysis& a, const ClassWords& words) {
+  w.key("items").begin_object();
+  w.key("submissions").integer(a.submissions);
+  w.field("provisional", a.provisional);
+  optional_number(w, "alpha", a.alpha);
+  w.key("alpha_items").integer(a.alpha_items);
+  w.field("score_variance", a.score_variance);
+  w.key("follow_through").integer(a.follow_through);
+  w.field("follow_through_points", a.follow_through_points);
+  w.key("questions").begin_array();
+  for (const auto& q : a.questions) {
+    w.begin_object();
+    w.field("id", std::string_view(q.id));
+    w.key("answers").integer(q.answers);
+    w.field("facility", q.facility);
+    optional_number(w, "discrimination", q.discrimination);
+    w.key("follow_through").integer(q.follow_through);
+    w.field("follow_through_points", q.follow_through_points);
+    w.key("to_check").integer(q.to_check);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("exercises").begin_array();
+  for (const auto& e : a.exercises) {
+    w.begin_object();
+    w.key("n").integer(e.n);
+    w.field("kind", std::string_view(e.kind));
+    w.field("label", std::string_view(words.exercise(e.n)));
+    w.key("submissions").integer(e.submissions);
+    w.field("max_points", e.max_points);
+    w.field("facility", e.facility);
+    w.field("variance", e.variance);
+    w.key("follow_through").integer(e.follow_through);
+    w.field("follow_through_points", e.follow_through_points);
+    w.key("mistakes").begin_array();
+    for (const auto& [code, count] : e.mistakes) {
+      w.begin_object();
+      w.field("code", code);
+      w.key("count").integer(count);
+      w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+  }
+  w.end_array();
+  w.key("branches").begin_array();
+  for (const auto& b : a.branches) {
+    w.begin_object();
+    w.key("exercise").integer(a.exercises[b.exercise].n);
+    w.field("branch", std::string_view(b.branch));
+    w.field("name", std::string_view(words.branch(b.branch)));
+    w.key("submissions").integer(b.submissions);
+    w.field("facility", b.facility);
+    w.field("sd", b.sd);
+    optional_number(w, "others_facility", b.others_facility);
+    optional_number(w, "t", b.t);
+    optional_number(w, "df", b.df);
+    optional_number(w, "p", b.p);
+    w.key("tested").integer(b.tested);
+    w.field("threshold", b.tested > 0 ? kBranchAlpha / b.tested : 0.0);
+    w.field("harder", b.harder);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("mistakes").begin_array();
+  for (const auto& m : a.mistakes) {
+    w.begin_object();
+    w.field("code", m.code);
+    w.field("name", std::string_view(words.mistake(m.code)));
+    w.key("count").integer(m.count);
+    w.key("exercises").begin_array();
+    for (const auto& [e, count] : m.by_exercise) {
+      w.begin_object();
+      w.key("n").integer(a.exercises[e].n);
+      w.key("count").integer(count);
+      w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+}
+
 }  // namespace
 
 struct JsonReport::Impl {
   output::AtomicFile file;
   const AnswerKey& key;
   const FeedbackText& text;
+  ClassWords words;
+  MarkScale scale;
   fmt::memory_buffer buf;
   JsonWriter w{buf};
 
-  Impl(const std::filesystem::path& path, const AnswerKey& k, const FeedbackText& t) : file(path), key(k), text(t) {}
+  Impl(const std::filesystem::path& path, const AnswerKey& k, const FeedbackText& t, MarkScale s)
+      : file(path), key(k), text(t), words(k, t.texts()), scale(s) {}
   void flush() {
     file.write(std::string_view(buf.data(), buf.size()));
     buf.clear();
@@ -47,8 +143,8 @@ struct JsonReport::Impl {
 };
 
 JsonReport::JsonReport(const std::filesystem::path& path, const AnswerKey& key, const FeedbackText& text,
-                       std::string_view answers_name, bool follow_through)
-    : impl_(std::make_unique<Impl>(path, key, text)) {
+                       std::string_view answers_name, bool follow_through, MarkScale scale)
+    : impl_(std::make_unique<Impl>(path, key, text, scale)) {
   auto& w = impl_->w;
   w.begin_object();
   w.field("answers", answers_name);
@@ -62,6 +158,14 @@ JsonReport::JsonReport(const std::filesystem::path& path, const AnswerKey& key, 
   w.end_object();
   w.field("follow_through", follow_through);
   w.field("language", std::string_view(text.texts().language()));
+  // the mark: score / max × out_of, to the nearest multiple of step, halves up (mark_scale.h)
+  w.key("mark_scale").begin_object();
+  w.key("out_of");
+  if (scale.out_of) w.number(*scale.out_of);
+  else w.raw("null");
+  w.field("step", scale.step);
+  w.field("rounding", "nearest, halves up");
+  w.end_object();
   w.key("submissions").begin_array();
 }
 
@@ -75,11 +179,32 @@ void JsonReport::submission(const Submission& s) {
   w.key("line").integer(s.line);
   w.field("sheet", std::string_view(s.sheet ? s.sheet->id : utf8(s.sheet_text)));
   w.field("student", std::string_view(s.student));
+  if (!s.student_number.empty()) w.field("student_number", std::string_view(utf8(s.student_number)));
   w.field("marked", s.marked());
   if (s.marked()) {
     w.field("score", s.score);
     w.field("max", s.max);
-    if (m.key.info.scale) w.field("mark", s.max > 0 ? std::round(s.score / s.max * *m.key.info.scale * 100) / 100 : 0.0);
+    if (m.scale.out_of) w.field("mark", m.scale.mark(s.score, s.max));
+    // held: the points of the answers still to check, neither given nor refused
+    w.field("held", s.held);
+    w.key("to_check").integer(s.to_check);
+    w.key("exercises").begin_array();
+    for (std::size_t e = 0; e < s.marks.size(); ++e) {
+      const ExerciseKey& ex = s.sheet->exercises[e];
+      double earned = 0, worth = 0;
+      for (std::size_t q = 0; q < s.marks[e].size(); ++q) {
+        earned += s.marks[e][q].points;
+        worth += ex.hot[q].points;
+      }
+      w.begin_object();
+      w.key("n").integer(ex.n);
+      w.field("kind", std::string_view(ex.kind));
+      w.field("branch", std::string_view(ex.branch));
+      w.field("points", earned);
+      w.field("max_points", worth);
+      w.end_object();
+    }
+    w.end_array();
   }
   w.key("flags").begin_array();
   for (const auto& f : s.flags) {
@@ -114,6 +239,9 @@ void JsonReport::submission(const Submission& s) {
         w.field("from", mk.from);
         w.field("from_answers", std::string_view(utf8(mk.detail)));
       }
+      if (!mk.note.empty()) w.field("read", mk.note);
+      if (!mk.note_field.empty()) w.field("read_from", mk.note_field);
+      if (mk.corrected) w.field("corrected", true);
       w.end_object();
     }
   }
@@ -141,11 +269,12 @@ void JsonReport::finish(const ClassStatistics& stats, const Outcome& outcome) {
   w.field("median_percent", stats.median_percent());
   w.field("min_percent", stats.min_percent());
   w.field("max_percent", stats.max_percent());
-  if (m.key.info.scale) {
-    w.field("scale", *m.key.info.scale);
-    w.field("mean_mark", stats.mean_percent() / 100 * *m.key.info.scale);
-    w.field("median_mark", stats.median_percent() / 100 * *m.key.info.scale);
+  if (m.scale.out_of) {
+    w.field("scale", *m.scale.out_of);
+    w.field("mean_mark", stats.mean_percent() / 100 * *m.scale.out_of);
+    w.field("median_mark", stats.median_percent() / 100 * *m.scale.out_of);
   }
+  w.key("to_check_rows").integer(stats.to_check_rows());
   w.key("questions").begin_array();
   for (const auto& q : stats.questions()) {
     w.begin_object();
@@ -177,11 +306,13 @@ void JsonReport::finish(const ClassStatistics& stats, const Outcome& outcome) {
     w.end_object();
   }
   w.end_array();
+  write_items(w, stats.items(), m.words);
   w.end_object();
   w.key("problems").begin_array();
   for (const auto& p : outcome.problems) {
     w.begin_object();
     w.key("line").integer(p.line);
+    if (!p.file.empty()) w.field("file", std::string_view(p.file));
     w.field("severity", p.error ? "error" : "warning");
     w.field("message", std::string_view(utf8(p.message)));
     w.end_object();

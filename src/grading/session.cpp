@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "grading/answer_reading.h"
 #include "grading/encoding.h"
@@ -38,6 +39,15 @@ std::string quoted(std::string_view s) {
   return fmt::format("\"{}…\"", s.substr(0, cut));
 }
 
+// Points as the language writes them, without trailing zeros ("1,5").
+std::string points_text(double x, bool decimal_comma) {
+  std::string s = fmt::format("{}", std::round(x * 1000) / 1000);
+  if (decimal_comma)
+    for (char& c : s)
+      if (c == '.') c = ',';
+  return s;
+}
+
 bool looks_like_question(std::string_view name) {
   return !name.empty() && name[0] >= '0' && name[0] <= '9' && name.find('.') != std::string_view::npos;
 }
@@ -60,15 +70,76 @@ GradingSession::GradingSession(const AnswerKey& key, SessionOptions options)
   first_line_.assign(key.sheets().size(), 0);
   for (const auto& [id, n] : options_.sheet_counts)
     if (const SheetKey* s = key.find(id)) counts_[key.index_of(*s)] = n;
+  if (options_.corrections) take_corrections(*options_.corrections);
 }
 
-void GradingSession::problem(int line, std::string message, bool error, std::string_view kind) {
+// Each correction resolved against the key: its sheet (as a row's sheet id is: any case, the
+// nearest id named when it is not one), its question (one the sheet asks, or the student
+// number). A correction that cannot be placed is said with its entry and left out; the others
+// are applied to their sheet's rows.
+void GradingSession::take_corrections(const Corrections& corrections) {
+  const std::string_view file = corrections.source;
+  for (const auto& p : corrections.problems) problem(0, describe(p, texts_), true, "corrections", file);
+  if (!corrections.readable) return;
+  int last = 0;
+  for (const auto& c : corrections.entries) last = std::max(last, c.entry);
+  correction_used_.assign(static_cast<std::size_t>(last) + 1, 0);
+  const auto& ids = key_.question_ids();
+  auto refuse = [&](const Correction& c, std::string_view code, TextVars vars) {
+    vars.emplace_back("sheet", c.sheet);
+    vars.emplace_back("question", c.question);
+    problem(0,
+            describe(CorrectionsProblem{c.entry, std::string(code), std::move(vars)}, texts_), true,
+            "corrections", file);
+  };
+  for (std::size_t k = 0; k < corrections.entries.size(); ++k) {
+    const Correction& c = corrections.entries[k];
+    const SheetLookup found = find_sheet(key_, trim_cell(c.sheet), texts_);
+    if (!found.sheet) {
+      correction_used_[static_cast<std::size_t>(c.entry)] = 1;  // said once, here
+      refuse(c, "unknown_sheet", {{"why", found.why}});
+      continue;
+    }
+    int question = kStudentNumber;
+    if (const auto w = read_word(c.question); !(w && *w == "student_number")) {
+      question = -2;
+      for (const auto& e : found.sheet->exercises)
+        for (const auto& q : e.questions)
+          if (q.id == c.question || (q.id.size() == c.question.size() &&
+                                     std::equal(q.id.begin(), q.id.end(), c.question.begin(), [](char a, char b) {
+                                       return std::tolower(static_cast<unsigned char>(a)) ==
+                                              std::tolower(static_cast<unsigned char>(b));
+                                     })))
+            question = static_cast<int>(std::find(ids.begin(), ids.end(), q.id) - ids.begin());
+      if (question == -2) {
+        correction_used_[static_cast<std::size_t>(c.entry)] = 1;
+        refuse(c, "not_asked", {{"id", found.sheet->id}});
+        continue;
+      }
+    }
+    auto& list = corrections_[key_.index_of(*found.sheet)];
+    bool replaced = false;
+    for (auto& earlier : list)
+      if (earlier.question == question) {
+        problem(0,
+                describe(CorrectionsProblem{c.entry, "repeated", {{"first", std::to_string(earlier.entry)}, {"sheet", found.sheet->id}, {"question", c.question}}},
+                         texts_),
+                false, "corrections", file);
+        correction_used_[static_cast<std::size_t>(earlier.entry)] = 1;  // said here
+        earlier = {question, c.value, c.entry};
+        replaced = true;
+      }
+    if (!replaced) list.push_back({question, c.value, c.entry});
+  }
+}
+
+void GradingSession::problem(int line, std::string message, bool error, std::string_view kind, std::string_view file) {
   message = one_line(message);
   (error ? outcome_.errors : outcome_.warnings)++;
   int& printed = printed_[std::string(kind)];
   if (options_.log) {
-    const std::string where = line > 0 ? fmt::format("{}:{}", options_.answers_name, line)
-                                       : std::string(options_.answers_name);
+    const std::string_view name = file.empty() ? std::string_view(options_.answers_name) : file;
+    const std::string where = line > 0 ? fmt::format("{}:{}", name, line) : std::string(name);
     if (printed < kPrintedPerKind) {
       fmt::print(options_.log, "{}: {}: {}\n", where, texts_.get(error ? "grading.problem.error" : "grading.problem.warning"),
                  message);
@@ -77,7 +148,7 @@ void GradingSession::problem(int line, std::string message, bool error, std::str
     }
   }
   ++printed;
-  if (outcome_.problems.size() < kKeptProblems) outcome_.problems.push_back({line, std::move(message), error});
+  if (outcome_.problems.size() < kKeptProblems) outcome_.problems.push_back({line, std::move(message), error, std::string(file)});
   else ++outcome_.problems_not_kept;
 }
 
@@ -88,10 +159,23 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
   if (line > 0) header_line_ = line;
   columns_.assign(key_.sheets().size(), nullptr);
   layouts_.clear();
-  sheet_column_ = student_column_ = -1;
+  sheet_column_ = student_column_ = student_number_column_ = -1;
   const auto& ids = key_.question_ids();
   question_column_.assign(ids.size(), -1);
+  point_column_.assign(ids.size(), -1);
   column_question_.assign(names_.size(), -1);
+  // "2.P" names the point whose first coordinate is "2.P.x"
+  const auto point_of = [&](std::string_view name) -> int {
+    for (std::size_t q = 0; q < ids.size(); ++q) {
+      const std::string& id = ids[q];
+      if (!id.ends_with(".x") || id.size() != name.size() + 2) continue;
+      if (std::equal(name.begin(), name.end(), id.begin(), [](char a, char b) {
+            return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+          }))
+        return static_cast<int>(q);
+    }
+    return -1;
+  };
   for (std::size_t c = 0; c < names_.size(); ++c) {
     std::string_view name = trim_cell(names_[c]);
     if (c == 0 && name.substr(0, 3) == "\xef\xbb\xbf") name.remove_prefix(3);  // a BOM written twice
@@ -102,6 +186,14 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     }
     if (word && *word == "student" && student_column_ < 0) {
       student_column_ = static_cast<int>(c);
+      continue;
+    }
+    if (word && *word == "student_number" && student_number_column_ < 0) {
+      student_number_column_ = static_cast<int>(c);
+      continue;
+    }
+    if (const int x = point_of(name); x >= 0 && looks_like_question(name) && point_column_[static_cast<std::size_t>(x)] < 0) {
+      point_column_[static_cast<std::size_t>(x)] = static_cast<int>(c);
       continue;
     }
     auto it = std::find(ids.begin(), ids.end(), name);
@@ -209,10 +301,12 @@ void GradingSession::row(const AnswerRow& in) {
   s.sheet = nullptr;
   s.marks = {};
   s.report_index = {};
-  s.score = s.max = 0;
+  s.score = s.max = s.held = 0;
+  s.to_check = 0;
   s.flags.clear();
   s.sheet_text = trim_cell(cell(sheet_column_));
   s.student.assign(trim_cell(cell(student_column_)));
+  s.student_number.assign(trim_cell(cell(student_number_column_)));
 
   if (r.problem == "unclosed_quote")
     flag(s, "malformed",
@@ -278,28 +372,72 @@ void GradingSession::row(const AnswerRow& in) {
                                                                 {{"sheet", sheet.id}, {"first", std::to_string(first)}})});
     }
     marks_.resize(sheet.exercises.size());
-    std::string unreadable;
+    const std::vector<SheetCorrection>* fixes = nullptr;
+    if (!corrections_.empty())
+      if (auto it = corrections_.find(index); it != corrections_.end()) fixes = &it->second;
+    if (fixes)
+      for (const auto& f : *fixes)
+        if (f.question == kStudentNumber) {
+          s.student_number.assign(trim_cell(f.value));
+          correction_used_[static_cast<std::size_t>(f.entry)] = 1;
+          ++outcome_.corrections_applied;
+        }
+    std::string to_check, swapped;
     for (std::size_t e = 0; e < sheet.exercises.size(); ++e) {
       const ExerciseKey& ex = sheet.exercises[e];
+      const auto& report = cols.report_index[e];
       cells_.clear();
-      for (int c : cols.column[e]) cells_.push_back(cell(c));
+      for (std::size_t q = 0; q < cols.column[e].size(); ++q) {
+        std::string_view text = cell(cols.column[e][q]);
+        // a point typed under its own name ("2.P"), when its first coordinate's cell is empty
+        if (trim_cell(text).empty()) {
+          const int point = point_column_[static_cast<std::size_t>(report[q])];
+          if (point >= 0) text = cell(point);
+        }
+        cells_.push_back(text);
+      }
+      std::size_t corrected_here = 0;
+      if (fixes)
+        for (const auto& f : *fixes)
+          for (std::size_t q = 0; q < report.size(); ++q)
+            if (report[q] == f.question) {
+              cells_[q] = f.value;
+              corrected_here |= std::size_t(1) << std::min<std::size_t>(q, 63);
+              correction_used_[static_cast<std::size_t>(f.entry)] = 1;
+              ++outcome_.corrections_applied;
+            }
       mark_exercise(ex, cells_, marking_, marks_[e]);
       for (std::size_t q = 0; q < ex.questions.size(); ++q) {
-        const QuestionMark& m = marks_[e][q];
+        QuestionMark& m = marks_[e][q];
+        if (corrected_here && q < 64 && (corrected_here >> q & 1)) m.corrected = true;
         s.score += m.points;
-        if (m.verdict == Verdict::unreadable) {
-          if (!unreadable.empty()) unreadable += "; ";
-          unreadable += texts_.format("grading.flag.unreadable_item",
-                                      {{"id", ex.questions[q].id},
-                                       {"value", quoted(m.given.raw)},
-                                       {"why", texts_.get(fmt::format("grading.why.{}", m.given.why))}});
+        if (m.verdict == Verdict::to_check) {
+          s.held += ex.hot[q].points;
+          ++s.to_check;
+          if (!to_check.empty()) to_check += "; ";
+          to_check += texts_.format("grading.flag.to_check_item",
+                                    {{"id", ex.questions[q].id},
+                                     {"value", quoted(m.given.raw)},
+                                     {"why", texts_.get(fmt::format("grading.why.{}", m.given.why))}});
+        }
+        if (m.note == "swapped_cells" && q + 1 < ex.questions.size() && marks_[e][q + 1].note == "swapped_cells" &&
+            marks_[e][q + 1].note_field == ex.questions[q].id) {
+          if (!swapped.empty()) swapped += "; ";
+          swapped += texts_.format("grading.flag.swapped_item", {{"a", ex.questions[q].id}, {"b", ex.questions[q + 1].id}});
         }
       }
     }
     s.max = sheet.max_points;
     s.marks = marks_;
     s.report_index = cols.report_index;
-    if (!unreadable.empty()) flag(s, "unreadable", texts_.format("grading.flag.unreadable", {{"list", unreadable}}), true);
+    if (!to_check.empty()) {
+      flag(s, "to_check",
+           texts_.format("grading.flag.to_check", {{"list", to_check}, {"points", points_text(s.held, marking_.numbers.decimal_comma)}}),
+           true);
+      ++outcome_.to_check_rows;
+      outcome_.to_check += s.to_check;
+    }
+    if (!swapped.empty()) flag(s, "swapped_cells", texts_.format("grading.flag.swapped_cells", {{"list", swapped}}), false);
     // answers in columns of questions this sheet does not ask
     std::string stray;
     for (std::size_t c = 0; c < r.cells.size() && c < width; ++c) {
@@ -336,6 +474,13 @@ const Outcome& GradingSession::finish(const SourceInfo& source) {
             false, "duplicate_summary");
     outcome_.duplicates.emplace_back(id, lines);
   }
+  if (options_.corrections)
+    for (const auto& c : options_.corrections->entries)
+      if (!correction_used_[static_cast<std::size_t>(c.entry)])
+        problem(0,
+                describe(CorrectionsProblem{c.entry, "unused", {{"sheet", c.sheet}, {"answers", options_.answers_name}}},
+                         texts_),
+                false, "corrections", options_.corrections->source);
   if (outcome_.empty_rows > 0)
     problem(0,
             texts_.format(outcome_.empty_rows == 1 ? "grading.problem.empty_rows_one" : "grading.problem.empty_rows_many",

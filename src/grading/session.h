@@ -22,6 +22,7 @@
 #include "exercises/texts.h"
 #include "grading/answer_key.h"
 #include "grading/answer_source.h"
+#include "grading/corrections.h"
 #include "grading/marking.h"
 #include "grading/statistics.h"
 #include "grading/submission.h"
@@ -32,6 +33,7 @@ struct Problem {
   int line = 0;  // 0: about the file or the key as a whole
   std::string message;
   bool error = true;
+  std::string file;  // the file it is about when not the answers file (the corrections file)
 };
 
 // How the run went, for the outputs' closing sections and the exit status.
@@ -43,6 +45,9 @@ struct Outcome {
   int rows = 0;          // rows read = rows reported
   int marked = 0;
   int empty_rows = 0;    // rows whose every cell is empty: not submissions, skipped
+  int to_check_rows = 0; // marked rows with answers to check (points held)
+  int to_check = 0;      // answers to check, in all
+  int corrections_applied = 0;  // cells whose text came from the corrections file
   int errors = 0, warnings = 0;
   std::vector<Problem> problems;  // the first kKeptProblems
   int problems_not_kept = 0;
@@ -63,6 +68,8 @@ struct SessionOptions {
   // How many rows carry each sheet (canonical id), from a first pass: a sheet submitted twice
   // is flagged on both rows. Without it, only the later rows are flagged.
   std::unordered_map<std::string, int> sheet_counts;
+  // The teacher's corrections (corrections.h), applied to the cells before marking; null: none.
+  const Corrections* corrections = nullptr;
 };
 
 class GradingSession final : public RowHandler {
@@ -71,7 +78,7 @@ class GradingSession final : public RowHandler {
 
   void add_sink(SubmissionSink& sink) { sinks_.push_back(&sink); }
   // A problem of the run found outside the rows (the key's version, …).
-  void problem(int line, std::string message, bool error, std::string_view kind = "other");
+  void problem(int line, std::string message, bool error, std::string_view kind = "other", std::string_view file = {});
 
   void header(const std::vector<std::string>& names, int line) override;
   void row(const AnswerRow& row) override;
@@ -91,6 +98,16 @@ class GradingSession final : public RowHandler {
   };
   const SheetColumns& columns_for(const SheetKey& sheet);
   void flag(Submission& s, std::string_view code, std::string message, bool error);
+  void take_corrections(const Corrections& corrections);
+
+  // A correction of one sheet's cell, resolved against the key: the question's index in
+  // key.question_ids(), or kStudentNumber.
+  struct SheetCorrection {
+    int question = 0;
+    std::string_view value;  // in options_.corrections
+    int entry = 0;
+  };
+  static constexpr int kStudentNumber = -1;
 
   const AnswerKey& key_;
   SessionOptions options_;
@@ -104,7 +121,13 @@ class GradingSession final : public RowHandler {
   // the header
   std::vector<std::string> names_;
   int header_line_ = 0;
-  int sheet_column_ = -1, student_column_ = -1;
+  int sheet_column_ = -1, student_column_ = -1, student_number_column_ = -1;
+  // A point typed whole under its own name ("2.P" beside, or instead of, "2.P.x" and "2.P.y"):
+  // by question id index of its first coordinate → that column, or −1.
+  std::vector<int> point_column_;
+  // by sheet index: the corrections of its cells (empty for most)
+  std::unordered_map<std::size_t, std::vector<SheetCorrection>> corrections_;
+  std::vector<char> correction_used_;  // by entry − 1
   std::vector<int> question_column_;  // by question id index → answers column or −1
   std::vector<int> column_question_;  // by answers column → question id index or −1
   std::map<std::string, bool, std::less<>> warned_columns_;

@@ -33,7 +33,7 @@ double median_of(const std::map<std::int64_t, int>& counted, int total) {
 
 }  // namespace
 
-ClassStatistics::ClassStatistics(std::vector<std::string> question_ids) {
+ClassStatistics::ClassStatistics(std::vector<std::string> question_ids) : items_(question_ids) {
   for (auto& id : question_ids) questions_.push_back(QuestionRate{std::move(id)});
 }
 
@@ -41,6 +41,8 @@ void ClassStatistics::add(const Submission& s) {
   ++rows_;
   if (!s.marked()) return;
   ++marked_;
+  items_.add(s);
+  if (s.to_check > 0) ++to_check_rows_;
   sum_ += s.score;
   max_points_ = std::max(max_points_, s.max);
   ++scores_[thousandths(s.score)];
@@ -76,6 +78,22 @@ std::vector<MistakeCount> ClassStatistics::mistakes(std::size_t limit) const {
   for (const auto& [at, count] : mistakes_) out.push_back({at.second, questions_[at.first].id, count});
   std::stable_sort(out.begin(), out.end(), [](const MistakeCount& a, const MistakeCount& b) { return a.count > b.count; });
   if (limit && out.size() > limit) out.resize(limit);
+  return out;
+}
+
+std::vector<HistogramBin> ClassStatistics::mark_histogram(double out_of, int bins) const {
+  const int n = std::max(1, bins);
+  const double width = out_of / n;
+  std::vector<HistogramBin> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = {i * width, (i + 1) * width, 0};
+  for (const auto& [percent, count] : percents_) {
+    const double mark = percent / 1000.0 / 100 * out_of;
+    // a mark on a bin's upper edge belongs to the next bin (the last one closed); the rounding
+    // of the percent's thousandths must not push 10/20 into [9, 10)
+    int i = static_cast<int>(std::floor(mark / width + 1e-9));
+    i = std::clamp(i, 0, n - 1);
+    out[static_cast<std::size_t>(i)].count += count;
+  }
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "grading/item_analysis.h"
 #include "grading/submission.h"
 
 namespace epure::grading {
@@ -59,6 +60,13 @@ class ClassStatistics {
   std::vector<MistakeCount> mistakes(std::size_t limit = 0) const;
   // Scores in `bins` equal bins over [0, max_points()], or one per point when that is fewer.
   std::vector<HistogramBin> histogram(int bins = 10) const;
+  // Marks out of `out_of` (each score / its sheet's maximum × out_of) in `bins` equal bins.
+  std::vector<HistogramBin> mark_histogram(double out_of, int bins) const;
+  // Facility, discrimination, Cronbach's α, branches compared, mistakes and follow-through
+  // (item_analysis.h).
+  ItemAnalysis items() const { return items_.result(); }
+  // Marked rows with answers to check (their scores are provisional).
+  int to_check_rows() const { return to_check_rows_; }
 
  private:
   int rows_ = 0, marked_ = 0;
@@ -67,6 +75,8 @@ class ClassStatistics {
   std::map<std::int64_t, int> percents_;  // percent of the maximum in thousandths → count
   std::vector<QuestionRate> questions_;
   std::map<std::pair<int, std::string_view>, int> mistakes_;  // (question, code) → count
+  ItemAccumulator items_;
+  int to_check_rows_ = 0;
 };
 
 }  // namespace epure::grading

@@ -32,8 +32,8 @@ std::string padded_left(std::string_view s, std::size_t w) {
 
 }  // namespace
 
-TextSummary::TextSummary(std::FILE* out, const AnswerKey& key, const FeedbackText& text, bool rows)
-    : out_(out), key_(key), text_(text), rows_(rows) {}
+TextSummary::TextSummary(std::FILE* out, const AnswerKey& key, const FeedbackText& text, MarkScale scale, bool rows)
+    : out_(out), key_(key), text_(text), words_(key, text.texts()), scale_(scale), rows_(rows) {}
 
 std::string TextSummary::score(double x) const { return text_.points(std::round(x * 100) / 100); }
 
@@ -47,7 +47,7 @@ void TextSummary::submission(const Submission& s) {
   if (!header_done_) {
     fmt::print(out_, "{}  {}  {}  {}  {}\n", padded_left(T.get("grading.summary.line"), 6),
                padded(T.get("grading.summary.sheet"), 14), padded(T.get("grading.summary.student"), 24),
-               padded_left(T.get("grading.summary.score"), 13), T.get("grading.summary.wrong"));
+               padded_left(T.get("grading.summary.score"), 21), T.get("grading.summary.wrong"));
     header_done_ = true;
   }
   std::string student(s.student);
@@ -65,29 +65,35 @@ void TextSummary::submission(const Submission& s) {
     for (std::size_t e = 0; e < s.marks.size(); ++e)
       for (std::size_t q = 0; q < s.marks[e].size(); ++q) {
         const auto& m = s.marks[e][q];
-        if (m.verdict == Verdict::right) continue;
+        std::vector<std::string> why;
+        if (m.verdict == Verdict::follow_through) why.push_back(T.get("grading.summary.follow_through"));
+        else if (m.verdict == Verdict::unanswered) why.push_back(T.get("grading.summary.blank"));
+        else if (m.verdict == Verdict::to_check) why.push_back(words_.flag("to_check"));
+        if (!m.mistake.empty()) why.push_back(words_.mistake(m.mistake));
+        if (m.note == "swapped_cells") why.push_back(words_.flag("swapped_cells"));
+        if (m.verdict == Verdict::right && why.empty()) continue;
         if (!detail.empty()) detail += ' ';
         detail += s.sheet->exercises[e].questions[q].id;
-        detail += '(';
-        if (m.verdict == Verdict::follow_through) detail += T.get("grading.summary.follow_through");
-        else if (m.verdict == Verdict::unanswered) detail += T.get("grading.summary.blank");
-        else if (m.verdict == Verdict::unreadable) detail += T.get("grading.summary.unreadable");
-        if (!m.mistake.empty()) detail += fmt::format("{}{}", detail.back() == '(' ? "" : " ", m.mistake);
-        if (detail.back() == '(') detail.pop_back();
-        else detail += ')';
+        if (!why.empty()) detail += fmt::format(" ({})", fmt::join(why, ", "));
       }
   }
   for (const auto& f : s.flags)
-    if (f.code != "unreadable") detail += fmt::format("{}[{}]", detail.empty() ? "" : " ", f.code);
+    if (f.code != "to_check" && f.code != "swapped_cells")
+      detail += fmt::format("{}[{}]", detail.empty() ? "" : " ", words_.flag(f.code));
   std::string sc = s.marked() ? fmt::format("{} / {}", score(s.score), score(s.max)) : std::string("—");
-  if (s.marked() && key_.info.scale && s.max > 0)
-    sc += fmt::format(" = {} / {}", score(s.score / s.max * *key_.info.scale), score(*key_.info.scale));
+  if (s.marked() && scale_.out_of && s.max > 0)
+    sc += fmt::format(" = {} / {}", score(scale_.mark(s.score, s.max)), score(*scale_.out_of));
+  if (s.marked() && s.to_check > 0) sc += " " + T.format("grading.summary.held", {{"points", score(s.held)}});
   fmt::print(out_, "{:>6}  {}  {}  {}  {}\n", s.line, padded(s.sheet ? std::string_view(s.sheet->id) : s.sheet_text, 14),
-             padded(student, 24), padded_left(sc, 13), detail);
+             padded(student, 24), padded_left(sc, 21), detail);
 }
 
 void TextSummary::finish(const ClassStatistics& stats, const Outcome& outcome) {
   const Texts& T = text_.texts();
+  // "1 answer", "3 answers"
+  const auto count = [&](int n, std::string_view what) {
+    return T.format(fmt::format("grading.summary.{}_{}", what, n == 1 ? "one" : "many"), {{"count", std::to_string(n)}});
+  };
   if (rows_ && header_done_) fmt::print(out_, "\n");
   fmt::print(out_, "{}\n",
              T.format(outcome.follow_through ? "grading.summary.run_on" : "grading.summary.run_off",
@@ -97,6 +103,8 @@ void TextSummary::finish(const ClassStatistics& stats, const Outcome& outcome) {
                        {"marked", std::to_string(outcome.marked)},
                        {"key", key_.info.source},
                        {"seed", std::to_string(key_.info.seed)}}));
+  if (outcome.corrections_applied > 0)
+    fmt::print(out_, "{}\n", T.format("grading.summary.corrections", {{"count", std::to_string(outcome.corrections_applied)}}));
   if (stats.marked() > 0) {
     // in percent of the maximum, so that the class is compared on one scale
     fmt::print(out_, "{}\n",
@@ -105,29 +113,72 @@ void TextSummary::finish(const ClassStatistics& stats, const Outcome& outcome) {
                                                    {"median", percent(stats.median_percent())},
                                                    {"min", percent(stats.min_percent())},
                                                    {"highest", percent(stats.max_percent())}}));
-    if (key_.info.scale) {
-      const double scale = *key_.info.scale;
+    if (scale_.out_of) {
+      const double n = *scale_.out_of;
       fmt::print(out_, "{}\n",
-                 T.format("grading.summary.scale", {{"scale", score(scale)},
-                                                    {"mean", score(stats.mean_percent() / 100 * scale)},
-                                                    {"median", score(stats.median_percent() / 100 * scale)}}));
+                 T.format("grading.summary.scale", {{"scale", score(n)},
+                                                    {"step", text_.points(scale_.step)},
+                                                    {"mean", score(scale_.round(stats.mean_percent() / 100 * n))},
+                                                    {"median", score(scale_.round(stats.median_percent() / 100 * n))}}));
     }
-    std::string rates;
+    if (outcome.to_check > 0) {
+      fmt::print(out_, "{}\n",
+                 T.format("grading.summary.to_check", {{"answers", count(outcome.to_check, "answers")},
+                                                       {"rows", count(outcome.to_check_rows, "sheets")}}));
+    }
+    const ItemAnalysis items = stats.items();
+    // questions: facility and discrimination, three to a line
+    fmt::print(out_, "{}", T.get("grading.summary.items"));
     int shown = 0;
-    for (const auto& q : stats.questions()) {
-      if (q.asked == 0) continue;
-      rates += fmt::format("{}{} {}", shown % 8 == 0 ? "\n  " : "   ", q.id, percent(std::round(100 * q.rate())));
+    std::size_t id_width = 0;
+    for (const auto& q : items.questions) id_width = std::max(id_width, width(q.id));
+    for (const auto& q : items.questions) {
+      if (q.answers == 0) continue;
+      const std::string r = q.discrimination ? text_.numbers().rounded(*q.discrimination, 2) : std::string("—");
+      fmt::print(out_, "{}{} {} {}", shown % 3 == 0 ? "\n  " : "   ", padded(q.id, id_width),
+                 padded_left(percent(std::round(100 * q.facility)), 6), padded_left(r, 5));
       ++shown;
     }
-    fmt::print(out_, "{}{}\n", T.get("grading.summary.rates"), rates);
-    const auto top = stats.mistakes(8);
-    if (!top.empty()) {
-      fmt::print(out_, "{}\n", T.get("grading.summary.mistakes"));
-      for (const auto& m : top)
-        fmt::print(out_, "  {}\n",
-                   T.format("grading.summary.mistake_line",
-                            {{"count", padded_left(std::to_string(m.count), 4)}, {"code", std::string(m.code)}, {"question", m.question}}));
+    fmt::print(out_, "\n");
+    if (items.alpha)
+      fmt::print(out_, "{}\n", T.format("grading.summary.alpha", {{"alpha", text_.numbers().rounded(*items.alpha, 2)},
+                                                                 {"k", std::to_string(items.alpha_items)}}));
+    else
+      fmt::print(out_, "{}\n", T.get("grading.summary.alpha_none"));
+    bool any_harder = false;
+    for (const auto& b : items.branches) {
+      if (!b.harder) continue;
+      any_harder = true;
+      const auto& ex = items.exercises[b.exercise];
+      fmt::print(out_, "{}\n",
+                 T.format("grading.summary.branch_harder",
+                          {{"exercise", words_.exercise(ex.n)},
+                           {"branch", words_.branch(b.branch)},
+                           {"facility", percent(std::round(100 * b.facility))},
+                           {"others", percent(std::round(100 * b.others_facility.value_or(0)))},
+                           {"n", std::to_string(b.submissions)},
+                           {"t", text_.points(std::round(b.t.value_or(0) * 100) / 100)},
+                           {"p", text_.points(std::round(b.p.value_or(1) * 10000) / 10000)},
+                           {"threshold", text_.points(std::round(kBranchAlpha / b.tested * 10000) / 10000)}}));
     }
+    if (!any_harder) fmt::print(out_, "{}\n", T.get("grading.summary.branches_none"));
+    if (!items.mistakes.empty()) {
+      fmt::print(out_, "{}\n", T.get("grading.summary.mistakes"));
+      std::size_t shown_mistakes = 0;
+      for (const auto& m : items.mistakes) {
+        if (++shown_mistakes > 10) break;
+        std::vector<std::string> where;
+        for (const auto& [e, count] : m.by_exercise)
+          where.push_back(fmt::format("{} × {}", count, words_.exercise(items.exercises[e].n)));
+        fmt::print(out_, "  {}\n",
+                   T.format("grading.summary.mistake_line", {{"count", padded_left(std::to_string(m.count), 4)},
+                                                            {"name", words_.mistake(m.code)},
+                                                            {"where", fmt::format("{}", fmt::join(where, ", "))}}));
+      }
+    }
+    fmt::print(out_, "{}\n",
+               T.format("grading.summary.follow_through_total", {{"answers", count(items.follow_through, "answers")},
+                                                                 {"points", score(items.follow_through_points)}}));
   }
   fmt::print(out_, "{}\n",
              T.format(outcome.errors + outcome.warnings > 0 ? "grading.summary.counts_stderr" : "grading.summary.counts",

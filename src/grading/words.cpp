@@ -1,7 +1,10 @@
 #include "grading/words.h"
 
+#include <algorithm>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "exercises/texts.h"
 
@@ -10,8 +13,10 @@ namespace epure::grading {
 namespace {
 
 // The contract words the lists map to.
-constexpr std::string_view kTokens[] = {"true",    "false",    "none",      "before", "between", "after", "intersects",
-                                        "outside", "parallel", "collinear", "behind", "miss",    "sheet", "student"};
+constexpr std::string_view kTokens[] = {"true",     "false",     "none",   "before", "between", "after",
+                                        "intersects", "outside", "parallel", "collinear", "behind", "miss",
+                                        "sheet",    "student",   "student_number", "email", "first_name",
+                                        "last_name"};
 
 // The ASCII letter a Latin-1 letter (the byte after 0xC3 in UTF-8) folds to, or 0.
 char fold_latin1(unsigned char b) {
@@ -27,34 +32,69 @@ char fold_latin1(unsigned char b) {
   return 0;
 }
 
-const std::unordered_map<std::string, std::string_view>& word_table() {
-  static const auto table = [] {
-    std::unordered_map<std::string, std::string_view> t;
+// Calls fn on each comma-separated entry of a [grading.read] list.
+template <class Fn>
+void each_entry(std::string_view list, Fn&& fn) {
+  while (!list.empty()) {
+    const auto comma = list.find(',');
+    fn(list.substr(0, comma));
+    if (comma == std::string_view::npos) break;
+    list.remove_prefix(comma + 1);
+  }
+}
+
+struct WordTable {
+  std::unordered_map<std::string, std::string_view> words;
+  // What may surround an answer without changing it ("le rayon … du cercle"), folded, longest
+  // first so that "la droite du rayon" is taken before "la droite".
+  std::vector<std::string> leads, tails;
+};
+
+const WordTable& word_table() {
+  static const WordTable table = [] {
+    WordTable t;
     auto add = [&](std::string_view word, std::string_view token) {
       const std::string key = fold_word(word);
-      if (!key.empty()) t.emplace(key, token);
+      if (!key.empty()) t.words.emplace(key, token);
     };
     for (auto token : kTokens) add(token, token);
     for (const auto& language : builtin_languages()) {
       const Texts& texts = Texts::builtin(language);
       for (auto token : kTokens) {
         const std::string list_key = "grading.read." + std::string(token);
-        if (texts.has(list_key)) {
-          std::string_view list = texts.get(list_key);
-          while (!list.empty()) {
-            const auto comma = list.find(',');
-            add(list.substr(0, comma), token);
-            if (comma == std::string_view::npos) break;
-            list.remove_prefix(comma + 1);
-          }
-        }
+        if (texts.has(list_key)) each_entry(texts.get(list_key), [&](std::string_view w) { add(w, token); });
         const std::string choice_key = "choice." + std::string(token);
         if (texts.has(choice_key)) add(texts.get(choice_key), token);
       }
+      for (const auto& affix : {std::pair{"grading.read.lead", &t.leads}, std::pair{"grading.read.tail", &t.tails}}) {
+        std::vector<std::string>* into = affix.second;
+        if (texts.has(affix.first))
+          each_entry(texts.get(affix.first), [into](std::string_view w) {
+            if (std::string f = fold_word(w); !f.empty()) into->push_back(std::move(f));
+          });
+      }
+    }
+    for (auto* list : {&t.leads, &t.tails}) {
+      std::sort(list->begin(), list->end(), [](const std::string& a, const std::string& b) {
+        return a.size() != b.size() ? a.size() > b.size() : a < b;
+      });
+      list->erase(std::unique(list->begin(), list->end()), list->end());
     }
     return t;
   }();
   return table;
+}
+
+// `folded` without a lead ("le rayon ") or a tail (" du cercle") of the table, as whole words;
+// empty when it has neither.
+std::string_view without(std::string_view folded, const std::vector<std::string>& affixes, bool lead) {
+  for (const auto& a : affixes) {
+    if (folded.size() <= a.size() + 1) continue;
+    if (lead && folded.starts_with(a) && folded[a.size()] == ' ') return folded.substr(a.size() + 1);
+    if (!lead && folded.ends_with(a) && folded[folded.size() - a.size() - 1] == ' ')
+      return folded.substr(0, folded.size() - a.size() - 1);
+  }
+  return {};
 }
 
 }  // namespace
@@ -108,9 +148,22 @@ std::string fold_word(std::string_view s) {
 
 std::optional<std::string_view> read_word(std::string_view text) {
   const auto& table = word_table();
-  auto it = table.find(fold_word(text));
-  if (it == table.end()) return std::nullopt;
-  return it->second;
+  const std::string folded = fold_word(text);
+  const auto find = [&](std::string_view w) -> std::optional<std::string_view> {
+    if (w.empty()) return std::nullopt;
+    auto it = table.words.find(std::string(w));
+    if (it == table.words.end()) return std::nullopt;
+    return it->second;
+  };
+  if (auto w = find(folded)) return w;
+  // the answer inside a sentence: "le rayon passe à côté du cercle", "P est avant A"
+  const std::string_view no_lead = without(folded, table.leads, true);
+  if (auto w = find(no_lead)) return w;
+  const std::string_view base = no_lead.empty() ? std::string_view(folded) : no_lead;
+  if (auto w = find(without(base, table.tails, false))) return w;
+  if (!no_lead.empty())
+    if (auto w = find(without(folded, table.tails, false))) return w;
+  return std::nullopt;
 }
 
 }  // namespace epure::grading

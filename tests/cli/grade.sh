@@ -77,15 +77,16 @@ raw = open(sys.argv[2], "rb").read()
 assert raw.startswith(b"\xef\xbb\xbf"), "report without the export's BOM"
 assert b"\r\n" in raw, "report without the export's CRLF"
 rows = list(csv.reader(io.StringIO(raw.decode("utf-8-sig")), delimiter=";"))
-assert rows[0][:4] == ["sheet", "student", "score", "max"], rows[0][:4]
-assert rows[0][-2:] == ["line", "flags"], rows[0][-2:]
+# the header in the feedback's language (--lang fr); an English set: points, no mark out of 20
+assert rows[0][:5] == ["feuille", "étudiant", "points", "max", "à vérifier"], rows[0][:5]
+assert rows[0][-2:] == ["ligne", "remarques"], rows[0][-2:]
 assert len(rows) == 5, len(rows)
-ids = rows[0][4:-2]
+ids = rows[0][5:-2]
 for r, s in zip(rows[1:], subs):
     assert r[1] == s["student"], (r[1], s["student"])
     assert float(r[2].replace(",", ".")) == s["score"], (r[2], s["score"])
     points = {x["id"]: x["points"] for x in s["questions"]}
-    for id, cell in zip(ids, r[4:-2]):
+    for id, cell in zip(ids, r[5:-2]):
         if id in points: assert float(cell.replace(",", ".")) == points[id], (id, cell)
         else: assert cell == "", (id, cell)
 PY
@@ -174,7 +175,8 @@ ls "$tmp/fb" | grep -q '\.tmp$' && fail "a temporary file was left behind"
 # without a report: a readable summary on stdout
 "$EPURE" grade --key "$data/key_small.json" --answers "$data/export_fr.csv" >"$tmp/summary" 2>/dev/null
 grep -q "N'Diaye, Aïssatou" "$tmp/summary" || fail "summary lacks a student"
-grep -q "far_intersection" "$tmp/summary" || fail "summary lacks the mistakes"
+grep -q "far intersection J" "$tmp/summary" || fail "summary lacks the mistakes (by name)"
+grep -q "far_intersection" "$tmp/summary" && fail "summary shows a mistake code"
 grep -q "median" "$tmp/summary" || fail "summary lacks the class statistics"
 
 [ "$failed" -eq 0 ] && echo "grade: all checks passed"

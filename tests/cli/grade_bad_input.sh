@@ -33,7 +33,7 @@ says ids "ids.csv:2: error: '1000-0005-002M' is not a valid sheet id: check char
 says ids "nearest sheet of this key is 1000-0005-002N"
 says ids "ids.csv:3: error: sheet 1000-0007-000Q belongs to the set of seed 7"
 [ "$(report_rows ids)" -eq 3 ] || fail "unknown ids: rows in 3, reported $(report_rows ids)"
-grep -q "unknown_sheet" "$tmp/ids.report.csv" || fail "unknown ids: not flagged in the report"
+grep -q "unknown sheet" "$tmp/ids.report.csv" || fail "unknown ids: not flagged in the report"
 
 # 2. one sheet submitted twice: both marked, both flagged; a warning, not an error
 { header; ok_row 1000-0005-002N; ok_row 1000-0005-002N; } >"$tmp/dup.csv"
@@ -55,16 +55,18 @@ grade cols
 says cols "cols.csv:1: warning: column 38 'email' is not a question"
 says cols "cols.csv:1: error: column 39 '2.tt' is not a question of this key"
 
-# 4. unreadable values: marked wrong as "unreadable: …", the row says which
+# 4. values that cannot be read: to check, their points held, the row says which
 { header; ok_row 1000-0005-002N | sed 's/;-0,48;/;environ -0,5;/; s/;oui;1\/6;/;peut-être;1\/6;/'; } >"$tmp/unread.csv"
 grade unread
 [ "$(status unread)" -eq 1 ] || fail "unreadable: exit $(status unread)"
-says unread 'unread.csv:2: error: unreadable, marked wrong: 2.t "environ -0,5" is not a number; 3.intersects "peut-être" is not yes or no'
+says unread 'unread.csv:2: error: answers to check (3 points held until a corrections file settles them): 2.t "environ -0,5" is not a number; 3.intersects "peut-être" is not yes or no'
 python3 - "$tmp/unread.json" <<'PY' || fail "unreadable: JSON verdicts"
 import json, sys
-q = {x["id"]: x for x in json.load(open(sys.argv[1]))["submissions"][0]["questions"]}
-assert q["2.t"]["verdict"] == "unreadable" and q["2.t"]["points"] == 0
-assert q["2.t"]["feedback"].startswith("unreadable:"), q["2.t"]["feedback"]
+s = json.load(open(sys.argv[1]))["submissions"][0]
+q = {x["id"]: x for x in s["questions"]}
+assert q["2.t"]["verdict"] == "to_check" and q["2.t"]["points"] == 0
+assert q["2.t"]["feedback"].startswith("To check:"), q["2.t"]["feedback"]
+assert s["held"] == q["2.t"]["max_points"] + q["3.intersects"]["max_points"] and s["to_check"] == 2, s
 PY
 
 # 5. ragged rows: too few cells (the rest not answered), too many (the extra shown)

@@ -195,7 +195,7 @@ assert st["scale"] == 20 and abs(st["mean_mark"] - st["mean_percent"] / 5) < 1e-
 raw = open(f"{tmp}/marks.csv", "rb").read()
 assert raw.startswith(b"\xef\xbb\xbf") and b"\r\n" in raw
 rows = list(csv.reader(io.StringIO(raw.decode("utf-8-sig")), delimiter=";"))
-assert rows[0][:5] == ["sheet", "student", "score", "max", "mark/20"], rows[0][:5]
+assert rows[0][:6] == ["feuille", "étudiant", "points", "max", "note/20", "à vérifier"], rows[0][:6]
 for r, s in zip(rows[1:], subs):
     if s["marked"]: assert abs(float(r[4].replace(",", ".")) - s["mark"]) < 1e-9, (r[4], s["mark"])
 
@@ -203,7 +203,8 @@ for r, s in zip(rows[1:], subs):
 english = ["Expected", "you gave", "not answered", "Not answered", "does not ask", "not a valid sheet id",
            "check character", "nearest sheet", "Right from", "your own", "Score", "unreadable", "follow-through",
            "marked sheet", "rows read", "success rate", "most frequent", "warning", "error:", "outside", "between",
-           "before A", "after B", "miss", "behind", "parallel", "collinear", "none", "yes", "Your "]
+           "before A", "after B", "miss", "behind", "parallel", "collinear", "none", "yes", "Your ",
+           "not_asked", "unknown_sheet", "swapped_coordinates", "to_check", "duplicate", "held", "to check"]
 def english_in(text):
     return [w for w in english if re.search(r"(?<!\w)" + re.escape(w) + r"(?!\w)", text)]
 texts = {"stdout": open(f"{tmp}/summary", encoding="utf-8").read(), "stderr": open(f"{tmp}/err", encoding="utf-8").read()}
@@ -217,7 +218,8 @@ for path in sorted(glob.glob(f"{tmp}/fb/*.svg")):
     texts[path] = html.unescape(re.sub(r"<[^>]+>", " ", svg))
 bad = {where: english_in(t) for where, t in texts.items() if english_in(t)}
 assert not bad, bad
-assert "taux de réussite par question" in texts["stdout"] and "%" in texts["stdout"], texts["stdout"]
+assert "facilité (part de la classe qui l’a réussie)" in texts["stdout"] and "%" in texts["stdout"], texts["stdout"]
+assert "α de Cronbach" in texts["stdout"], texts["stdout"]
 assert "sur 20" in texts["stdout"], texts["stdout"]
 # the sheet's words for a choice on the feedback sheets: "✓ à l’extérieur", never the word typed
 fb = " ".join(t for w, t in texts.items() if w.endswith(".svg"))

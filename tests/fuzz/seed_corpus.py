@@ -94,6 +94,10 @@ for i, t in enumerate(["2.17", "2,17", "\u22120.25", "3/4", "5-sqrt(11)", "\u221
                        "1,5\u00d72", "((((2))))", "-3*sqrt(34)/34", "180/4\u00b0", "~ 0,5", "= 1/3", "1/0",
                        "sqrt(-2)", "  4  ", "-12\u00a0\u00b0", "2 \u00f7 3", "2\u00b73", "\u03c0"]):
     put("expression", "%02d" % i, t)
+# units and names typed around a number (issue 31)
+for i, t in enumerate(["4,75 cm", "1,04 u", "1,8 u\u00b2", "3 unit\u00e9s", "t = 4,75", "d\u00b2 = 1,8", "I.x=2,14 cm",
+                       "0.89 rad", "5 cm cm", "4,75.", "\u221a11 u"]):
+    put("expression", "unit-%02d" % i, t)
 
 # answers CSV: the French export of the tests, and realistic exports of each spreadsheet
 put("answers_csv", "export_fr.csv", b"\x00" + read(root, "tests/grading/data/export_fr.csv"))
@@ -130,4 +134,20 @@ put("answers_json", "array.json", json.dumps(objs, ensure_ascii=False, indent=2)
 put("answers_json", "lines.jsonl", "\n".join(json.dumps(o, ensure_ascii=False) for o in objs) + "\n\n")
 put("answers_json", "nested.jsonl", "\ufeff" + json.dumps({"sheet": "1000-0001-000X", "answers": {"1.dot": 3, "1.cross": None, "2.inside": True}}) + "\r\nnot json\r\n[1,2]\n")
 put("answers_json", "moodle-like.json", json.dumps([{"sheet": "1000-0001-000X", "student": "Zo\u00e9", "answers": {"1.t": "1/6", "3.faces": []}}, 5, "x", [[[]]]]))
+# the teacher's corrections: as epure scan's review page writes them, by hand, and broken ones
+put("corrections", "review.json", json.dumps({"format": "epure-corrections", "version": 1, "corrections": [
+    {"sheet": "1000-0005-002N", "question": "2.t", "value": "\u22120,48", "note": "a blot over the 8"},
+    {"sheet": "1000-0005-002N", "question": "student_number", "value": "21804512"},
+    {"sheet": "10000005002n", "question": "5.faces", "value": "+x \u2212y", "crop": "pages/3.png"}]}, ensure_ascii=False, indent=1))
+put("corrections", "bom-empty.json", "\ufeff" + json.dumps({"format": "epure-corrections", "version": 1, "corrections": []}))
+put("corrections", "bad-entries.json", json.dumps({"format": "epure-corrections", "version": 1, "corrections": [
+    {"sheet": "A", "value": 3}, "x", {"sheet": "", "question": "1.t", "value": ""}, {"sheet": "A", "question": "1.t", "value": "1", "note": []}]}))
+put("corrections", "other-version.json", '{"format": "epure-corrections", "version": 2, "corrections": []}')
+put("corrections", "not-an-object.json", '[{"sheet": "A"}]')
+
+# the class roster: a French export with its header, one without, problems
+put("roster", "fr-excel.csv", "\ufeffNom;Pr\u00e9nom;N\u00b0 \u00e9tudiant;Courriel\r\nLef\u00e8vre;Zo\u00e9;00412;zoe@univ.fr\r\nMartin;L\u00e9o;21804512;leo@univ.fr\r\n")
+put("roster", "no-header.csv", '21800001,"Dupont, Jean",jean@u.fr\n21800002,Marie Curie\n')
+put("roster", "problems.csv", "student number,name,e-mail\n1,Ann,ann@u.edu\n1,Bob,bob@u.edu\n,Carl,c@u.edu\n4,,d@u.edu\n5,Eve,eve-at-u\n\"6\",\"Ann\n2\",a@b\n")
+put("roster", "cp1252.csv", "num\u00e9ro;nom\n1;\u00c9lise\n".encode("cp1252"))
 print("corpus written under", corpus)

@@ -2,6 +2,7 @@
 // as the sheets print them (or close), faces in any order and separator, blanks.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -130,6 +131,8 @@ TEST_CASE("every spelling the templates list reads back to its word, in every la
     const auto& texts = epure::Texts::builtin(language);
     for (const auto& [key, list] : texts.all()) {
       if (key.rfind("grading.read.", 0) != 0) continue;
+      // what surrounds an answer (lead, tail) is no answer
+      if (key == "grading.read.lead" || key == "grading.read.tail") continue;
       const std::string token = key.substr(13);
       std::string_view rest = list;
       while (!rest.empty()) {
@@ -167,5 +170,87 @@ TEST_CASE("an empty set of sides, as students write it") {
     const auto g = read_answer(none, AnswerType::faces);
     REQUIRE(g.readable());
     CHECK(g.faces == 0);
+  }
+}
+
+TEST_CASE("a unit typed after a number is the number (issue 31: 4,75 cm, 1,04 u)") {
+  const std::pair<const char*, double> cases[] = {
+      {"4,75 cm", 4.75}, {"1,04 u", 1.04},   {"4,75cm", 4.75},     {"1,8 u²", 1.8},   {"1,8 cm2", 1.8},
+      {"3 unités", 3},   {"2.5 units", 2.5}, {"−0,25 u.a.", -0.25}, {"50,91°", 50.91}, {"−71,57 °", -71.57},
+      {"t = 4,75", 4.75}, {"d² = 1,8", 1.8}, {"t_proj=4,02", 4.02}, {"I.x = 2,14 cm", 2.14}, {"4,75.", 4.75},
+      {"√11 u", 3.3166247903554}};
+  for (const auto& [cell, value] : cases) {
+    CAPTURE(cell);
+    const auto g = read_answer(cell, AnswerType::number);
+    REQUIRE(g.readable());
+    CHECK(g.number == doctest::Approx(value).epsilon(1e-12));
+  }
+  SUBCASE("what is not a unit of the figure stays unreadable, to be checked") {
+    for (const char* cell : {"0.89 rad", "4 km/h", "cm", "5 cm cm", "5°°", "2 = 2", "abc = 3 = 4", "4,75 um"}) {
+      CAPTURE(cell);
+      CHECK(read_answer(cell, AnswerType::number).state == Given::State::unreadable);
+    }
+  }
+}
+
+TEST_CASE("a whole point typed in one cell is split into its coordinates, or is to check when ambiguous") {
+  using epure::grading::PointCell;
+  using epure::grading::read_point_cell;
+  std::array<std::string_view, 3> parts{};
+  SUBCASE("the course's (x ; y), in any language") {
+    for (bool comma : {true, false}) {
+      CHECK(read_point_cell("(3 ; 5)", 2, comma, parts) == PointCell::point);
+      CHECK(parts[0] == "3");
+      CHECK(parts[1] == "5");
+      CHECK(read_point_cell("P = (1,5 ; −2)", 2, comma, parts) == PointCell::point);
+      CHECK(parts[0] == "1,5");
+      CHECK(parts[1] == "−2");
+      CHECK(read_point_cell("[2;1;0]", 3, comma, parts) == PointCell::point);
+      CHECK(parts[2] == "0");
+      CHECK(read_point_cell("(3, 5)", 2, comma, parts) == PointCell::point);  // a comma and a space
+    }
+  }
+  SUBCASE("(3,5): a point with decimal points, but 3,5 itself with decimal commas: not guessed") {
+    CHECK(read_point_cell("(3,5)", 2, false, parts) == PointCell::point);
+    CHECK(read_point_cell("(3,5)", 2, true, parts) == PointCell::ambiguous);
+    // without brackets, the number 3,5 in every language (decimal commas are read anywhere)
+    CHECK(read_point_cell("3,5", 2, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("3,5", 2, false, parts) == PointCell::not_a_point);
+  }
+  SUBCASE("the wrong number of coordinates, or parts that are no numbers") {
+    CHECK(read_point_cell("(3 ; 5)", 3, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("(3 ; 5 ; 1)", 2, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("(a ; 5)", 2, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("(3 ; )", 2, true, parts) == PointCell::not_a_point);
+    CHECK(read_point_cell("3", 2, true, parts) == PointCell::not_a_point);
+  }
+}
+
+TEST_CASE("the wordings students use for every choice answer, in both languages (issue 31: hors segment)") {
+  const std::pair<const char*, const char*> cases[] = {
+      // segments: the reason
+      {"hors segment", "outside"}, {"hors des segments", "outside"}, {"Hors de [AB]", "outside"},
+      {"les droites se coupent hors des segments", "outside"}, {"outside the segments", "outside"},
+      {"off the segments", "outside"}, {"droites parallèles", "parallel"}, {"les droites sont parallèles", "parallel"},
+      {"droites confondues", "collinear"}, {"sur la même droite", "collinear"}, {"on the same line", "collinear"},
+      // projection: the position
+      {"P est avant A", "before"}, {"t < 0", "before"}, {"sur le segment", "between"}, {"sur [AB]", "between"},
+      {"0 ≤ t ≤ 1", "between"}, {"au-delà de B", "after"}, {"beyond B", "after"}, {"P is after B", "after"},
+      // rays: the reason (the course: "le rayon ne se dirige pas vers le cercle", "passe à côté du cercle")
+      {"le rayon passe à côté du cercle", "miss"}, {"la droite passe à côté de la sphère", "miss"},
+      {"d² > r²", "miss"}, {"the ray misses the circle", "miss"}, {"ne touche pas le carré", "miss"},
+      {"mauvaise direction", "behind"}, {"le rayon part à l’opposé du cercle", "behind"}, {"t_proj < 0", "behind"},
+      {"the ray heads away", "behind"}, {"wrong direction", "behind"}};
+  for (const auto& [cell, word] : cases) {
+    CAPTURE(cell);
+    const auto g = read_answer(cell, AnswerType::word);
+    REQUIRE(g.readable());
+    CHECK(g.word == word);
+  }
+  SUBCASE("what says no case stays to check: 'pas d'intersection' is a miss, a ray behind, parallel lines…") {
+    for (const char* cell : {"pas d'intersection", "no intersection", "les segments ne se coupent pas", "hors"}) {
+      CAPTURE(cell);
+      CHECK(read_answer(cell, AnswerType::word).state == Given::State::unreadable);
+    }
   }
 }

@@ -48,7 +48,7 @@ TEST_CASE("a choice, a yes/no and a set of sides are shown in the sheet's words"
   CHECK(said.find("parallel.") == std::string::npos);
 }
 
-TEST_CASE("sentences: named mistake, follow-through, unanswered, unreadable") {
+TEST_CASE("sentences: named mistake, follow-through, unanswered, to check") {
   const auto key = epure::test::exercise(R"({"kind":"projection","A":[1,1],"B":[5,4],"C":[2,6]})",
                                          {"t", "P.x", "P.y", "position"}, {}, "isclose");
   const auto m = epure::test::mark(key, {{"t", "3.8"}, {"P.x", "16.2"}, {"P.y", "12.4"}});
@@ -66,7 +66,8 @@ TEST_CASE("sentences: named mistake, follow-through, unanswered, unreadable") {
   CHECK(en.expected(with_exact) == "0.76");
   CHECK(en.explanation(key.questions[3], m["position"]).empty());
   const auto u = epure::test::mark(key, {{"t", "n/a"}});
-  CHECK(en.sentence(key.questions[0], u["t"]).find("unreadable: “n/a” is not a number") == 0);
+  CHECK(en.sentence(key.questions[0], u["t"]).find("To check: “n/a” is not a number; its points are held") == 0);
+  CHECK(fr.sentence(key.questions[0], u["t"]).find("À vérifier\u00a0: «\u00a0n/a\u00a0» n’est pas un nombre") == 0);
 }
 
 TEST_CASE("the templates' label markup as plain text") {

@@ -100,10 +100,10 @@ TEST_CASE("bad input, each case said with its line, every row reported") {
     CHECK(warnings == 1);
     CHECK(run.outcome.errors == 0);
   }
-  SUBCASE("an unreadable value is marked wrong and said") {
+  SUBCASE("a value that cannot be read is to check, and said") {
     const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n");
-    CHECK(run.rows.rows[0].second == std::vector<std::string>{"unreadable"});
-    CHECK(has_problem(run.outcome, 2, "2.t \"abc\" is not a number"));
+    CHECK(run.rows.rows[0].second == std::vector<std::string>{"to_check"});
+    CHECK(has_problem(run.outcome, 2, "answers to check (2 points held until a corrections file settles them): 2.t \"abc\" is not a number"));
   }
   SUBCASE("ragged rows") {
     const auto run = grade("sheet,2.t,2.P.x\n1000-0005-002N,-0.48\n1000-0005-002N,-0.48,9.41,extra\n");
@@ -141,9 +141,9 @@ TEST_CASE("what a French teacher reads about the rows is in French") {
     const auto run = grade("sheet,4.reason\n1000-0005-002N,miss\n", true, "fr");
     CHECK(has_problem(run.outcome, 2, "réponses à des questions que la feuille 1000-0005-002N ne pose pas, non corrigées"));
   }
-  SUBCASE("3. an unreadable value, and a short id") {
+  SUBCASE("3. a value that cannot be read, and a short id") {
     const auto run = grade("sheet,2.t\n1000-0005-002N,abc\n1000-0005,1\n", true, "fr");
-    CHECK(has_problem(run.outcome, 2, "réponse illisible, comptée fausse\u00a0: 2.t \"abc\" n’est pas un nombre"));
+    CHECK(has_problem(run.outcome, 2, "réponses à vérifier (2 points réservés jusqu’à ce qu’un fichier de corrections les règle)\u00a0: 2.t \"abc\" n’est pas un nombre"));
     CHECK(has_problem(run.outcome, 3, "un identifiant de feuille a 12 caractères, celui-ci en a 8"));
   }
 }
