@@ -133,7 +133,7 @@ void add_solve_command(CLI::App& app, int& status) {
   cmd->add_option("file", options->file, "Input file (default: standard input)");
   cmd->footer(fmt::format("Kinds: {}. A bad line yields {{\"error\": ...}} and the rest is still\n"
                           "solved; the exit status is 1 if any line failed.",
-                          fmt::join(solve::kKinds, ", ")));
+                          fmt::join(solve::contract_kinds(), ", ")));
   cmd->callback([options, &status] {
     if (options->file.empty() || options->file == "-") {
       status = run_solve(stdin, "<stdin>");

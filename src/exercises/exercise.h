@@ -26,6 +26,11 @@
 #include "exercises/texts.h"
 #include "render/document.h"
 
+namespace epure::solve {
+class Fields;
+class Result;
+}  // namespace epure::solve
+
 namespace epure {
 
 // How close an answer must be to earn its points. Recorded per question in key.json, so that
@@ -134,7 +139,7 @@ class ExerciseKind {
   virtual ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const = 0;
 
   // ---- the kind model (kind_method.h): what grading and the exports read from the kind's one
-  // method. Empty for a kind not written as a method.
+  // method.
   // The questions the kind can ask, in the sheet's order, with their default weights.
   virtual std::span<const method::QuestionDecl> questions() const { return {}; }
   // The named mistakes its method declares, in the order grading tries them.
@@ -145,18 +150,25 @@ class ExerciseKind {
   virtual std::vector<DrawnField> drawn() const { return {}; }
   // The instance read from a solve input (key.json's "instance"); throws std::runtime_error
   // naming the field.
-  virtual std::any read_instance(const nlohmann::json& instance) const;
+  virtual std::any read_instance(const nlohmann::json& instance) const = 0;
   // The key of an instance given from outside (a solve input: key.json's "instance", the
   // explorer's dragged figure), in the branch its data falls in: statement, worked steps,
   // construction diagram and answers, as a sheet's key shows them. Throws std::runtime_error
   // (naming the field) for an instance the kind cannot read or solve.
-  virtual ExerciseInstance key_of(const nlohmann::json& instance, const ExerciseContext& ctx) const;
+  virtual ExerciseInstance key_of(const nlohmann::json& instance, const ExerciseContext& ctx) const = 0;
+  // The solve contract (solve/solve.h) for a figure of contract_kind(): whether this kind is the
+  // one that solves it (of two kinds sharing a contract kind, the one of the figure's dimension:
+  // the preamble in space is the contract's `vectors` with u in ℝ³), and the figure read by the
+  // kind's schema, solved by the geometry core, its result written. Throws solve::InputError
+  // naming the field, or geo::DegenerateFigure.
+  virtual bool solves(const solve::Fields& figure) const = 0;
+  virtual void solve_figure(const solve::Fields& figure, solve::Result& result) const = 0;
   // The method run on an instance read by read_instance: with `given`, on the student's own
   // answers where they gave them; with `mistake`, taking that mistake's road. The answers in
   // the order the method reaches them, each with the answers it was computed from.
   virtual std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data,
                                                                  const method::GivenAnswers* given,
-                                                                 std::string_view mistake, int decimals) const;
+                                                                 std::string_view mistake, int decimals) const = 0;
 };
 
 // All kinds, in the course's order; nullptr for an unknown name.

@@ -1,26 +1,12 @@
 #include "exercises/kind_method.h"
 
+#include "support/agrees.h"
+#include "exercises/kinds/space_common.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
-
-namespace epure {
-
-std::any ExerciseKind::read_instance(const nlohmann::json&) const {
-  throw std::logic_error(fmt::format("{}: not written as a method", name()));
-}
-
-ExerciseInstance ExerciseKind::key_of(const nlohmann::json&, const ExerciseContext&) const {
-  throw std::logic_error(fmt::format("{}: not written as a method", name()));
-}
-
-std::vector<method::Recorded<method::Traced>> ExerciseKind::evaluate(const std::any&, const method::GivenAnswers*,
-                                                                     std::string_view, int) const {
-  throw std::logic_error(fmt::format("{}: not written as a method", name()));
-}
-
-}  // namespace epure
 
 namespace epure::method {
 
@@ -32,7 +18,7 @@ std::optional<exact::Rational> rational_of(double x) {
     const double whole = std::nearbyint(scaled);
     // the datum was written with k decimals exactly when scaling lands on an integer (to
     // rounding of the scaling itself)
-    if (std::abs(scaled - whole) <= 1e-9 * std::max(1.0, std::abs(scaled)))
+    if (agrees(whole, scaled))
       return exact::Rational(static_cast<std::int64_t>(whole), static_cast<std::int64_t>(scale));
   }
   return std::nullopt;
@@ -151,12 +137,57 @@ geo::Point2 KeySolution::point(std::string_view id) const {
 std::optional<exact::Surd> KeySolution::exact_x(std::string_view id) const { return step_of(*this, id).x.e; }
 std::optional<exact::Surd> KeySolution::exact_y(std::string_view id) const { return step_of(*this, id).y.e; }
 
+namespace {
+
+// A value a worked step shows, as `how` says (method.h: Shown).
+std::string shown_value(const ExerciseContext& ctx, const KeySolution& key, const method::Shows& s) {
+  using method::Shown;
+  switch (s.how) {
+    case Shown::value: return step_value(ctx, key.value(s.id), key.exact(s.id));
+    case Shown::equals: return equals_value(ctx, key.value(s.id), key.exact(s.id));
+    case Shown::datum: return ctx.numbers.datum(key.value(s.id));
+    case Shown::text: return std::string(s.id);
+    case Shown::face: return face_label(s.id);
+    case Shown::faces: {
+      const auto* r = key.run.step(s.id);
+      std::string list;
+      for (const std::string_view name : {"+x", "+y", "+z", "-x", "-y", "-z"}) {
+        const int bit = (name[1] - 'x') + (name[0] == '+' ? 0 : 3);
+        if (r && (r->faces & (1u << bit))) list += fmt::format("{}{}", list.empty() ? "" : ", ", face_label(name));
+      }
+      return list;
+    }
+    case Shown::point:
+    case Shown::shown:
+    case Shown::data: break;
+  }
+  // a point: in the plane one step; in space three, named by its group (u_hat.x, u_hat.y, …)
+  const auto* flat = key.run.step(s.id);
+  if (flat && flat->type == AnswerType::point) {
+    const geo::Point2 p = key.point(s.id);
+    if (s.how == Shown::data) return ctx.numbers.point(p.x, p.y);
+    if (s.how == Shown::shown) return shown_point(ctx, p, key.exact_x(s.id), key.exact_y(s.id));
+    return step_point(ctx, p, key.exact_x(s.id), key.exact_y(s.id));
+  }
+  const method::CoordinateName x = method::coordinate_name(s.id, 'x'), y = method::coordinate_name(s.id, 'y'),
+                               z = method::coordinate_name(s.id, 'z');
+  if (s.how == Shown::data) return ctx.numbers.point(key.value(x), key.value(y), key.value(z));
+  return space::shown_point3(ctx, {key.value(x), key.value(y), key.value(z)}, key.exact(x), key.exact(y), key.exact(z));
+}
+
+}  // namespace
+
+void replay_steps(render::Section& section, const ExerciseContext& ctx, const KeySolution& key, std::string_view kind) {
+  for (const method::Told& told : key.run.told()) {
+    TextVars vars;
+    for (const method::Shows& s : told.shows) vars.emplace_back(std::string(s.var), shown_value(ctx, key, s));
+    section.add(render::Paragraph{ctx.texts.format(fmt::format("{}.step.{}", kind, told.text), vars)});
+  }
+}
+
 namespace detail {
 
 namespace {
-
-// The method and the core compute the same number by two roads: equal but for the last bits.
-bool agrees(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); }
 
 [[noreturn]] void disagree(std::string_view kind, std::string_view field, std::string_view what,
                            const std::string& mine, const std::string& core) {

@@ -23,10 +23,13 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "exercises/kind_support.h"
 #include "exercises/method.h"
+#include "solve/fields.h"
+#include "solve/result.h"
 
 namespace epure::kinds {
 
@@ -69,6 +72,37 @@ class SchemaReader {
   const nlohmann::json& j_;
 };
 
+// The schema's visitor that reads a solve figure's fields (the contract's own reading: the same
+// errors as `epure solve` gives, "field 'u': expected 2 numbers, got 3").
+class FigureReader {
+ public:
+  explicit FigureReader(const solve::Fields& f) : f_(f) {}
+  void operator()(std::string_view field, double& x) { x = f_.number(field); }
+  void operator()(std::string_view field, geo::Point2& p) { p = f_.point2(field); }
+  void operator()(std::string_view field, geo::Vec2& v) { v = f_.vec2(field); }
+  void operator()(std::string_view field, Pair& p) {
+    const auto v = f_.numbers<2>(field);
+    p = {v[0], v[1]};
+  }
+  void operator()(std::string_view field, geo::Point3& p) { p = f_.point3(field); }
+  void operator()(std::string_view field, geo::Vec3& v) { v = f_.vec3(field); }
+
+ private:
+  const solve::Fields& f_;
+};
+
+// The schema's visitor that finds its first point or vector field and that field's dimension.
+struct FirstPoint {
+  std::string_view field;
+  int dim = 0;
+  template <class T>
+  void operator()(std::string_view name, const T&) {
+    if (dim) return;
+    if constexpr (std::is_same_v<T, geo::Point2> || std::is_same_v<T, geo::Vec2>) field = name, dim = 2;
+    if constexpr (std::is_same_v<T, geo::Point3> || std::is_same_v<T, geo::Vec3>) field = name, dim = 3;
+  }
+};
+
 // The geometry core's answers for an instance, in the order of the kind's questions: what the
 // key expects (method.h's own evaluation is checked against it).
 class CoreAnswers {
@@ -106,6 +140,27 @@ struct KeySolution {
   std::optional<exact::Surd> exact_y(std::string_view id) const;
 };
 
+// The key's worked steps as the method told them (method.h: Run::tell), each the kind's text
+// `<kind>.step.<text>` with the values the run recorded, appended to the key's section.
+void replay_steps(render::Section& key_section, const ExerciseContext& ctx, const KeySolution& key,
+                  std::string_view kind);
+
+// The statement's data by the schema: a point or vector as "(1, −2)", a number as the datum.
+class DataVars {
+ public:
+  explicit DataVars(const NumberStyle& n) : n_(n) {}
+  void operator()(std::string_view field, double x) { vars_.emplace_back(std::string(field), n_.datum(x)); }
+  void operator()(std::string_view field, geo::Point2 p) { vars_.emplace_back(std::string(field), n_.point(p.x, p.y)); }
+  void operator()(std::string_view field, geo::Vec2 v) { vars_.emplace_back(std::string(field), n_.point(v.x, v.y)); }
+  void operator()(std::string_view field, geo::Point3 p) { vars_.emplace_back(std::string(field), n_.point(p.x, p.y, p.z)); }
+  void operator()(std::string_view field, geo::Vec3 v) { vars_.emplace_back(std::string(field), n_.point(v.x, v.y, v.z)); }
+  TextVars take() { return std::move(vars_); }
+
+ private:
+  const NumberStyle& n_;
+  TextVars vars_;
+};
+
 namespace detail {
 
 // The checks and the questions, shared by every kind (kind_method.cpp).
@@ -136,6 +191,24 @@ class MethodKind : public ExerciseKind {
   }
 
   std::any read_instance(const nlohmann::json& instance) const override { return read(instance); }
+
+  // The solve contract: the figure read by the schema, solved and written by the kind's
+  // `contract(const Data&, bool exact, solve::Result&)`.
+  bool solves(const solve::Fields& figure) const override {
+    FirstPoint first;
+    const Data d{};
+    Kind::schema(first, d);
+    if (!first.dim) return true;
+    const solve::Value* v = figure.find(first.field);
+    const bool in_space = v && v->type == solve::Type::array && v->size == 3;
+    return in_space == (first.dim == 3);
+  }
+  void solve_figure(const solve::Fields& figure, solve::Result& result) const override {
+    Data d{};
+    FigureReader reader(figure);
+    Kind::schema(reader, d);
+    Kind::contract(d, figure.exact(), result);
+  }
 
   // A kind's `ExerciseInstance build(const Data&, const ExerciseContext&) const` (the key of
   // drawn data, its branch that of the data) overrides this, and key_of follows from it.
@@ -180,7 +253,7 @@ class MethodKind : public ExerciseKind {
 
   // Runs the method on the key's data: exact and dual evaluations (the dual one only for the
   // tolerances, when the context asks for them), checked against the core.
-  static KeySolution solve(const Data& d, const ExerciseContext& ctx) {
+  static KeySolution key_solution(const Data& d, const ExerciseContext& ctx) {
     method::Run<method::Exact> exact({Kind::kQuestions, ctx.decimals});
     Kind::method(exact, d);
     std::optional<method::Run<method::Dual>> dual;
@@ -192,6 +265,37 @@ class MethodKind : public ExerciseKind {
     detail::check_against_core(Kind::kName, exact, core);
     Questions q = detail::make_questions(ctx, Kind::kQuestions, exact, dual ? &*dual : nullptr, core);
     return KeySolution{std::move(exact), core, std::move(q)};
+  }
+
+  // The instance of drawn data, its sections laid out as every figure kind lays them: the sheet
+  // (title, statement with the data, the question's figure, the answer fields) and the key
+  // (title, the data, the worked steps the method told, `after` (more of the kind's steps), the
+  // construction's figure, the answers). `sheet_figure` and `key_figure` make the figures from
+  // the key's solution (the drawing reads the run's values).
+  template <class SheetFigure, class KeyFigure>
+  static ExerciseInstance assemble(const Data& d, const ExerciseContext& ctx, SheetFigure&& sheet_figure,
+                                   KeyFigure&& key_figure, std::span<const std::string_view> after = {}) {
+    const auto& T = ctx.texts;
+    ExerciseInstance inst = begin_instance(d, ctx);
+    KeySolution key = key_solution(d, ctx);
+    inst.questions = key.questions.take_questions();
+    DataVars vars(ctx.numbers);
+    Kind::schema(vars, d);
+    const TextVars data = vars.take();
+    const std::string kind(Kind::kName);
+    if (ctx.sheet) {  // not for the explorer's views, which show the key only
+      inst.sheet = begin_sheet_section(ctx, kind + ".title");
+      inst.sheet.add(render::Paragraph{T.format(kind + ".statement", data)});
+      inst.sheet.add(sheet_figure(key));
+      add_fields(inst.sheet, key.questions);
+    }
+    inst.key = begin_key_section(ctx, kind + ".title");
+    inst.key.add(render::Paragraph{T.format(kind + ".data", data)});
+    replay_steps(inst.key, ctx, key, Kind::kName);
+    for (std::string_view step : after) inst.key.add(render::Paragraph{T.format(fmt::format("{}.step.{}", kind, step))});
+    inst.key.add(key_figure(key));
+    add_lines(inst.key, key.questions);
+    return inst;
   }
 
   // The identity of a drawn instance and, unless an earlier sheet holds it, its key solution
@@ -207,5 +311,12 @@ class MethodKind : public ExerciseKind {
     return inst;
   }
 };
+
+// The one instance of a kind's class, for its accessor in the registry (registry.cpp).
+template <class KindClass>
+const ExerciseKind& the_kind() {
+  static const KindClass kind;
+  return kind;
+}
 
 }  // namespace epure::kinds

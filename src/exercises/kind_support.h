@@ -171,25 +171,3 @@ std::string equals_point(const ExerciseContext& ctx, geo::Point2 p, const std::o
                          const std::optional<exact::Surd>& ey);
 
 }  // namespace epure::kinds
-
-namespace epure::kinds::square {
-
-// The canonical square's four sides in the contract's order (+x, +y, −x, −y), and the names of a
-// method's steps on each (recorded steps keep views of their names): ray_square's and the
-// rectangle's canonical frame.
-inline constexpr geo::Face kSides[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
-inline constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
-inline constexpr std::string_view kStepT[] = {"t.+x", "t.+y", "t.-x", "t.-y"};
-inline constexpr std::string_view kStepJ[] = {"J.+x", "J.+y", "J.-x", "J.-y"};
-
-// A side's place in kSides.
-inline int index_of(geo::Face f) {
-  for (int i = 0; i < 4; ++i)
-    if (kSides[i] == f) return i;
-  return 0;
-}
-
-// A face's bit in the contract's face sets (method::FaceMask: +x +y +z −x −y −z are bits 0 … 5).
-inline method::FaceMask bit_of(geo::Face f) { return method::FaceMask(1u << (f.axis + (f.sign > 0 ? 0 : 3))); }
-
-}  // namespace epure::kinds::square

@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -36,6 +37,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/agrees.h"
 #include "exercises/exact.h"
 #include "geometry/vec.h"
 #include "support/portable.h"
@@ -240,6 +242,14 @@ inline Exact atan2_degrees(const Exact& s, const Exact& c) {
   return r;
 }
 
+// `x`, read from what `from` was read from: a value the method decides from an answer without
+// computing it from that answer's number (the side I lies on gives N = ±e_k) still depends on
+// it, for follow-through. The value and its exact form are x's; no derivative is added.
+inline double depends_on(double, double x) { return x; }
+inline Exact depends_on(const Exact&, const Exact& x) { return x; }
+inline Dual depends_on(const Dual&, const Dual& x) { return x; }
+inline Traced depends_on(const Traced& from, Traced x) { return {x.v, x.deps | from.deps}; }
+
 // |x|, on the value's sign.
 template <class T>
 T magnitude(const T& x) {
@@ -300,6 +310,37 @@ inline Cond operator||(Cond a, Cond b) { return {a.v || b.v, a.deps | b.deps}; }
 
 template <class T> Cond less(const T& a, const T& b) { return {value(a) < value(b), deps_of(a) | deps_of(b)}; }
 template <class T> Cond less_equal(const T& a, const T& b) { return {value(a) <= value(b), deps_of(a) | deps_of(b)}; }
+
+namespace detail {
+// The sign of a − b from their exact forms, when both have one and exact.h's arithmetic holds:
+// a + b√c is signed exactly (a and b√c of opposite signs: compare a² with b²c).
+inline std::optional<int> exact_sign_of_difference(const Exact& x, const Exact& y) {
+  if (!x.e || !y.e || !one_radicand(*x.e, *y.e)) return std::nullopt;
+  try {
+    const exact::Surd d = *x.e - *y.e;
+    const int sa = d.a().sign(), sb = d.b().sign();
+    if (sb == 0 || sa == 0 || sa == sb) return sa != 0 ? sa : sb;
+    const exact::Rational a2 = d.a() * d.a(), b2c = d.b() * d.b() * exact::Rational(d.c());
+    if (a2 == b2c) return 0;
+    return b2c < a2 ? sa : sb;
+  } catch (const exact::ExactOverflow&) {
+  } catch (const std::domain_error&) {
+  }
+  return std::nullopt;
+}
+}  // namespace detail
+
+// a < b, decided on the exact forms under the exact evaluator (the key's run) wherever both
+// sides have one: for a boundary the course draws closed, where data carried into another frame
+// land exactly on it (A_c·n = 1 while the doubles say 0.9999999999999999), as the geometry core
+// decides them. The other evaluators compare values, as less does.
+template <class T>
+Cond exactly_less(const T& a, const T& b) {
+  if constexpr (std::is_same_v<T, Exact>) {
+    if (auto s = detail::exact_sign_of_difference(a, b)) return {*s < 0, 0};
+  }
+  return less(a, b);
+}
 
 struct Word {
   std::string_view w;  // a contract word, static storage
@@ -366,10 +407,41 @@ inline CoordinateName coordinate_name(std::string_view group, char axis) {
   return c;
 }
 
+// ---------------------------------------------------------------------------------------------
+// The key's narrative, recorded by the method as it runs (the key replays it: nothing walks the
+// branches a second time)
+
+// How a worked step shows a recorded value.
+enum class Shown : std::uint8_t {
+  value,   // a number: its exact form when short, with its decimal value (kind_support's step_value)
+  equals,  // a number after its formula: "= 1/4 = 0.25", "≈ 2.17" (equals_value)
+  point,   // a point or vector, each coordinate as `value` (step_point; in space three coordinates)
+  shown,   // a point or vector, each coordinate exact when short, else rounded (shown_point)
+  data,    // a point or vector of the data's own numbers, as the statement writes them
+  datum,   // a number of the data, as the statement writes it
+  face,    // the face or side named by `id` ("-x"), as printed ("−x")
+  faces,   // the face set recorded under `id`, as printed ("+x, −y")
+  text,    // `id` itself ("x")
+};
+
+// One value a worked step shows: the template's variable, the step or answer it was recorded
+// under (a point in space: the group, "u_hat" for u_hat.x, u_hat.y, u_hat.z), and how.
+struct Shows {
+  std::string_view var;
+  std::string_view id;
+  Shown how = Shown::value;
+};
+
+// One worked step: the kind's text `step.<text>` and the values it shows.
+struct Told {
+  std::string_view text;
+  std::vector<Shows> shows;
+};
+
 // True when x is written exactly with `decimals` decimals: a student's rounding leaves it as is.
 inline bool on_decimal_grid(double x, int decimals) {
   const double scaled = x * std::pow(10.0, decimals);
-  return std::abs(scaled - std::nearbyint(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
+  return is_whole(scaled);
 }
 
 struct RunOptions {
@@ -421,6 +493,13 @@ class Run {
   Num note(std::string_view id, Num x) {
     steps_.push_back(Recorded<Num>(id, AnswerType::number, x));
     return x;
+  }
+  Faces note(std::string_view id, Faces f) {
+    Recorded<Num> r(id, AnswerType::faces);
+    r.faces = f.bits;
+    r.deps = f.deps;
+    steps_.push_back(r);
+    return f;
   }
   Vec note(std::string_view id, Vec p) {
     steps_.push_back(Recorded<Num>(id, AnswerType::point, p.x, p.y));
@@ -501,7 +580,7 @@ class Run {
   // rather than A + (t_proj ± h)·û). Under Exact, the two must agree.
   Num either(Num road, Num exact_road) {
     if constexpr (std::is_same_v<Num, Exact>) {
-      if (std::abs(road.v - exact_road.v) > 1e-9 * std::max(1.0, std::abs(road.v)))
+      if (!agrees(exact_road.v, road.v))
         throw std::logic_error("method: two roads to one value disagree");
       if (!road.e) road.e = exact_road.e;
     }
@@ -512,7 +591,14 @@ class Run {
     return {either(road.x, exact_road.x), either(road.y, exact_road.y), either(road.z, exact_road.z)};
   }
 
+  // ---- the key's narrative: a worked step, recorded by the exact run (the key's) as the method
+  // reaches it; the other evaluators pass
+  void tell(std::string_view text, std::initializer_list<Shows> shows = {}) {
+    if constexpr (std::is_same_v<Num, Exact>) told_.push_back({text, std::vector<Shows>(shows)});
+  }
+
   // ---- what was recorded
+  const std::vector<Told>& told() const { return told_; }
   const std::vector<Recorded<Num>>& answers() const { return answers_; }
   const std::vector<Recorded<Num>>& steps() const { return steps_; }
   // The mistakes the method met on this road.
@@ -548,6 +634,7 @@ class Run {
 
   RunOptions o_;
   std::vector<Recorded<Num>> answers_, steps_;
+  std::vector<Told> told_;
   std::vector<std::string_view> codes_;
   int next_slot_ = 0;
 };

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <map>
 
+#include "support/agrees.h"
 #include "exercises/sheet_id.h"
 #include "grading/answer_key.h"
 #include "grading/feedback_text.h"
@@ -34,7 +35,7 @@ constexpr double kFigureWidthPx = kFigureWidthPt * 96.0 / 72.0;
 constexpr double kPngDpi = 144;
 
 // Equal but for the last bits (as grading decides that a mistake leaves an answer unchanged).
-bool unchanged(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); }
+bool unchanged(double a, double b) { return agrees(b, a); }
 
 const Recorded<Traced>* find_answer(const std::vector<Recorded<Traced>>& run, std::string_view id) {
   for (const auto& a : run)

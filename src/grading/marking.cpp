@@ -1,5 +1,7 @@
 #include "grading/marking.h"
 
+#include "support/agrees.h"
+
 #include <cmath>
 
 #include "grading/answer_reading.h"
@@ -31,7 +33,7 @@ bool within_rule_of(const HotQuestion& q, double given, double target) {
     case ToleranceRule::Kind::distance: return d <= q.abs;
     case ToleranceRule::Kind::exact: break;
   }
-  return d <= 1e-9 * std::max(1.0, std::abs(target));
+  return agrees(given, target);
 }
 
 // The generic mistake of every point answer, named before any kind looks: x and y typed the

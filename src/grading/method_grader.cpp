@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "support/agrees.h"
 #include "grading/review.h"
 
 namespace epure::grading {
@@ -51,7 +52,7 @@ method::Deps bit_of(std::string_view field, std::span<const method::QuestionDecl
 }
 
 // Equal but for the last bits: a mistake that leaves an answer where it was says nothing of it.
-bool unchanged(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); }
+bool unchanged(double a, double b) { return agrees(b, a); }
 
 bool same_answer(const Recorded<Traced>& a, const Recorded<Traced>& b) {
   switch (a.type) {

@@ -1,5 +1,7 @@
 #include "grading/review.h"
 
+#include "support/agrees.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -49,7 +51,7 @@ bool within_rule(ToleranceRule::Kind kind, double rel, double abs, double given,
     case ToleranceRule::Kind::exact: break;
   }
   // an exact rule on a number: equal up to the last digits of a double
-  return d <= 1e-9 * std::max(1.0, std::abs(target));
+  return agrees(given, target);
 }
 
 // The same from the packed copy of the question (answer_key.h: HotQuestion), which marking has

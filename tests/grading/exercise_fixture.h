@@ -21,7 +21,7 @@ namespace epure::test {
 inline nlohmann::json solution_value(const nlohmann::json& solution, const std::string& field) {
   const auto dot = field.find('.');
   if (dot == std::string::npos) return solution.at(field);
-  return solution.at(field.substr(0, dot)).at(field[dot + 1] == 'x' ? 0 : 1);
+  return solution.at(field.substr(0, dot)).at(field[dot + 1] - 'x');
 }
 
 // `fields` in the order asked; a field absent from the solution is given by `extra`.
@@ -40,7 +40,9 @@ inline grading::ExerciseKey exercise(const std::string& instance, std::vector<st
     nlohmann::json q = {{"id", "1." + f}, {"expected", expected}, {"points", 1}};
     if (expected.is_number()) q["tolerance"] = {{"rule", rule}, {"rel", 0.001}, {"abs", 0.02}, {"why", "test"}};
     else q["tolerance"] = {{"rule", "exact"}, {"why", "test"}};
-    if (f.size() > 2 && (f.substr(f.size() - 2) == ".x" || f.substr(f.size() - 2) == ".y"))
+    // a point in the plane is marked as a point (a point in space: three numbers, as its keys)
+    if (f.size() > 2 && (f.substr(f.size() - 2) == ".x" || f.substr(f.size() - 2) == ".y") &&
+        sol.at(f.substr(0, f.size() - 2)).size() == 2)
       q["point"] = "1." + f.substr(0, f.size() - 2);
     questions.push_back(q);
   }

@@ -60,6 +60,12 @@ struct ProjectionMethod {
     m.choice("position", {before ? "before" : after ? "after" : "between", before.deps | after.deps});
   }
 
+  // the solve contract (solve/solve.h)
+  static void contract(const Data& d, bool exact, solve::Result& r) {
+    auto p = exact ? geo::project_exact(d.A, d.B, d.C) : geo::project(d.A, d.B, d.C);
+    r.number("t", p.t).point("P", p.P).string("position", geo::to_string(p.position));
+  }
+
   static CoreAnswers core(const Data& d) {
     const auto p = geo::project(d.A, d.B, d.C);
     CoreAnswers a;
@@ -125,7 +131,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
     const auto p = geo::project(d.A, d.B, d.C);
 
     ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
+    KeySolution key = key_solution(d, ctx);
     const Questions& q = key.questions;
     inst.questions = key.questions.take_questions();
 

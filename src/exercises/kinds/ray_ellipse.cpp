@@ -20,25 +20,13 @@ geo::Ellipse ellipse_of(const Data& d) { return {d.C, d.sx, d.sy, d.angle_deg}; 
 
 // The ray and the ellipse, written once (method.h): the frame change and the way back are
 // transformed_common's, the canonical part is the course's exercise 3 on the unit circle.
-struct RayEllipse {
-  using Data = transformed::Data;
+struct RayEllipse : Family<RayEllipse> {
   static constexpr std::string_view kName = "ray_ellipse";
-
-  template <class V, class D>
-  static void schema(V& v, D& d) {
-    transformed::schema(v, d, "radii");
-  }
-
-  static constexpr auto& kQuestions = transformed::kQuestions;
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
-  static constexpr double kPoints = 7;
-
-  // In the order grading tries them: the far root last, since it moves N too (at the flat
-  // ellipse's far vertex N is −N, the normal inward, which names the answer better).
-  static constexpr std::string_view kMistakes[] = {
-      "rotation_sign",     "translation_forgotten", "transform_order",        "uc_renormalised",
-      "direction_not_unit", "direction_translated",  "not_back_to_world",      "normal_inward",
-      "normal_not_unit",   "normal_wrong_transform", "far_intersection",       "near_root_inside"};
+  static constexpr std::string_view kSizes = "radii";
+  // After the frame change's: the far root last, since it moves N too (at the flat ellipse's far
+  // vertex N is −N, the normal inward, which names the answer better).
+  static constexpr auto kMistakes = frame_mistakes_then<3>({"normal_wrong_transform", "far_intersection",
+                                                         "near_root_inside"});
 
   // In the canonical frame, by hand: A_c inside when ‖A_c‖² < 1; the projection of O on the
   // ray, t_proj = −(A_c·u_c)/(u_c·u_c), P_c = A_c + t_proj·u_c, d² = ‖P_c‖²; behind (outside,
@@ -50,61 +38,57 @@ struct RayEllipse {
   static void method(M& m, const Data& d) {
     using method::less;
     using method::less_equal;
+    using method::Shown;
     const Frame<M> f = frame_change(m, d);
     const auto one = m.in(1.0), zero = m.in(0.0);
     const auto ac2 = m.note("ac2", dot(f.Ac, f.Ac));
     const auto inside = m.boolean("inside", less(ac2, one));
+    m.tell(inside ? "inside.yes" : "inside.no", {{"ac2", "ac2", Shown::equals}});
     const auto uu = dot(f.uc, f.uc);
     const auto t_proj = m.round("t_proj", -dot(f.Ac, f.uc) / uu);
+    m.tell("t_proj", {{"t_proj", "t_proj", Shown::equals}});
     const auto Pc = m.note("Pc", f.Ac + t_proj * f.uc);
     const auto d2 = m.round("d2", dot(Pc, Pc));
     const auto ahead = !less(t_proj, zero);
     const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, one)));
-    if (!hit) return;
+    if (!hit && !ahead) {
+      m.tell("behind");  // the course stops at once
+      return;
+    }
+    m.tell("d2", {{"Pc", "Pc", Shown::shown}, {"d2", "d2", Shown::equals}});
+    if (!hit) {
+      m.tell("miss");
+      return;
+    }
     const auto half_chord = m.round("half_chord", sqrt(one - d2));
     const auto norm_uc = m.round("norm_uc", sqrt(uu));
+    m.tell("pythagoras", {{"half_chord", "half_chord", Shown::equals}, {"norm_uc", "norm_uc", Shown::equals}});
     const auto near = t_proj - half_chord / norm_uc, far = t_proj + half_chord / norm_uc;
     // √((1 − d²)/(u_c·u_c)) as one root: an exact form more often than each root apart
     const auto along = sqrt((one - d2) / uu);
     const auto t = m.number(
         "t", m.round("t", inside ? m.either(m.mistake("near_root_inside", far, near), t_proj + along)
                                  : m.either(m.mistake("far_intersection", near, far), t_proj - along)));
+    m.tell(inside ? "t.inside" : "t.outside", {{"t", "t", Shown::equals}});
     const auto Ic = m.round("Ic", f.Ac + t * f.uc);
+    m.tell("Ic", {{"Ic", "Ic", Shown::shown}});
     back_to_world(m, f, t, Ic, Ic);
   }
 
+  // the solve contract (solve/solve.h)
+  static void contract(const Data& d, bool exact, solve::Result& r) { solve_contract(d, ellipse_of(d), exact, r); }
+
   static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), ellipse_of(d))); }
-};
+  static constexpr Shape kShape = Shape::ellipse;
+  static constexpr std::string_view kWhat = "branch, clearance from the ellipse, drawing area, aspect, conditioning";
+  static geo::Ellipse figure_of(const Data& d) { return ellipse_of(d); }
 
-class RayEllipseKind final : public MethodKind<RayEllipse> {
- public:
-  std::vector<std::pair<std::string, double>> default_branches() const override {
-    return {{"hit", 2}, {"miss", 1}, {"inside", 1}};
-  }
-  std::map<std::string, double> default_constraints() const override { return common_constraints(); }
-  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}, {"Ac", 1, {}}, {"uc", 1, "Ac"}}; }
-
-  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
-    const Limits lim = limits(ctx, *this);
-    const Difficulty level = ctx.spec.difficulty;
-    const bool inside = ctx.branch == "inside";
-    const Data d = draw_until(50000, "ray_ellipse (branch, clearance from the ellipse, drawing area, aspect, conditioning)",
-                              [&]() -> std::optional<Data> {
-      auto d = draw_data(rng, level, Shape::ellipse, inside, lim);
-      if (!d) return std::nullopt;
-      const auto r = geo::intersect(world_ray(*d), ellipse_of(*d));
-      if (!clear(r, ctx.branch, lim)) return std::nullopt;
-      // easy: t rational, so that I is too
-      if (level == Difficulty::easy && r.hit) {
-        const auto run = exact_run(*d, ctx.decimals);
-        const auto* t = run.answer("t");
-        if (!t || !t->x.e || !t->x.e->is_rational()) return std::nullopt;
-      }
-      if (!well_conditioned<RayEllipse>(*d, ctx.decimals, lim)) return std::nullopt;
-      return d;
-    });
-    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+  // Easy: t rational, so that I is too.
+  static bool easy(const Data& d, const geo::RayEllipse& r, const ExerciseContext& ctx) {
+    if (!r.hit) return true;
+    const auto run = MethodKind<RayEllipse>::exact_run(d, ctx.decimals);
+    const auto* t = run.answer("t");
+    return t && t->x.e && t->x.e->is_rational();
   }
 
   // The branch asked, and a figure well away from its boundaries: A clearly in or out, the
@@ -128,60 +112,11 @@ class RayEllipseKind final : public MethodKind<RayEllipse> {
     return r.hit->t >= lim.min_gap;
   }
 
- private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
-    const auto r = geo::intersect(world_ray(d), ellipse_of(d));
-    const Solved s = solved_of(r);
-
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
-    const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
-
-    const TextVars data = data_vars(ctx, d, Shape::ellipse);
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "ray_ellipse.title");
-      inst.sheet.add(render::Paragraph{ctx.texts.format("ray_ellipse.statement", data)});
-      inst.sheet.add(render::Figure{question_scene(ctx, d, Shape::ellipse, s), 0.55});
-      add_fields(inst.sheet, q);
-    }
-
-    inst.key = begin_key_section(ctx, "ray_ellipse.title");
-    inst.key.add(render::Paragraph{ctx.texts.format("ray_ellipse.data", data)});
-    frame_steps(inst.key, ctx, d, Shape::ellipse, key);
-    circle_steps(inst.key, ctx, r, key);
-    if (s.hit) world_steps(inst.key, ctx, key);
-    inst.key.add(render::Figure{key_scene(ctx, d, Shape::ellipse, s, canonical(s, r.canonical)), 0.95});
-    add_lines(inst.key, q);
-    return inst;
-  }
-
-  // The canonical circle's steps, as the core decides them (inside, behind, miss), with the
-  // values of the key's method.
-  static void circle_steps(render::Section& sec, const ExerciseContext& ctx, const geo::RayEllipse& r,
-                           const KeySolution& key) {
-    auto value = [&](std::string_view id) { return equals_value(ctx, key.value(id), key.exact(id)); };
-    const geo::RayCircle& c = r.canonical;
-    step(sec, ctx, r.inside ? "inside.yes" : "inside.no", {{"ac2", value("ac2")}});
-    step(sec, ctx, "t_proj", {{"t_proj", value("t_proj")}});
-    if (c.reason == geo::NoHit::behind) {
-      step(sec, ctx, "behind");
-      return;
-    }
-    step(sec, ctx, "d2",
-         {{"Pc", shown_point(ctx, key.point("Pc"), key.exact_x("Pc"), key.exact_y("Pc"))}, {"d2", value("d2")}});
-    if (c.reason == geo::NoHit::miss) {
-      step(sec, ctx, "miss");
-      return;
-    }
-    step(sec, ctx, "pythagoras", {{"half_chord", value("half_chord")}, {"norm_uc", value("norm_uc")}});
-    step(sec, ctx, r.inside ? "t.inside" : "t.outside", {{"t", value("t")}});
-    step(sec, ctx, "Ic", {{"Ic", shown_point(ctx, key.point("Ic"), key.exact_x("Ic"), key.exact_y("Ic"))}});
-  }
-
   // The canonical frame: the unit circle, A_c and the ray, the projection P_c of O with its right
   // angle, and with a hit the Pythagoras triangle O–P_c–I_c, I_c and N_c.
-  static render::Panel canonical(const Solved& s, const geo::RayCircle& c) {
+  static render::Panel canonical(const geo::RayEllipse& r) {
+    const Solved s = solved_of(r);
+    const geo::RayCircle& c = r.canonical;
     render::Panel panel = canonical_panel(s);
     panel.add(render::Circle{{0, 0}, 1, render::Role::data});
     panel.add(render::PointMark{{0, 0}, render::Role::data, render::Label{"O", {0, 0}}});
@@ -208,11 +143,8 @@ class RayEllipseKind final : public MethodKind<RayEllipse> {
 
 }  // namespace
 
-KeySolution transformed::ellipse_key(const Data& d, const ExerciseContext& ctx) { return MethodKind<RayEllipse>::solve(d, ctx); }
+KeySolution transformed::ellipse_key(const Data& d, const ExerciseContext& ctx) { return MethodKind<RayEllipse>::key_solution(d, ctx); }
 
-const ExerciseKind& ray_ellipse_kind() {
-  static const RayEllipseKind kind;
-  return kind;
-}
+const ExerciseKind& ray_ellipse_kind() { return the_kind<TransformedKind<RayEllipse>>(); }
 
 }  // namespace epure::kinds

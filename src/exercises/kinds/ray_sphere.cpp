@@ -1,15 +1,14 @@
-// The course's exercise 3 in space: the first point where a ray meets a sphere, by the same
-// method as the circle (the projection P of C on the ray, early rejections behind then miss,
-// Pythagoras in C–P–I). The plane through the ray and C holds the whole construction: the key
-// draws it in true size beside the 3D view, where it is exactly the 2D ray/circle figure.
+// The course's exercise 3 in space: the first point where a ray meets a sphere, by the ball
+// family's method (ball_family.h), every coordinate in space. The plane through the ray and C
+// holds the whole construction: the key draws it in true size beside the 3D view, where it is
+// exactly the 2D ray/circle figure. This file is the sphere's draw and diagrams.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "exercises/kind_method.h"
+#include "exercises/kinds/ball_family.h"
 #include "exercises/kinds/space_common.h"
-#include "geometry/ray_3d.h"
 
 namespace epure::kinds {
 
@@ -17,232 +16,48 @@ namespace {
 
 using geo::Point3;
 using geo::Vec3;
-using method::AnswerType;
-using method::Names3;
-
-struct Data {
-  Point3 A;
-  Vec3 u;
-  Point3 C;
-  double r;
-};
+using Data = ball::Data<3>;
 
 // Directions of integer length: û and t_proj rational at the easy level (signs and the order of
 // the components drawn on top).
 constexpr Vec3 kEasyDirections[] = {{1, 0, 0}, {2, 0, 0}, {3, 4, 0}, {1, 2, 2}, {2, 3, 6}, {2, 1, 2}, {4, 4, 2}};
 
-constexpr Names3 kAC = {"AC.x", "AC.y", "AC.z"}, kUh = {"u_hat.x", "u_hat.y", "u_hat.z"},
-                 kP = {"P.x", "P.y", "P.z"}, kI = {"I.x", "I.y", "I.z"}, kN = {"N.x", "N.y", "N.z"};
-constexpr std::string_view kReasons[] = {"behind", "miss"};
-
 // The direction (below the horizontal, in radians) of the radius drawn in the 3D view.
 constexpr double kRadiusAngle = 0.6;
 
-geo::RaySphere solve_core(const Data& d) { return geo::intersect(geo::Ray3::unit(d.A, d.u), geo::Sphere{d.C, d.r}); }
-
-std::string branch_of(const geo::RaySphere& rs) {
-  if (rs.inside) return "inside";
-  if (rs.hit) return "hit";
-  return geo::to_string(*rs.reason);
-}
-
-struct RaySphereMethod {
-  using Data = kinds::Data;
+struct RaySphere : ball::Family<3> {
   static constexpr std::string_view kName = "ray_sphere";
-
-  template <class V, class D>
-  static void schema(V& v, D& d) {
-    v("A", d.A);
-    v("u", d.u);
-    v("C", d.C);
-    v("r", d.r);
-  }
-
-  static constexpr method::QuestionDecl kQuestions[] = {
-      {"t_proj", AnswerType::number}, {"d2", AnswerType::number},  {"inside", AnswerType::boolean},
-      {"hit", AnswerType::boolean},   {"t", AnswerType::number},   {"I.x", AnswerType::number, 0.5},
-      {"I.y", AnswerType::number, 0.5}, {"I.z", AnswerType::number, 0.5}, {"N.x", AnswerType::number, 0.5},
-      {"N.y", AnswerType::number, 0.5}, {"N.z", AnswerType::number, 0.5},
-      {"reason", AnswerType::choice, 1, kReasons}};
-  static constexpr std::string_view kRoads[] = {"pythagoras_apc"};
   static constexpr double kPoints = 8;
-  static constexpr std::string_view kMistakes[] = {"direction_not_unit", "far_intersection", "near_root_inside",
-                                                   "normal_not_unit", "normal_inward"};
+  static constexpr double kMaxRadius = 3, kRadiusLimit = 4;
+  // after the method's steps: the plane of the ray and C, drawn in true size
+  static constexpr std::string_view kAfter[] = {"plane"};
 
-  // As the circle: û, t_proj = û·AC, P = A + t_proj·û, d² = CP², Pythagoras, t = t_proj ∓ √(r² − d²),
-  // I = A + t·û, N = (I − C)/r; every coordinate in space.
-  template <class M>
-  static void method(M& m, const Data& d) {
-    using method::less;
-    using method::less_equal;
-    const auto A = m.in(d.A), C = m.in(d.C), u = m.in(d.u);
-    const auto r = m.in(d.r), zero = m.in(0.0), one = m.in(1.0);
-    const auto AC = m.note(kAC, C - A);
-    const auto ac2 = m.note("ac2", norm2(AC));
-    const auto r2 = m.note("r2", r * r);
-    const auto inside = m.boolean("inside", less(ac2, r2));
-    const auto n = dot(u, u);
-    const auto length = m.note("norm_u", sqrt(n));
-    const auto uh = m.round(kUh, m.mistake("direction_not_unit", u / length, u));
-    const auto t_proj = m.number("t_proj", m.round("t_proj", dot(uh, AC)));
-    const auto P = m.round(kP, A + t_proj * uh);
-    const auto d2 = m.number("d2", m.round("d2", m.road("pythagoras_apc", norm2(P - C), ac2 - t_proj * t_proj)));
-    const auto ahead = !less(t_proj, zero);
-    const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, r2)));
-    if (!hit) {
-      m.choice("reason", method::pick(ahead, "miss", "behind"));
-      return;
-    }
-    const auto h2 = r2 - d2;
-    const auto h = m.round("h", sqrt(h2));
-    const auto t = m.number("t", m.round("t", inside ? m.mistake("near_root_inside", t_proj + h, t_proj - h)
-                                                     : m.mistake("far_intersection", t_proj - h, t_proj + h)));
-    const auto along = (inside ? one : -one) * sqrt(h2 / n);
-    const auto I = m.point(kI, m.round(kI, m.either(A + t * uh, P + along * u)));
-    const auto IC = I - C;
-    m.point(kN, m.mistake("normal_inward", m.mistake("normal_not_unit", IC / r, IC), -(IC / r)));
-  }
-
-  static CoreAnswers core(const Data& d) {
-    const auto rs = solve_core(d);
-    CoreAnswers a;
-    a.number("t_proj", rs.t_proj).number("d2", rs.d2).boolean("inside", rs.inside).boolean("hit", rs.hit.has_value());
-    if (rs.hit) a.number("t", rs.hit->t).point(kI, rs.hit->I).vec(kN, rs.hit->N);
-    else a.choice("reason", geo::to_string(*rs.reason));
-    return a;
-  }
-};
-
-class RaySphereKind final : public MethodKind<RaySphereMethod> {
- public:
-  std::vector<std::pair<std::string, double>> default_branches() const override {
-    return {{"hit", 3}, {"behind", 1}, {"miss", 1}, {"inside", 1}};
-  }
-  std::map<std::string, double> default_constraints() const override {
-    return {{"tangent_margin", 0.15}, {"boundary_margin", 0.15}, {"t_proj_margin", 0.5}, {"t_min", 1.0},
-            {"min_offset", 0.25},     {"min_radius", 2.0},       {"max_radius", 3.0}};
-  }
-
-  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
+  // Widened (a large set has used up the usual ranges): A and C further out.
+  static std::optional<Data> draw(Rng& rng, const ExerciseContext& ctx, double r_lo, double r_hi) {
     const Difficulty level = ctx.spec.difficulty;
-    const bool hard = level == Difficulty::hard;
-    const double tm = constraint(ctx, *this, "tangent_margin");
-    const double bm = constraint(ctx, *this, "boundary_margin");
-    const double tpm = constraint(ctx, *this, "t_proj_margin") / (hard ? 3 : 1);
-    const double t_min = constraint(ctx, *this, "t_min") / (hard ? 3 : 1);
-    const double min_offset = constraint(ctx, *this, "min_offset");
-    const double r_lo = constraint(ctx, *this, "min_radius");
-    const double r_hi = constraint(ctx, *this, "max_radius");
-    if (!(r_lo > 0 && r_lo <= r_hi && r_hi <= 4))
-      throw std::runtime_error("ray_sphere: need 0 < min_radius ≤ max_radius ≤ 4");
-    const double tm_clear = hard ? tm / 4 : tm, bm_clear = hard ? bm / 3 : bm;
-    // widened (a large set has used up the usual ranges): A and C further out
     const double w = 2 * ctx.widening;
-
-    auto accept = [&](const Data& x) {
-      const auto rs = solve_core(x);
-      if (branch_of(rs) != ctx.branch) return false;
-      const double ac = geo::norm(rs.AC) / x.r;
-      const double dr = std::sqrt(rs.d2) / x.r;
-      if (std::abs(rs.P.x) > 7 + w || std::abs(rs.P.y) > 7 + w || rs.P.z < -3 - w || rs.P.z > 8 + w) return false;
-      if (dr < min_offset) return false;
-      if (rs.inside) {
-        if (ac > 1 - bm_clear || rs.hit->t < t_min) return false;
-        return !hard || ac >= 1 - bm;
-      }
-      if (ac < 1 + bm_clear || std::abs(dr - 1) < tm_clear) return false;
-      const bool near_tangent = std::abs(dr - 1) <= tm, near_sphere = ac <= 1 + bm;
-      if (ctx.branch == "behind") return rs.t_proj <= -tpm && (!hard || near_tangent || near_sphere);
-      if (rs.t_proj < tpm) return false;
-      if (ctx.branch == "miss") return !hard || near_tangent;
-      return rs.hit->t >= t_min && (!hard || near_tangent || near_sphere);
-    };
-    // easy: r² − d² the square of a rational
-    auto pythagorean = [&](const Data& x) {
-      if (level != Difficulty::easy || ctx.branch == "behind" || ctx.branch == "miss") return true;
-      const auto run = exact_run(x);
-      const auto* h = run.step("h");
-      return h && h->x.e && h->x.e->is_rational();
-    };
-
-    const Data d = draw_until(200000, "ray_sphere (branch, tangency and boundary margins, t range)",
-                              [&]() -> std::optional<Data> {
-      Data x;
-      x.r = grid_value(rng, r_lo, r_hi, level);
-      x.C = {grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, 0, 3 + w, level)};
-      x.A = {grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -1 - w, 6 + w, level)};
-      if (level == Difficulty::easy) {
-        Vec3 e = kEasyDirections[rng.integer(0, std::size(kEasyDirections) - 1)];
-        double c[3] = {e.x, e.y, e.z};
-        // a random order of the components, then random signs
-        for (int i = 2; i > 0; --i) std::swap(c[i], c[rng.integer(0, i)]);
-        for (double& k : c)
-          if (rng.chance(0.5)) k = -k;
-        x.u = {c[0], c[1], c[2]};
-      } else {
-        const double m = hard ? 3 : 4;
-        x.u = {grid_value(rng, -m, m, level), grid_value(rng, -m, m, level), grid_value(rng, -m, m, level)};
-        if (geo::norm(x.u) < 1) return std::nullopt;
-      }
-      if (!accept(x) || !pythagorean(x)) return std::nullopt;
-      return x;
-    });
-    if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+    Data x;
+    x.r = grid_value(rng, r_lo, r_hi, level);
+    x.C = {grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, -3 - w, 3 + w, level), grid_value(rng, 0, 3 + w, level)};
+    x.A = {grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -6 - w, 6 + w, level), grid_value(rng, -1 - w, 6 + w, level)};
+    if (level == Difficulty::easy) {
+      x.u = space::easy_direction(rng, kEasyDirections);
+    } else {
+      const double m = level == Difficulty::hard ? 3 : 4;
+      x.u = {grid_value(rng, -m, m, level), grid_value(rng, -m, m, level), grid_value(rng, -m, m, level)};
+      if (geo::norm(x.u) < 1) return std::nullopt;
+    }
+    return x;
   }
-
- private:
-  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
-    const auto& T = ctx.texts;
-    const auto& N = ctx.numbers;
-    const auto rs = solve_core(d);
-    const std::string branch = branch_of(rs);
-
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
-    const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
-    auto value = [&](std::string_view id) { return step_value(ctx, key.value(id), key.exact(id)); };
-    auto point = [&](const Names3& ids) { return space::step_point3(ctx, key, ids); };
-
-    const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y, d.A.z)},
-                                {"u", N.point(d.u.x, d.u.y, d.u.z)},
-                                {"C", N.point(d.C.x, d.C.y, d.C.z)},
-                                {"r", N.datum(d.r)}};
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "ray_sphere.title");
-      inst.sheet.add(render::Paragraph{T.format("ray_sphere.statement", data_vars)});
-      inst.sheet.add(render::Figure{question_scene(d, rs, ctx), 0.5});
-      add_fields(inst.sheet, q);
-    }
-
-    inst.key = begin_key_section(ctx, "ray_sphere.title");
-    inst.key.add(render::Paragraph{T.format("ray_sphere.data", data_vars)});
-    auto step = [&](std::string_view id, const TextVars& vars = {}) {
-      inst.key.add(render::Paragraph{T.format(fmt::format("ray_sphere.step.{}", id), vars)});
-    };
-    const std::string r2 = value("r2"), d2 = value("d2");
-    step("AC", {{"AC", N.point(rs.AC.x, rs.AC.y, rs.AC.z)}, {"ac2", value("ac2")}, {"r2", r2}});
-    step(rs.inside ? "inside.yes" : "inside.no");
-    step("unit", {{"norm_u", value("norm_u")}, {"u_hat", point(kUh)}});
-    step("t_proj", {{"t_proj", value("t_proj")}});
-    if (rs.inside) step("ahead.inside");
-    else if (branch == "behind") step("behind");
-    else step("ahead.outside");
-    step("P", {{"P", point(kP)}});
-    step("d2", {{"d2", d2}});
-    if (branch == "miss") {
-      step("miss", {{"d2", d2}, {"r2", r2}});
-    } else if (branch != "behind") {
-      step("pythagoras", {{"d2", d2}, {"r2", r2}, {"h", value("h")}});
-      step(rs.inside ? "t.inside" : "t.outside", {{"t", value("t")}});
-      step("I", {{"I", point(kI)}});
-      step("N", {{"N", point(kN)}});
-    }
-    step("plane");
-    inst.key.add(render::Figure{key_scene(d, rs, branch, ctx), 0.95});
-    add_lines(inst.key, q);
-    return inst;
+  static bool in_area(const geo::RaySphere& rs, const ExerciseContext& ctx) {
+    const double w = 2 * ctx.widening;
+    return !(std::abs(rs.P.x) > 7 + w || std::abs(rs.P.y) > 7 + w || rs.P.z < -3 - w || rs.P.z > 8 + w);
+  }
+  static render::Figure sheet_figure(const Data& d, const geo::RaySphere& rs, const ExerciseContext& ctx) {
+    return {question_scene(d, rs, ctx), 0.5};
+  }
+  static render::Figure key_figure(const Data& d, const geo::RaySphere& rs, const ExerciseContext& ctx) {
+    return {key_scene(d, rs, ball::branch_of(rs), ctx), 0.95};
   }
 
   // The 3D view with the data: the sphere's outline, the ray (dashed where the sphere hides it),
@@ -281,7 +96,7 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     return panel;
   }
 
-  render::Scene question_scene(const Data& d, const geo::RaySphere& rs, const ExerciseContext& ctx) const {
+  static render::Scene question_scene(const Data& d, const geo::RaySphere& rs, const ExerciseContext& ctx) {
     render::Scene s;
     s.title = ctx.texts.get("ray_sphere.title");
     s.description = ctx.texts.get("ray_sphere.figure.question");
@@ -291,8 +106,8 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
     return s;
   }
 
-  render::Scene key_scene(const Data& d, const geo::RaySphere& rs, const std::string& branch,
-                          const ExerciseContext& ctx) const {
+  static render::Scene key_scene(const Data& d, const geo::RaySphere& rs, const std::string& branch,
+                          const ExerciseContext& ctx) {
     using render::P2;
     using render::Role;
     using space::p3;
@@ -366,9 +181,6 @@ class RaySphereKind final : public MethodKind<RaySphereMethod> {
 
 }  // namespace
 
-const ExerciseKind& ray_sphere_kind() {
-  static const RaySphereKind kind;
-  return kind;
-}
+const ExerciseKind& ray_sphere_kind() { return the_kind<ball::BallKind<RaySphere>>(); }
 
 }  // namespace epure::kinds

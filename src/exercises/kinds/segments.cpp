@@ -113,6 +113,15 @@ struct SegmentsMethod {
     m.point("I", P);
   }
 
+  // the solve contract (solve/solve.h)
+  static void contract(const Data& d, bool exact, solve::Result& r) {
+    auto s = exact ? geo::intersect_segments_exact(d.A, d.B, d.C, d.D) : geo::intersect_segments(d.A, d.B, d.C, d.D);
+    r.boolean("intersects", s.intersects());
+    if (!s.intersects()) r.string("reason", geo::to_string(s.relation));
+    if (s.t_ab) r.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
+    if (s.I) r.point("I", *s.I);
+  }
+
   static CoreAnswers core(const Data& d) {
     const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
     CoreAnswers a;
@@ -268,7 +277,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
     const bool crossing = s.t_ab.has_value();
 
     ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
+    KeySolution key = key_solution(d, ctx);
     const Questions& q = key.questions;
     inst.questions = key.questions.take_questions();
     Exact e;

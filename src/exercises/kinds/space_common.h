@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,18 @@ template <class Key>
 std::string step_point3(const ExerciseContext& ctx, const Key& key, const method::Names3& ids) {
   return shown_point3(ctx, {key.value(ids[0]), key.value(ids[1]), key.value(ids[2])}, key.exact(ids[0]),
                       key.exact(ids[1]), key.exact(ids[2]));
+}
+
+// An easy direction in space: one of `directions` (integer length), its components in a random
+// order, then random signs.
+template <std::size_t N>
+geo::Vec3 easy_direction(Rng& rng, const geo::Vec3 (&directions)[N]) {
+  const geo::Vec3 e = directions[rng.integer(0, N - 1)];
+  double c[3] = {e.x, e.y, e.z};
+  for (int i = 2; i > 0; --i) std::swap(c[i], c[rng.integer(0, i)]);
+  for (double& k : c)
+    if (rng.chance(0.5)) k = -k;
+  return {c[0], c[1], c[2]};
 }
 
 // The camera of every 3D view: orthographic, so that a sphere's outline is a circle of its

@@ -10,6 +10,9 @@
 // method's frame change and way back (written once for both, with their named mistakes), the
 // shared worked steps and the shared parts of the diagrams. The kind's name (and the prefix of its
 // texts) is the spec's: nothing here names a kind.
+#include <fmt/format.h>
+
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -53,6 +56,35 @@ inline constexpr method::QuestionDecl kQuestions[] = {
     {"hit", method::AnswerType::boolean}, {"t", method::AnswerType::number}, {"I", method::AnswerType::point},
     {"N", method::AnswerType::point}};
 
+// The frame change's mistakes, then a kind's own: its kMistakes, in the order grading tries them.
+inline constexpr std::string_view kFrameMistakes[] = {
+    "rotation_sign",      "translation_forgotten", "transform_order",   "uc_renormalised", "direction_not_unit",
+    "direction_translated", "not_back_to_world",   "normal_inward",     "normal_not_unit"};
+
+template <std::size_t N = 0>
+constexpr std::array<std::string_view, std::size(kFrameMistakes) + N> frame_mistakes_then(
+    const std::array<std::string_view, N>& own = {}) {
+  std::array<std::string_view, std::size(kFrameMistakes) + N> all{};
+  std::size_t i = 0;
+  for (auto m : kFrameMistakes) all[i++] = m;
+  for (auto m : own) all[i++] = m;
+  return all;
+}
+
+// What both kinds declare alike, for MethodKind (kind_method.h): the data and their schema (the
+// sizes under the kind's kSizes), the questions, the worth.
+template <class Kind>
+struct Family {
+  using Data = transformed::Data;
+  template <class V, class D>
+  static void schema(V& v, D& d) {
+    transformed::schema(v, d, Kind::kSizes);
+  }
+  static constexpr auto& kQuestions = transformed::kQuestions;
+  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  static constexpr double kPoints = 7;
+};
+
 // The core's answer, whichever the canonical figure: what the shared parts need.
 struct Solved {
   geo::Transform2 to_world;
@@ -75,6 +107,14 @@ CoreAnswers core_answers(const Result& r) {
   a.boolean("inside", r.inside).boolean("hit", r.hit.has_value());
   if (r.hit) a.number("t", r.hit->t).point("I", r.hit->I).vec("N", r.hit->N);
   return a;
+}
+
+// The solve contract: inside, hit; then t, I, N (the figure's own intersection, exact or not).
+template <class Figure>
+void solve_contract(const Data& d, const Figure& figure, bool exact, solve::Result& r) {
+  const auto [ray, length] = solve::raw_ray<geo::Ray2>(d.A, d.u);
+  auto e = exact ? geo::intersect_exact(ray, figure) : geo::intersect(ray, figure);
+  r.boolean("inside", e.inside).hit(e.hit, length);
 }
 
 // ---- the method's shared parts ---------------------------------------------------------------
@@ -226,6 +266,75 @@ void add_canonical_hit(render::Panel& panel, const geo::Hit2& hit);
 render::Scene question_scene(const ExerciseContext& ctx, const Data& d, Shape shape, const Solved& s);
 render::Scene key_scene(const ExerciseContext& ctx, const Data& d, Shape shape, const Solved& s,
                         render::Panel canonical);
+
+// ---- the instance ------------------------------------------------------------------------------
+
+// The instance of drawn data, laid out as both kinds lay it: the sheet (the statement with the
+// data, the world frame's figure, the answer fields) and the key (the frame change, the
+// canonical part as the method told it, the way back with a hit, the two frames' figure).
+template <class Kind>
+ExerciseInstance assemble(const Data& d, const ExerciseContext& ctx, Shape shape, const Solved& s,
+                          render::Panel canonical) {
+  using Base = MethodKind<Kind>;
+  const std::string kind(Kind::kName);
+  ExerciseInstance inst = Base::begin_instance(d, ctx);
+  KeySolution key = Base::key_solution(d, ctx);
+  inst.questions = key.questions.take_questions();
+  const TextVars data = data_vars(ctx, d, shape);
+  if (ctx.sheet) {  // not for the explorer's views, which show the key only
+    inst.sheet = begin_sheet_section(ctx, kind + ".title");
+    inst.sheet.add(render::Paragraph{ctx.texts.format(kind + ".statement", data)});
+    inst.sheet.add(render::Figure{question_scene(ctx, d, shape, s), 0.55});
+    add_fields(inst.sheet, key.questions);
+  }
+  inst.key = begin_key_section(ctx, kind + ".title");
+  inst.key.add(render::Paragraph{ctx.texts.format(kind + ".data", data)});
+  frame_steps(inst.key, ctx, d, shape, key);
+  replay_steps(inst.key, ctx, key, Kind::kName);
+  if (s.hit) world_steps(inst.key, ctx, key);
+  inst.key.add(render::Figure{key_scene(ctx, d, shape, s, std::move(canonical)), 0.95});
+  add_lines(inst.key, key.questions);
+  return inst;
+}
+
+// A kind of the two: MethodKind with their branches, constraints, draw loop and layout. The kind
+// adds, as static members: kShape, kWhat (what its constraints hold), figure_of(d) (the core's
+// figure), clear(result, branch, limits) (the branch asked, clear of its boundaries), canonical
+// (result) (the canonical frame's panel), and optionally easy(d, result, ctx) (what the easy
+// level asks more).
+template <class Kind>
+class TransformedKind final : public MethodKind<Kind> {
+ public:
+  std::vector<std::pair<std::string, double>> default_branches() const override {
+    return {{"hit", 2}, {"miss", 1}, {"inside", 1}};
+  }
+  std::map<std::string, double> default_constraints() const override { return common_constraints(); }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}, {"Ac", 1, {}}, {"uc", 1, "Ac"}}; }
+
+  ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
+    const Limits lim = limits(ctx, *this);
+    const Difficulty level = ctx.spec.difficulty;
+    const bool inside = ctx.branch == "inside";
+    const Data d = draw_until(50000, fmt::format("{} ({})", Kind::kName, Kind::kWhat), [&]() -> std::optional<Data> {
+      auto d = draw_data(rng, level, Kind::kShape, inside, lim);
+      if (!d) return std::nullopt;
+      const auto r = geo::intersect(world_ray(*d), Kind::figure_of(*d));
+      if (!Kind::clear(r, ctx.branch, lim)) return std::nullopt;
+      if constexpr (requires { Kind::easy(*d, r, ctx); })
+        if (level == Difficulty::easy && !Kind::easy(*d, r, ctx)) return std::nullopt;
+      if (!well_conditioned<Kind>(*d, ctx.decimals, lim)) return std::nullopt;
+      return d;
+    });
+    if (auto taken = already_taken(ctx, this->write(d))) return *std::move(taken);
+    return build(d, ctx);
+  }
+
+ private:
+  ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
+    const auto r = geo::intersect(world_ray(d), Kind::figure_of(d));
+    return transformed::assemble<Kind>(d, ctx, Kind::kShape, solved_of(r), Kind::canonical(r));
+  }
+};
 
 // ---- for the tests ------------------------------------------------------------------------------
 

@@ -14,6 +14,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "support/agrees.h"
 #include "exercises/kind_method.h"
 #include "geometry/vectors.h"
 
@@ -63,8 +64,6 @@ std::optional<Vec2> perpendicular_on_grid(Vec2 u, int per_unit, double max_compo
   return Vec2{static_cast<double>(k * wx) / per_unit, static_cast<double>(k * wy) / per_unit};
 }
 
-bool is_whole(double x) { return std::abs(x - std::nearbyint(x)) <= 1e-9 * std::max(1.0, std::abs(x)); }
-
 // A factor of a product as the key writes it: negative numbers in parentheses.
 std::string factor(const NumberStyle& n, double x) {
   return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x);
@@ -109,6 +108,13 @@ struct VectorsMethod {
     const auto theta = method::atan2_degrees(s, c);
     const auto radians = theta * m.in(std::numbers::pi / 180);
     m.number("angle_deg", m.mistake("angle_radians", m.mistake("angle_unsigned", theta, method::magnitude(theta)), radians));
+  }
+
+  // the solve contract (solve/solve.h)
+  static void contract(const Data& d, bool, solve::Result& r) {
+    auto v = geo::compare_vectors(d.u, d.v);
+    r.number("dot", v.dot).number("cross", v.cross).number("norm_u", v.norm_u).number("norm_v", v.norm_v);
+    r.number("cos", v.cos).number("sin", v.sin).number("angle_deg", v.angle_deg);
   }
 
   static CoreAnswers core(const Data& d) {
@@ -195,7 +201,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
     const auto r = geo::compare_vectors(d.u, d.v);
 
     ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
+    KeySolution key = key_solution(d, ctx);
     const Questions& q = key.questions;
     inst.questions = key.questions.take_questions();
 

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "support/agrees.h"
 #include "exercises/kind_method.h"
 #include "exercises/kinds/space_common.h"
 #include "geometry/vectors.h"
@@ -30,8 +31,6 @@ constexpr method::Names3 kCross = {"cross.x", "cross.y", "cross.z"};
 
 // A factor of a product as the key writes it: negative numbers in parentheses.
 std::string factor(const NumberStyle& n, double x) { return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x); }
-
-bool is_whole(double x) { return std::abs(x - std::nearbyint(x)) <= 1e-9 * std::max(1.0, std::abs(x)); }
 
 struct Vectors3dMethod {
   using Data = kinds::Data;
@@ -80,6 +79,14 @@ struct Vectors3dMethod {
     const auto eps = m.in(geo::kCollinearSin);
     m.boolean("collinear", less_equal(s, eps));
     m.boolean("orthogonal", less_equal(method::magnitude(c), eps));
+  }
+
+  // the solve contract (solve/solve.h): `vectors` with three components
+  static void contract(const Data& d, bool, solve::Result& r) {
+    auto w = geo::compare_vectors_3d(d.u, d.v);
+    r.number("dot", w.dot).point("cross", w.cross).number("norm_u", w.norm_u).number("norm_v", w.norm_v);
+    r.number("cos", w.cos).number("sin", w.sin).number("angle_deg", w.angle_deg);
+    r.boolean("collinear", w.collinear).boolean("orthogonal", w.orthogonal);
   }
 
   static CoreAnswers core(const Data& d) {
@@ -171,7 +178,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     const std::string branch = branch_of(r);
 
     ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = solve(d, ctx);
+    KeySolution key = key_solution(d, ctx);
     const Questions& q = key.questions;
     inst.questions = key.questions.take_questions();
 

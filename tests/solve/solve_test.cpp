@@ -1,0 +1,87 @@
+// The solve contract's dispatch and line reader: the contract's kinds are the registry's (one list
+// of kinds), each read by its schema (a missing field named in the schema's order, whatever the
+// compiler's order of evaluation), the preamble in space found by its dimension, and a line read
+// to the same fields flat or through nlohmann::json.
+#include <doctest/doctest.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "exercises/exercise.h"
+#include "solve/line_reader.h"
+#include "solve/solve.h"
+
+namespace {
+
+using namespace epure;
+
+std::string solved(std::string_view line) {
+  fmt::memory_buffer out;
+  solve::solve_line(line, out, solve::Semantics::exact);
+  return std::string(out.data(), out.size());
+}
+
+}  // namespace
+
+TEST_CASE("solve: the contract's kinds are the registry's, in its order") {
+  const std::vector<std::string_view> expected = {"vectors",    "projection",    "segments",
+                                                  "ray_circle", "ray_square",    "ray_ellipse",
+                                                  "ray_rectangle", "ray_sphere", "ray_cube"};
+  CHECK(solve::contract_kinds() == expected);
+  for (const ExerciseKind* kind : all_kinds()) {
+    CAPTURE(kind->name());
+    bool listed = false;
+    for (auto name : solve::contract_kinds()) listed = listed || name == kind->contract_kind();
+    CHECK(listed);
+  }
+  CHECK(solved(R"({"kind":"ray_torus"})") == R"({"error":"field 'kind': unknown kind 'ray_torus'"})");
+}
+
+TEST_CASE("solve: vectors in the plane and in space, by the dimension of u") {
+  CHECK(solved(R"({"kind":"vectors","u":[1,0],"v":[0,1]})").find("\"angle_deg\":90") != std::string::npos);
+  const std::string space = solved(R"({"kind":"vectors","u":[1,0,0],"v":[0,1,0]})");
+  CHECK(space.find("\"cross\":[0,0,1]") != std::string::npos);
+  CHECK(space.find("\"orthogonal\":true") != std::string::npos);
+  // u decides: in space, v must be too
+  CHECK(solved(R"({"kind":"vectors","u":[1,2,3],"v":[1,2]})") ==
+        R"({"error":"field 'v': expected 3 numbers, got 2"})");
+  CHECK(solved(R"({"kind":"vectors","v":[1,2,3]})") == R"({"error":"field 'u': missing"})");
+}
+
+TEST_CASE("solve: fields are read in the schema's order, the first one off is named") {
+  CHECK(solved(R"({"kind":"projection","B":[1,0]})") == R"({"error":"field 'A': missing"})");
+  CHECK(solved(R"({"kind":"projection","A":[0,0]})") == R"({"error":"field 'B': missing"})");
+  CHECK(solved(R"({"kind":"segments","A":[0,0],"B":[1,1]})") == R"({"error":"field 'C': missing"})");
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[1,0],"C":[3,0],"r":"x"})") ==
+        R"({"error":"field 'r': expected a number, got a string"})");
+  CHECK(solved(R"({"kind":"ray_ellipse","A":[0,0],"u":[1,0],"C":[3,0],"radii":[1,2,3],"angle":0})") ==
+        R"({"error":"field 'radii': expected 2 numbers, got 3"})");
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[0,0],"C":[3,0],"r":1})").rfind(R"({"error":"field 'u': )", 0) == 0);
+}
+
+TEST_CASE("solve: a line reads to the same fields flat and through nlohmann::json") {
+  for (const char* line : {R"({"kind":"ray_circle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})",
+                           R"({"kind":"ray_cube","A":[3,0.5,0.25],"u":[-1,-1e-3,0]})"}) {
+    CAPTURE(line);
+    const solve::LineReader flat(line);
+    const nlohmann::json j = nlohmann::json::parse(line);
+    const auto parsed = solve::fields_of(j);
+    REQUIRE(flat.fields().size() == parsed.size());
+    for (const auto& f : parsed) {
+      const solve::Value* v = solve::find(flat.fields(), f.key);
+      REQUIRE(v);
+      CHECK(v->type == f.value.type);
+      CHECK(v->number == f.value.number);
+      CHECK(v->size == f.value.size);
+      CHECK(v->items == f.value.items);
+    }
+  }
+  // not flat (an escape): read by nlohmann, the same result
+  CHECK(solved(R"({"kind":"ray_c\u0069rcle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})") ==
+        solved(R"({"kind":"ray_circle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})"));
+  CHECK(solved("[1,2]") == R"({"error":"line: expected a JSON object"})");
+  CHECK(solved("{").rfind(R"({"error":"line: not valid JSON)", 0) == 0);
+}
