@@ -41,6 +41,9 @@ json solution_value(const json& solution, const std::string& field) {
   return solution.at(field.substr(0, dot)).at(field[dot + 1] - 'x');
 }
 
+// The same number, a NaN as a NaN (a mistake's road can leave the real numbers: √ of a negative).
+bool same(double a, double b) { return std::isnan(a) ? std::isnan(b) : a == doctest::Approx(b).epsilon(1e-12); }
+
 std::vector<std::string> texts_of(const render::Section& s) {
   std::vector<std::string> out;
   for (const auto& block : s.blocks) {
@@ -123,7 +126,8 @@ TEST_CASE("ray_sphere and ray_cube: French texts are complete, with a decimal co
       CHECK(fr.instance == en.instance);  // the language never changes the draw
       check_instance(fr, kind, "hit");
       bool comma = false;
-      for (const auto& t : texts_of(fr.key)) comma = comma || t.find(" ; ") != std::string::npos;
+      // the French points "(1 ; 2 ; 3)", the decimal comma "0,5"
+      for (const auto& t : texts_of(fr.key)) comma = comma || t.find("\u00a0;") != std::string::npos;
       CHECK(comma);
     }
 }
@@ -168,11 +172,11 @@ TEST_CASE("the ball's method in space: a sphere whose figure lies in z = 0 is th
           CAPTURE(field);
           if (values.size() == 1) {
             REQUIRE(b.count(field));
-            CHECK(b.at(field)[0] == doctest::Approx(values[0]).epsilon(1e-12));
+            CHECK(same(b.at(field)[0], values[0]));
           } else {
-            CHECK(b.at(field + ".x")[0] == doctest::Approx(values[0]).epsilon(1e-12));
-            CHECK(b.at(field + ".y")[0] == doctest::Approx(values[1]).epsilon(1e-12));
-            CHECK(b.at(field + ".z")[0] == 0);
+            CHECK(same(b.at(field + ".x")[0], values[0]));
+            CHECK(same(b.at(field + ".y")[0], values[1]));
+            CHECK((std::isnan(values[0]) || b.at(field + ".z")[0] == 0));
           }
         }
       }
@@ -206,11 +210,11 @@ TEST_CASE("the box's method in space: a cube met in the plane z = 0 is the squar
         for (const auto& [field, values] : a) {
           CAPTURE(field);
           if (values.size() == 1) {
-            CHECK(b.at(field)[0] == doctest::Approx(values[0]).epsilon(1e-12));
+            CHECK(same(b.at(field)[0], values[0]));
           } else {
-            CHECK(b.at(field + ".x")[0] == doctest::Approx(values[0]).epsilon(1e-12));
-            CHECK(b.at(field + ".y")[0] == doctest::Approx(values[1]).epsilon(1e-12));
-            CHECK(b.at(field + ".z")[0] == 0);
+            CHECK(same(b.at(field + ".x")[0], values[0]));
+            CHECK(same(b.at(field + ".y")[0], values[1]));
+            CHECK((std::isnan(values[0]) || b.at(field + ".z")[0] == 0));
           }
         }
       }

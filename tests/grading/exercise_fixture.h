@@ -42,7 +42,7 @@ inline grading::ExerciseKey exercise(const std::string& instance, std::vector<st
     else q["tolerance"] = {{"rule", "exact"}, {"why", "test"}};
     // a point in the plane is marked as a point (a point in space: three numbers, as its keys)
     if (f.size() > 2 && (f.substr(f.size() - 2) == ".x" || f.substr(f.size() - 2) == ".y") &&
-        sol.at(f.substr(0, f.size() - 2)).size() == 2)
+        !(sol.contains(f.substr(0, f.size() - 2)) && sol.at(f.substr(0, f.size() - 2)).size() == 3))
       q["point"] = "1." + f.substr(0, f.size() - 2);
     questions.push_back(q);
   }
