@@ -4,8 +4,8 @@
 // P), the early rejections in the course's order (behind: A outside and t_proj < 0; miss:
 // d² > r²), then Pythagoras in the triangle C–P–I (PI = √(r² − d²)), I, and the normal
 // N = (I − C)/r. Unlike the course's code, a ray that starts inside the ball hits it, on its way
-// out. A kind of this family (ray_circle.cpp, ray_sphere.cpp) is its name, its points, its draw
-// and its scenes; the schema, the questions, the method with its mistakes and roads, the key's
+// out. A kind of this family (the circle's file, the sphere's) is its name, its draw and its
+// scenes; the schema, the questions, the method with its mistakes and roads, the key's
 // worked steps, the solve contract and the draw's clearances are the family's.
 #include <cmath>
 #include <map>

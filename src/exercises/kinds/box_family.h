@@ -8,9 +8,9 @@
 // From inside, the ray leaves through the face it reaches first among those it heads to
 // (û·n > 0). N is the normal of the face I lies on.
 //
-// A kind of this family (ray_square.cpp, ray_cube.cpp) is its name, its draw and its scenes;
+// A kind of this family (the square's file, the cube's) is its name, its draw and its scenes;
 // the schema, the questions, the method with its mistakes, the key's worked steps, the solve
-// contract and the draw's clearances are the family's. The rectangle (ray_rectangle.cpp) runs
+// contract and the draw's clearances are the family's. The rectangle's file runs
 // the face-by-face search (search_faces) and the normal of the face hit (face_normal) in its
 // canonical frame.
 #include <fmt/format.h>
