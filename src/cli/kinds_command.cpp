@@ -1,6 +1,7 @@
 // `epure kinds`: the exercise kinds the program knows, read from the kinds themselves (their
-// branches and default weights, questions, named mistakes, constraints), so that scripts and
-// tests take them from one place instead of a hand-kept table.
+// solve contract's kind and data fields with their roles, branches and default weights,
+// questions, named mistakes, constraints), so that scripts and tests take them from one place
+// instead of a hand-kept table.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -24,9 +25,30 @@ std::string_view type_name(method::AnswerType t) {
   return "number";
 }
 
+std::string_view role_name(FieldRole r) {
+  switch (r) {
+    case FieldRole::point: return "point";
+    case FieldRole::direction: return "direction";
+    case FieldRole::radius: return "radius";
+    case FieldRole::axes: return "axes";
+    case FieldRole::number: return "number";
+  }
+  return "number";
+}
+
 nlohmann::ordered_json describe(const ExerciseKind& kind) {
   nlohmann::ordered_json k;
   k["name"] = kind.name();
+  // the solve input's kind and fields, in the schema's order: a point or vector's components
+  // (2 or 3), 1 for a number; what the datum is (data_field.h), and what it hangs on
+  k["solve_kind"] = kind.contract_kind();
+  auto& data = k["data"] = nlohmann::ordered_json::array();
+  for (const DataField& f : kind.data_fields()) {
+    nlohmann::ordered_json j = {{"field", f.name}, {"dim", f.dim}, {"role", role_name(f.role.role)}};
+    if (!f.role.from.empty()) j["from"] = f.role.from;
+    if (!f.role.angle.empty()) j["angle"] = f.role.angle;
+    data.push_back(j);
+  }
   auto& branches = k["branches"] = nlohmann::ordered_json::object();
   for (const auto& [name, weight] : kind.default_branches()) branches[name] = weight;
   auto& questions = k["questions"] = nlohmann::ordered_json::array();

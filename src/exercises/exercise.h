@@ -19,6 +19,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "exercises/data_field.h"
 #include "exercises/method.h"
 #include "exercises/numbers.h"
 #include "exercises/rng.h"
@@ -151,6 +152,9 @@ class ExerciseKind {
   // The instance read from a solve input (key.json's "instance"); throws std::runtime_error
   // naming the field.
   virtual std::any read_instance(const nlohmann::json& instance) const = 0;
+  // The instance's data fields in the schema's order, each with its role (data_field.h): what
+  // the explorer's handles hold and how a drag moves them.
+  virtual std::vector<DataField> data_fields() const = 0;
   // The key of an instance given from outside (a solve input: key.json's "instance", the
   // explorer's dragged figure), in the branch its data falls in: statement, worked steps,
   // construction diagram and answers, as a sheet's key shows them. Throws std::runtime_error

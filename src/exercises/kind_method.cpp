@@ -151,10 +151,9 @@ std::string shown_value(const ExerciseContext& ctx, const KeySolution& key, cons
     case Shown::faces: {
       const auto* r = key.run.step(s.id);
       std::string list;
-      for (const std::string_view name : {"+x", "+y", "+z", "-x", "-y", "-z"}) {
-        const int bit = (name[1] - 'x') + (name[0] == '+' ? 0 : 3);
-        if (r && (r->faces & (1u << bit))) list += fmt::format("{}{}", list.empty() ? "" : ", ", face_label(name));
-      }
+      for (int bit = 0; bit < 6; ++bit)
+        if (r && (r->faces & (1u << bit)))
+          list += fmt::format("{}{}", list.empty() ? "" : ", ", face_label(geo::kFaceNames[static_cast<std::size_t>(bit)]));
       return list;
     }
     case Shown::point:

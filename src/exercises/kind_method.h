@@ -3,7 +3,9 @@
 //
 //   struct Data { … };                                   // the instance
 //   static constexpr std::string_view kName = "…";
-//   template <class V, class D> static void schema(V& v, D& d) { v("A", d.A); … }
+//   template <class V, class D> static void schema(V& v, D& d) {  // the data, each with its role
+//     v("A", d.A); v("u", d.u, role::from("A")); …                // (data_field.h) where the type
+//   }                                                              // does not say it all
 //   static constexpr method::QuestionDecl kQuestions[] = {…};   // the sheet's questions, in order
 //   static constexpr std::string_view kMistakes[] = {…};        // codes its method declares
 //   static constexpr double kPoints = 7;                         // what the exercise is worth
@@ -26,6 +28,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "exercises/data_field.h"
 #include "exercises/kind_support.h"
 #include "exercises/method.h"
 #include "solve/fields.h"
@@ -36,6 +39,34 @@ namespace epure::kinds {
 // A pair of numbers that is not a point: an ellipse's radii [a, b], a rectangle's half sizes.
 struct Pair {
   double a = 0, b = 0;
+};
+
+// The schema read for its values: a visitor below sees (field, value), the field's role aside
+// (only FieldList reads roles).
+template <class V>
+struct ValuesOnly {
+  V& visitor;
+  template <class T>
+  void operator()(std::string_view field, T&& value, Role = {}) {
+    visitor(field, std::forward<T>(value));
+  }
+};
+
+// The schema's visitor that lists the data fields with their roles (ExerciseKind::data_fields).
+// A field whose role the schema does not state is what its type says: a point is a point, a
+// vector a direction from the origin, a number or a pair of numbers a datum without a handle.
+struct FieldList {
+  std::vector<DataField> fields;
+  template <class T>
+  void operator()(std::string_view name, const T&, Role role = {}) {
+    constexpr bool point = std::is_same_v<T, geo::Point2> || std::is_same_v<T, geo::Point3>;
+    constexpr bool vector = std::is_same_v<T, geo::Vec2> || std::is_same_v<T, geo::Vec3>;
+    constexpr int dim = std::is_same_v<T, geo::Point3> || std::is_same_v<T, geo::Vec3> ? 3
+                        : std::is_same_v<T, double>                                    ? 1
+                                                                                       : 2;
+    if (!role.given) role.role = point ? FieldRole::point : vector ? FieldRole::direction : FieldRole::number;
+    fields.push_back({name, dim, role});
+  }
 };
 
 // The schema's visitor that writes an instance as a solve input.
@@ -192,12 +223,26 @@ class MethodKind : public ExerciseKind {
 
   std::any read_instance(const nlohmann::json& instance) const override { return read(instance); }
 
+  std::vector<DataField> data_fields() const override {
+    FieldList list;
+    const Data d{};
+    Kind::schema(list, d);
+    return std::move(list.fields);
+  }
+
+  // The schema read for its values by one of the visitors above.
+  template <class V, class D>
+  static void visit_schema(V& visitor, D& d) {
+    ValuesOnly<V> values{visitor};
+    Kind::schema(values, d);
+  }
+
   // The solve contract: the figure read by the schema, solved and written by the kind's
   // `contract(const Data&, bool exact, solve::Result&)`.
   bool solves(const solve::Fields& figure) const override {
     FirstPoint first;
     const Data d{};
-    Kind::schema(first, d);
+    visit_schema(first, d);
     if (!first.dim) return true;
     const solve::Value* v = figure.find(first.field);
     const bool in_space = v && v->type == solve::Type::array && v->size == 3;
@@ -206,7 +251,7 @@ class MethodKind : public ExerciseKind {
   void solve_figure(const solve::Fields& figure, solve::Result& result) const override {
     Data d{};
     FigureReader reader(figure);
-    Kind::schema(reader, d);
+    visit_schema(reader, d);
     Kind::contract(d, figure.exact(), result);
   }
 
@@ -234,13 +279,13 @@ class MethodKind : public ExerciseKind {
   }
   static std::string write(const Data& d) {
     SchemaWriter w(solve_kind());
-    Kind::schema(w, d);
+    visit_schema(w, d);
     return w.finish();
   }
   static Data read(const nlohmann::json& instance) {
     Data d{};
     SchemaReader r(instance);
-    Kind::schema(r, d);
+    visit_schema(r, d);
     return d;
   }
 
@@ -280,7 +325,7 @@ class MethodKind : public ExerciseKind {
     KeySolution key = key_solution(d, ctx);
     inst.questions = key.questions.take_questions();
     DataVars vars(ctx.numbers);
-    Kind::schema(vars, d);
+    visit_schema(vars, d);
     const TextVars data = vars.take();
     const std::string kind(Kind::kName);
     if (ctx.sheet) {  // not for the explorer's views, which show the key only

@@ -8,7 +8,10 @@
 // A view is a kind's answer key for the current data: the key's construction diagram (the
 // kind's own key scene, drawn by the SVG backend of the sheets) with a draggable handle per
 // datum, and the key's worked steps in the chosen language. Any kind registered with a key
-// (ExerciseKind::key_of) has a view; its handles follow from its solve fields (handles below).
+// (ExerciseKind::key_of) has a view; its handles follow from its schema's data fields and their
+// roles (ExerciseKind::data_fields; explore/handles.h places them, explore/drag.h moves them).
+// This file is the page's API; the parts: handles.h, drag.h, frame.h (the figure's map),
+// key_html.h (the key's steps as HTML).
 #include <optional>
 #include <string>
 #include <string_view>

@@ -38,17 +38,17 @@ endforeach()
 file(GLOB wasm_sources CONFIGURE_DEPENDS
   ${CMAKE_CURRENT_SOURCE_DIR}/geometry/*.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/exercises/*.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/exercises/kinds/*.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/exercises/kinds/*.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/solve/*.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/explore/*.cpp)
 list(APPEND wasm_sources
-  ${CMAKE_CURRENT_SOURCE_DIR}/solve/solve.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/font_metrics.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/text.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/svg_writer.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/render/markup_escape.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/label_placer.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/scene_painter.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/svg_scene.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/explore/explorer.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/explore/explore_wasm.cpp
   ${CMAKE_CURRENT_BINARY_DIR}/embedded_templates.cpp)
 list(SORT wasm_sources)
 

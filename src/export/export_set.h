@@ -126,8 +126,7 @@ ExportSet read_set(const std::filesystem::path& dir, const std::string& language
 // RichText (the templates' label markup: t_{ab}, r^{2}, \vec{AB}) as HTML: text escaped,
 // <sub>/<sup> for scripts, a combining arrow over a vector's name.
 std::string html_of(std::string_view rich);
-// & < > " escaped for XML text and attributes.
-std::string xml_escape(std::string_view text);
+// (text escaped for XML and HTML: render/markup_escape.h)
 // The shortest decimal that reads back as x, with a '.' mark, no '+', no exponent when the
 // plain form is as short ("0.26229508196721313", "-18", "1e-07").
 std::string shortest(double x);

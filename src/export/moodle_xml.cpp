@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/markup_escape.h"
+
 namespace epure::exporting {
 
 namespace {
@@ -218,7 +220,7 @@ std::string moodle_xml(const ExportSet& set) {
     const std::string category = fmt::format("$course$/top/{}/{}. {}", category_segment(set.title), slot.n,
                                              category_segment(slot.title));
     out += "  <question type=\"category\">\n";
-    out += fmt::format("    <category><text>{}</text></category>\n", xml_escape(category));
+    out += fmt::format("    <category><text>{}</text></category>\n", render::markup_escaped(category));
     out += "    <info format=\"html\"><text></text></info>\n";
     out += "  </question>\n";
     for (const auto& v : slot.variants) {
@@ -229,7 +231,7 @@ std::string moodle_xml(const ExportSet& set) {
           case Block::Kind::image: {
             const Image& im = v.images[static_cast<std::size_t>(b.image)];
             html += fmt::format("<p><img src=\"@@PLUGINFILE@@/{}\" alt=\"{}\" width=\"{}\"/></p>\n", im.name,
-                                xml_escape(im.alt), im.width_px);
+                                render::markup_escaped(im.alt), im.width_px);
             break;
           }
           case Block::Kind::field: {
@@ -251,11 +253,11 @@ std::string moodle_xml(const ExportSet& set) {
         }
       }
       out += "  <question type=\"multianswer\">\n";
-      out += fmt::format("    <name><text>{}</text></name>\n", xml_escape(v.name));
+      out += fmt::format("    <name><text>{}</text></name>\n", render::markup_escaped(v.name));
       out += "    <questiontext format=\"html\">\n";
       out += "      <text>" + cdata(html) + "</text>\n";
       for (const auto& im : v.images)
-        out += fmt::format("      <file name=\"{}\" path=\"/\" encoding=\"base64\">{}</file>\n", xml_escape(im.name),
+        out += fmt::format("      <file name=\"{}\" path=\"/\" encoding=\"base64\">{}</file>\n", render::markup_escaped(im.name),
                            base64(im.bytes));
       out += "    </questiontext>\n";
       out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "render/markup_escape.h"
+
 namespace epure::exporting {
 
 namespace {
@@ -112,7 +114,7 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   x += fmt::format("<assessmentItem {} identifier=\"{}\" title=\"{}\" adaptive=\"false\" timeDependent=\"false\" "
                    "xml:lang=\"{}\">\n",
-                   kQtiNamespace, item_id(v, slot.n), xml_escape(v.name), set.language);
+                   kQtiNamespace, item_id(v, slot.n), render::markup_escaped(v.name), set.language);
   // responses
   for (std::size_t i = 0; i < v.parts.size(); ++i) {
     const Part& p = v.parts[i];
@@ -162,7 +164,7 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
       case Block::Kind::text: x += "    <p>" + b.html + "</p>\n"; break;
       case Block::Kind::image: {
         const Image& im = v.images[static_cast<std::size_t>(b.image)];
-        x += fmt::format("    <p><img src=\"../images/{}\" alt=\"{}\" width=\"{}\"/></p>\n", im.name, xml_escape(im.alt),
+        x += fmt::format("    <p><img src=\"../images/{}\" alt=\"{}\" width=\"{}\"/></p>\n", im.name, render::markup_escaped(im.alt),
                          im.width_px);
         break;
       }
@@ -267,13 +269,13 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
 
 std::string test_xml(const ExportSet& set) {
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<assessmentTest {} identifier=\"test\" title=\"{}\">\n", kQtiNamespace, xml_escape(set.title));
+  x += fmt::format("<assessmentTest {} identifier=\"test\" title=\"{}\">\n", kQtiNamespace, render::markup_escaped(set.title));
   x += "  <outcomeDeclaration identifier=\"SCORE\" cardinality=\"single\" baseType=\"float\">"
        "<defaultValue><value>0</value></defaultValue></outcomeDeclaration>\n";
   x += "  <testPart identifier=\"part\" navigationMode=\"nonlinear\" submissionMode=\"simultaneous\">\n";
   for (const auto& slot : set.exercises) {
     x += fmt::format("    <assessmentSection identifier=\"exercise-{}\" title=\"{}\" visible=\"true\">\n", slot.n,
-                     xml_escape(fmt::format("{}. {}", slot.n, slot.title)));
+                     render::markup_escaped(fmt::format("{}. {}", slot.n, slot.title)));
     x += "      <selection select=\"1\"/>\n";
     for (const auto& v : slot.variants)
       x += fmt::format("      <assessmentItemRef identifier=\"{}\" href=\"{}\"/>\n", item_id(v, slot.n),

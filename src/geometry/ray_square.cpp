@@ -5,12 +5,6 @@
 
 namespace epure::geo {
 
-std::string_view face_name(Face f) {
-  static constexpr std::array<std::string_view, 3> plus{"+x", "+y", "+z"};
-  static constexpr std::array<std::string_view, 3> minus{"-x", "-y", "-z"};
-  return f.sign > 0 ? plus[f.axis] : minus[f.axis];
-}
-
 namespace {
 
 RaySquare square_result(const detail::BoxResult<2>& box) {

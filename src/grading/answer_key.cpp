@@ -117,7 +117,7 @@ QuestionKey read_question(const json& q, int n, Where where) {
     k.type = AnswerType::boolean;
     k.boolean = e.get<bool>();
   } else if (e.is_string()) {
-    k.type = AnswerType::word;
+    k.type = AnswerType::choice;
     k.word = e.get<std::string>();
   } else if (e.is_array()) {
     k.type = AnswerType::faces;
@@ -273,7 +273,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
       h.points = q.points;
       h.rel = q.rule.rel;
       h.abs = q.rule.abs;
-      if (q.type == AnswerType::word) {
+      if (q.type == AnswerType::choice) {
         const auto token = read_word(q.word);
         h.word = token && *token == q.word ? token->data() : nullptr;  // null: no answer reads as it
       }

@@ -17,6 +17,7 @@
 
 #include "exercises/exercise.h"
 #include "exercises/sheet_id.h"
+#include "exercises/method.h"
 #include "exercises/spec.h"
 #include "grading/faces.h"
 
@@ -24,8 +25,10 @@ namespace epure::grading {
 
 class KindGrader;
 
-// What a question expects, read from the type of its `expected` value.
-enum class AnswerType { number, boolean, word, faces };
+// What a question expects, read from the type of its `expected` value: the method's answer types
+// (exercises/method.h), of which a key's question is never a point (a point is asked as its
+// coordinates, each a number; `point` is read as a number where a switch must name it).
+using AnswerType = method::AnswerType;
 
 // What marking reads for every answer comes first, in one cache line: a large key is read
 // sheet after sheet, each row of answers touching another sheet's questions.

@@ -169,6 +169,7 @@ void read_answer(std::string_view cell, AnswerType type, Given& g) {
     g.why = why;
   };
   switch (type) {
+    case AnswerType::point:  // never a key's question: read as the number it would be
     case AnswerType::number: {
       const ParsedNumber p = parse_number(s);
       if (!p.ok) return unreadable(p.why);
@@ -186,7 +187,7 @@ void read_answer(std::string_view cell, AnswerType type, Given& g) {
       g.boolean = b == 1;
       break;
     }
-    case AnswerType::word: {
+    case AnswerType::choice: {
       const auto w = read_word(s);
       static constexpr std::string_view kChoices[] = {"before",  "between",  "after",     "intersects", "outside",
                                                       "parallel", "collinear", "behind", "miss"};

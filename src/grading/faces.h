@@ -1,9 +1,12 @@
 #pragma once
 // Sets of face names ("+x", "-y", …) as bits, so that a set compares in any order with one
-// integer comparison: +x +y +z -x -y -z are bits 0 … 5 (the contract's listing order).
+// integer comparison: +x +y +z -x -y -z are bits 0 … 5 (the contract's listing order, and the
+// names: geometry/box_faces.h).
 #include <cstdint>
 #include <string>
 #include <string_view>
+
+#include "geometry/box_faces.h"
 
 namespace epure::grading {
 
@@ -11,10 +14,8 @@ using FaceBits = std::uint8_t;
 
 // The bit of a face name, 0 for a name that is not one.
 inline FaceBits face_bit(std::string_view name) {
-  if (name.size() != 2 || (name[0] != '+' && name[0] != '-')) return 0;
-  const int axis = name[1] == 'x' ? 0 : name[1] == 'y' ? 1 : name[1] == 'z' ? 2 : -1;
-  if (axis < 0) return 0;
-  return FaceBits(1u << (axis + (name[0] == '+' ? 0 : 3)));
+  const auto face = geo::face_named(name);
+  return face ? FaceBits(1u << geo::face_index(*face)) : FaceBits(0);
 }
 
 // Every face swapped for its opposite: +x ↔ −x.
@@ -22,12 +23,11 @@ inline FaceBits opposite_faces(FaceBits f) { return FaceBits(((f & 7u) << 3) | (
 
 // "+x, -y" in the contract's order; `none` for the empty set.
 inline std::string face_list(FaceBits f, std::string_view none, std::string_view separator = ", ") {
-  static constexpr const char* kNames[] = {"+x", "+y", "+z", "-x", "-y", "-z"};
   std::string out;
   for (int i = 0; i < 6; ++i)
     if (f & (1u << i)) {
       if (!out.empty()) out += separator;
-      out += kNames[i];
+      out += geo::kFaceNames[static_cast<std::size_t>(i)];
     }
   return out.empty() ? std::string(none) : out;
 }

@@ -130,6 +130,7 @@ std::string FeedbackText::points(double x) const {
 
 std::string FeedbackText::expected(const QuestionKey& q) const {
   switch (q.type) {
+    case AnswerType::point:  // never a key's question: read as the number it would be
     case AnswerType::number: {
       std::string s = numbers_.rounded(q.number, decimals_);
       // an exact form when it is short enough to help ("16/61", "5 − √11"), not "25√1066/1066"
@@ -138,7 +139,7 @@ std::string FeedbackText::expected(const QuestionKey& q) const {
       return s;
     }
     case AnswerType::boolean: return texts_.get(q.boolean ? "common.yes" : "common.no");
-    case AnswerType::word: {
+    case AnswerType::choice: {
       const std::string key = "choice." + q.word;
       return texts_.has(key) ? texts_.get(key) : q.word;
     }
@@ -150,9 +151,10 @@ std::string FeedbackText::expected(const QuestionKey& q) const {
 std::string FeedbackText::given_shown(const QuestionKey& q, const QuestionMark& m) const {
   if (!m.given.readable()) return given(m);
   switch (q.type) {
+    case AnswerType::point:  // never a key's question: read as the number it would be
     case AnswerType::number: return given(m);
     case AnswerType::boolean: return texts_.get(m.given.boolean ? "common.yes" : "common.no");
-    case AnswerType::word: {
+    case AnswerType::choice: {
       const std::string key = fmt::format("choice.{}", m.given.word);
       return texts_.has(key) ? texts_.get(key) : given(m);
     }

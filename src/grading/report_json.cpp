@@ -18,12 +18,13 @@ std::string utf8(std::string_view s) { return valid_utf8(s) ? std::string(s) : c
 
 void expected_value(JsonWriter& w, const QuestionKey& q) {
   switch (q.type) {
+    case AnswerType::point:  // never a key's question: read as the number it would be
     case AnswerType::number: w.number(q.number); break;
     case AnswerType::boolean: w.boolean(q.boolean); break;
-    case AnswerType::word: w.string(q.word); break;
+    case AnswerType::choice: w.string(q.word); break;
     case AnswerType::faces: {
       w.begin_array();
-      for (const char* name : {"+x", "+y", "+z", "-x", "-y", "-z"})
+      for (const std::string_view name : geo::kFaceNames)
         if (q.faces & face_bit(name)) w.string(name);
       w.end_array();
       break;

@@ -122,7 +122,7 @@ std::optional<FaceBits> ExerciseReview::faces(std::string_view field) const {
 }
 
 std::optional<std::string_view> ExerciseReview::word(std::string_view field) const {
-  const auto* m = readable_at(key_.find(field), AnswerType::word);
+  const auto* m = readable_at(key_.find(field), AnswerType::choice);
   if (!m) return std::nullopt;
   return m->given.word;
 }
@@ -238,7 +238,7 @@ bool ExerciseReview::follow_word(std::string_view field, std::string_view w, std
                                  std::string_view code) {
   const int i = key_.find(field);
   if (!open_at(i)) return false;
-  const auto* m = readable_at(i, AnswerType::word);
+  const auto* m = readable_at(i, AnswerType::choice);
   if (!m || m->given.word != w || !some_wrong(from)) return false;
   credit(i, from, code, NAN);
   return true;
@@ -300,7 +300,7 @@ bool ExerciseReview::mistake_faces(std::string_view field, FaceBits value, std::
 bool ExerciseReview::mistake_word(std::string_view field, std::string_view w, std::string_view code) {
   const int i = key_.find(field);
   if (!open_at(i)) return false;
-  const auto* m = readable_at(i, AnswerType::word);
+  const auto* m = readable_at(i, AnswerType::choice);
   if (!m || m->given.word != w) return false;
   marks_[i].mistake = code;
   return true;

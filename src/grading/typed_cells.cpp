@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "grading/answer_reading.h"
+#include "support/agrees.h"
 
 namespace epure::grading {
 
@@ -17,7 +18,7 @@ bool within_hot(const HotQuestion& q, double given) {
     case ToleranceRule::Kind::distance: return d <= q.abs;
     case ToleranceRule::Kind::exact: break;
   }
-  return d <= 1e-9 * std::max(1.0, std::abs(q.number));
+  return agrees(given, q.number);
 }
 
 bool blank(std::string_view cell) { return trim_cell(cell).empty(); }
@@ -41,9 +42,10 @@ void mark_read(const HotQuestion& q, QuestionMark& m) {
 
 bool equal_by_rule(const HotQuestion& q, const Given& g) {
   switch (q.type) {
+    case AnswerType::point:  // never a key's question: read as the number it would be
     case AnswerType::number: return within_hot(q, g.number);
     case AnswerType::boolean: return g.boolean == q.boolean;
-    case AnswerType::word: return g.word.data() == q.word;
+    case AnswerType::choice: return g.word.data() == q.word;
     case AnswerType::faces: return g.faces == q.faces;
   }
   return false;

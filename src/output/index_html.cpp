@@ -2,23 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "render/markup_escape.h"
+
 namespace epure::output {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(std::string_view s) { return render::markup_escaped(s); }
 
 // "explore: 1 2 3": each exercise of the sheet in the interactive page, with its own data.
 std::string explore_links(const IndexEntry& e, bool explore) {

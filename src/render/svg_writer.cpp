@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "render/utf8.h"
 
 namespace epure::render {
 
@@ -76,54 +75,6 @@ std::string format_number(double v, int decimals) {
   return s;
 }
 
-namespace {
-
-// The bytes that go out as they are: printable ASCII but for the four XML specials.
-constexpr std::array<bool, 256> kPlainByte = [] {
-  std::array<bool, 256> plain{};
-  for (int c = 0x20; c < 0x7F; ++c) plain[static_cast<std::size_t>(c)] = true;
-  for (char c : {'&', '<', '>', '"'}) plain[static_cast<unsigned char>(c)] = false;
-  return plain;
-}();
-
-}  // namespace
-
-void append_escaped(std::string& out, std::string_view s, bool attribute) {
-  // Runs of characters that need nothing (all of a number or a path) are copied at once.
-  const auto plain = [](char c) { return kPlainByte[static_cast<unsigned char>(c)]; };
-  for (std::size_t i = 0; i < s.size();) {
-    std::size_t j = i;
-    while (j < s.size() && plain(s[j])) ++j;
-    if (j > i) {
-      out.append(s.substr(i, j - i));
-      i = j;
-      if (i == s.size()) break;
-    }
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    if (c < 0x80) {
-      switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += attribute ? "&quot;" : "\""; break;
-        case '\t': out += attribute ? "&#9;" : "\t"; break;
-        case '\n': out += attribute ? "&#10;" : "\n"; break;
-        case '\r': out += attribute ? "&#13;" : "\r"; break;
-        default:
-          if (c >= 0x20 && c != 0x7F) out += static_cast<char>(c);  // other controls: dropped
-      }
-      ++i;
-      continue;
-    }
-    const utf8::Decoded d = utf8::decode(s, i);
-    if (!d.valid) {
-      utf8::append(out, utf8::kReplacement);
-    } else if (d.cp != 0xFFFE && d.cp != 0xFFFF) {
-      out.append(s.substr(i, d.length));
-    }
-    i += d.length;
-  }
-}
 
 void SvgWriter::declaration() {
   if (!out_.empty()) throw std::logic_error("the XML declaration must come first");
@@ -245,7 +196,9 @@ void SvgWriter::attribute(std::string_view name, std::string_view value) {
 
 void SvgWriter::plain_attribute(std::string_view name, std::string_view value) {
   if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
-  assert(std::all_of(value.begin(), value.end(), [](char c) { return kPlainByte[static_cast<unsigned char>(c)]; }));
+  assert(std::all_of(value.begin(), value.end(), [](char c) {
+    return c >= 0x20 && c < 0x7F && c != '&' && c != '<' && c != '>' && c != '"';
+  }));
   out_ += ' ';
   out_ += name;
   out_ += "=\"";

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "render/markup_escape.h"
+
 namespace epure::render {
 
 // `v` with at most `decimals` decimals, trailing zeros and a trailing point dropped, and no
@@ -21,11 +23,7 @@ namespace epure::render {
 std::string format_number(double v, int decimals = 2);
 void append_number(std::string& out, double v, int decimals = 2);
 
-// Appends `s` escaped for XML: & < > always, " in attribute values, and tab, newline and carriage
-// return as character references in attribute values (so they survive attribute normalisation).
-// Characters XML 1.0 forbids (other C0 controls, U+FFFE, U+FFFF) are dropped and invalid UTF-8
-// becomes U+FFFD, so the output always parses.
-void append_escaped(std::string& out, std::string_view s, bool attribute);
+// (append_escaped, the escaping of its text and attribute values: render/markup_escape.h)
 
 class SvgWriter {
  public:

@@ -17,11 +17,6 @@
 #include "exercises/kind_support.h"
 #include "geometry/segments.h"
 
-namespace epure::kinds::detail {
-std::vector<double> segments_by_hand(geo::Point2 A, geo::Point2 B, geo::Point2 C, geo::Point2 D,
-                                     const Nudge& nudge, const std::array<int, 5>& rounded);
-}
-
 namespace {
 
 using namespace epure;

@@ -17,11 +17,6 @@
 #include "exercises/kind_support.h"
 #include "geometry/vectors.h"
 
-namespace epure::kinds::detail {
-std::vector<double> vectors_by_hand(geo::Vec2 u, geo::Vec2 v, const Nudge& nudge,
-                                    const std::array<int, 6>& rounded);
-}
-
 namespace {
 
 using namespace epure;

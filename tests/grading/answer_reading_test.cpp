@@ -51,12 +51,12 @@ TEST_CASE("positions and reasons in English and French") {
       {"derrière", "behind"}, {"manqué", "miss"},         {"miss.", "miss"},       {"Colinéaires", "collinear"}};
   for (const auto& [cell, word] : cases) {
     CAPTURE(cell);
-    const auto g = read_answer(cell, AnswerType::word);
+    const auto g = read_answer(cell, AnswerType::choice);
     REQUIRE(g.readable());
     CHECK(g.word == word);
   }
-  SUBCASE("a yes is not a position") { CHECK(read_answer("oui", AnswerType::word).why == "word"); }
-  SUBCASE("nor is nonsense") { CHECK(read_answer("dunno", AnswerType::word).why == "word"); }
+  SUBCASE("a yes is not a position") { CHECK(read_answer("oui", AnswerType::choice).why == "word"); }
+  SUBCASE("nor is nonsense") { CHECK(read_answer("dunno", AnswerType::choice).why == "word"); }
 }
 
 TEST_CASE("faces in any order and separator") {
@@ -116,7 +116,7 @@ TEST_CASE("every wording a sheet prints for a choice reads back to its word, in 
       for (const std::string& typed : {text, upper_ascii(text), without_accents(text), upper_ascii(without_accents(text))}) {
         CAPTURE(language);
         CAPTURE(typed);
-        const auto g = read_answer(typed, AnswerType::word);
+        const auto g = read_answer(typed, AnswerType::choice);
         REQUIRE(g.readable());
         CHECK(g.word == word);
       }
@@ -154,13 +154,13 @@ TEST_CASE("every spelling the templates list reads back to its word, in every la
 TEST_CASE("the sheets' own wordings of a miss, and short forms") {
   for (const char* miss : {"passe à côté", "Passe a cote", "la droite passe à côté", "manqué", "MANQUE", "passes beside"}) {
     CAPTURE(miss);
-    const auto g = read_answer(miss, AnswerType::word);
+    const auto g = read_answer(miss, AnswerType::choice);
     REQUIRE(g.readable());
     CHECK(g.word == "miss");
   }
   for (const char* outside : {"à l'extérieur", "A L\u2019EXTERIEUR", "dehors", "outside"}) {
     CAPTURE(outside);
-    CHECK(read_answer(outside, AnswerType::word).word == "outside");
+    CHECK(read_answer(outside, AnswerType::choice).word == "outside");
   }
 }
 
@@ -243,14 +243,14 @@ TEST_CASE("the wordings students use for every choice answer, in both languages 
       {"the ray heads away", "behind"}, {"wrong direction", "behind"}};
   for (const auto& [cell, word] : cases) {
     CAPTURE(cell);
-    const auto g = read_answer(cell, AnswerType::word);
+    const auto g = read_answer(cell, AnswerType::choice);
     REQUIRE(g.readable());
     CHECK(g.word == word);
   }
   SUBCASE("what says no case stays to check: 'pas d'intersection' is a miss, a ray behind, parallel lines…") {
     for (const char* cell : {"pas d'intersection", "no intersection", "les segments ne se coupent pas", "hors"}) {
       CAPTURE(cell);
-      CHECK(read_answer(cell, AnswerType::word).state == Given::State::unreadable);
+      CHECK(read_answer(cell, AnswerType::choice).state == Given::State::unreadable);
     }
   }
 }

@@ -100,9 +100,9 @@ struct Family {
   template <class V, class D>
   static void schema(V& v, D& d) {
     v("A", d.A);
-    v("u", d.u);
+    v("u", d.u, role::from("A"));
     v("C", d.C);
-    v("r", d.r);
+    v("r", d.r, role::radius_about("C"));
   }
 
   static constexpr auto& kQuestions = S::kQuestions;

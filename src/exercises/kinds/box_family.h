@@ -53,6 +53,14 @@ struct FaceTexts {
   Shown point = Shown::point;
 };
 
+// The names of these faces, in their order (geometry/box_faces.h spells them).
+template <std::size_t N>
+constexpr std::array<std::string_view, N> names_of(const Face (&faces)[N]) {
+  std::array<std::string_view, N> names{};
+  for (std::size_t i = 0; i < N; ++i) names[i] = geo::face_name(faces[i]);
+  return names;
+}
+
 // What differs between the plane and space: the core's types, the faces in the contract's
 // order, the names of the method's steps on each (recorded steps keep views of them), and how
 // a point is asked (in the plane one point answer "I"; in space three numbers).
@@ -67,7 +75,7 @@ struct Space<2> {
   using Result = geo::RaySquare;
   using Name = std::string_view;
   static constexpr Face kFaces[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
-  static constexpr std::string_view kFaceNames[] = {"+x", "+y", "-x", "-y"};
+  static constexpr auto kFaceNames = names_of(kFaces);
   static constexpr std::string_view kAxes[] = {"x", "y"};
   static constexpr std::string_view kStepA[] = {"A.x", "A.y"};
   static constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.-x", "u_n.-y"};
@@ -92,7 +100,7 @@ struct Space<3> {
   using Result = geo::RayCube;
   using Name = method::Names3;
   static constexpr Face kFaces[] = {{0, +1}, {1, +1}, {2, +1}, {0, -1}, {1, -1}, {2, -1}};
-  static constexpr std::string_view kFaceNames[] = {"+x", "+y", "+z", "-x", "-y", "-z"};
+  static constexpr auto kFaceNames = names_of(kFaces);
   static constexpr std::string_view kAxes[] = {"x", "y", "z"};
   static constexpr std::string_view kStepA[] = {"A.x", "A.y", "A.z"};
   static constexpr std::string_view kStepUn[] = {"u_n.+x", "u_n.+y", "u_n.+z", "u_n.-x", "u_n.-y", "u_n.-z"};
@@ -264,7 +272,7 @@ struct Family {
   template <class V, class D>
   static void schema(V& v, D& d) {
     v("A", d.A);
-    v("u", d.u);
+    v("u", d.u, role::from("A"));
   }
 
   static constexpr auto& kQuestions = S::kQuestions;

@@ -39,10 +39,10 @@ struct Data {
 template <class V, class D>
 void schema(V& v, D& d, std::string_view sizes) {
   v("A", d.A);
-  v("u", d.u);
+  v("u", d.u, role::from("A"));
   v("C", d.C);
   Pair p{d.sx, d.sy};
-  v(sizes, p);
+  v(sizes, p, role::axes_about("C", "angle"));
   if constexpr (!std::is_const_v<D>) {
     d.sx = p.a;
     d.sy = p.b;

@@ -1,27 +1,14 @@
-#include "exercises/kind_support.h"
+#include "exercises/questions.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <stdexcept>
 
-#include "solve/json_out.h"
-#include "solve/solve.h"
 #include "support/portable.h"
 
 namespace epure::kinds {
 
-InstanceWriter::InstanceWriter(std::string_view kind) {
-  fmt::memory_buffer buf;
-  JsonWriter(buf).begin_object().field("kind", kind);
-  text_.assign(buf.data(), buf.size());  // "{"kind":"…"" — closed by finish()
-}
-
 namespace {
-std::string number_text(double x) {
-  if (x == 0) x = 0;  // one spelling for ±0
-  return fmt::format("{}", x);
-}
 
 // The question's exact form in both writings; `exact` dropped when it outgrows exact.h's machine
 // form (answer_text then shows the rounding alone).
@@ -34,51 +21,8 @@ void take_exact(Question& q, std::optional<exact::Surd>& exact) {
     exact.reset();
   }
 }
+
 }  // namespace
-
-InstanceWriter& InstanceWriter::number(std::string_view field, double x) {
-  text_ += fmt::format(",\"{}\":{}", field, number_text(x));
-  return *this;
-}
-InstanceWriter& InstanceWriter::pair(std::string_view field, double a, double b) {
-  text_ += fmt::format(",\"{}\":[{},{}]", field, number_text(a), number_text(b));
-  return *this;
-}
-InstanceWriter& InstanceWriter::triple(std::string_view field, double a, double b, double c) {
-  text_ += fmt::format(",\"{}\":[{},{},{}]", field, number_text(a), number_text(b), number_text(c));
-  return *this;
-}
-InstanceWriter& InstanceWriter::point(std::string_view field, geo::Point2 p) { return pair(field, p.x, p.y); }
-InstanceWriter& InstanceWriter::vec(std::string_view field, geo::Vec2 v) { return pair(field, v.x, v.y); }
-std::string InstanceWriter::finish() { return text_ + "}"; }
-
-std::string solve_instance(std::string_view instance) {
-  fmt::memory_buffer out;
-  std::string error = solve::solve_line(instance, out);
-  if (!error.empty())
-    throw std::logic_error(fmt::format("generated instance refused by solve: {} ({})", error, instance));
-  return std::string(out.data(), out.size());
-}
-
-std::optional<ExerciseInstance> already_taken(const ExerciseContext& ctx, std::string instance) {
-  const std::uint64_t f = fingerprint(instance);
-  if (!ctx.taken || !ctx.taken->contains(f)) return std::nullopt;
-  ExerciseInstance inst;
-  inst.n = ctx.n;
-  inst.branch = ctx.branch;
-  inst.instance = std::move(instance);
-  inst.fingerprint = f;
-  return inst;
-}
-
-std::uint64_t fingerprint(std::string_view text) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
 
 Questions::Questions(const ExerciseContext& ctx) : ctx_(ctx) {}
 
@@ -236,47 +180,6 @@ void Questions::faces(std::string_view field, const std::vector<std::string>& va
   lines_.push_back({id(field), prompt(field), shown});
 }
 
-render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size,
-                        double step) {
-  double x0 = points.front().x, x1 = x0, y0 = points.front().y, y1 = y0;
-  for (const auto& p : points) {
-    x0 = std::min(x0, p.x);
-    x1 = std::max(x1, p.x);
-    y0 = std::min(y0, p.y);
-    y1 = std::max(y1, p.y);
-  }
-  x0 -= margin, x1 += margin, y0 -= margin, y1 += margin;
-  if (x1 - x0 < min_size) {
-    const double grow = (min_size - (x1 - x0)) / 2;
-    x0 -= grow, x1 += grow;
-  }
-  if (y1 - y0 < min_size) {
-    const double grow = (min_size - (y1 - y0)) / 2;
-    y0 -= grow, y1 += grow;
-  }
-  return {std::floor(x0 / step) * step, std::floor(y0 / step) * step, std::ceil(x1 / step) * step,
-          std::ceil(y1 / step) * step};
-}
-
-namespace {
-render::Section begin_section(const ExerciseContext& ctx, std::string_view title_key) {
-  const std::string label = !ctx.label.empty()
-                                ? ctx.label
-                                : ctx.texts.format("common.exercise_label", {{"n", std::to_string(ctx.n)}});
-  render::Section s;
-  s.add(render::Heading{ctx.texts.format("common.exercise_heading", {{"label", label}, {"title", ctx.texts.get(title_key)}}), 1});
-  return s;
-}
-}  // namespace
-
-render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key) {
-  return begin_section(ctx, title_key);
-}
-
-render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key) {
-  return begin_section(ctx, title_key);
-}
-
 void add_fields(render::Section& s, const Questions& q) {
   const ExerciseContext& ctx = q.context();
   const auto layout = find_kind(ctx.spec.kind)->sheet_fields();
@@ -303,100 +206,6 @@ void add_fields(render::Section& s, const Questions& q) {
 
 void add_lines(render::Section& s, const Questions& q) {
   for (const auto& l : q.lines()) s.add(l);
-}
-
-double constraint(const ExerciseContext& ctx, const ExerciseKind& kind, const std::string& name) {
-  auto it = ctx.spec.constraints.find(name);
-  if (it != ctx.spec.constraints.end()) return it->second;
-  return kind.default_constraints().at(name);
-}
-
-}  // namespace epure::kinds
-
-namespace epure::kinds {
-
-std::string step_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& e) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
-  if (!e) return rounded;
-  try {
-    const std::string pretty = e->pretty();
-    if (pretty.size() > 16 || e->a().den() > 1000 || e->b().den() > 1000) return rounded;
-    const std::string exact = ctx.numbers.localise(pretty);
-    if (!e->is_rational()) return fmt::format("{} ≈ {}", exact, rounded);
-    const std::int64_t den = e->a().den();
-    if (den == 1) return exact;
-    std::int64_t pow10 = 1;
-    for (int i = 0; i < ctx.decimals; ++i) pow10 *= 10;
-    if (pow10 % den == 0) return fmt::format("{} = {}", exact, ctx.numbers.datum(value, ctx.decimals));
-    return fmt::format("{} ≈ {}", exact, rounded);
-  } catch (const exact::ExactOverflow&) {
-    return rounded;
-  }
-}
-
-std::string step_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
-                       const std::optional<exact::Surd>& ey) {
-  return fmt::format("({}{} {})", step_value(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
-                     step_value(ctx, p.y, ey));
-}
-
-std::string shown(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {
-  if (exact) {
-    try {
-      const std::string pretty = exact->pretty();
-      if (pretty.size() <= 16) return ctx.numbers.localise(pretty);
-    } catch (const exact::ExactOverflow&) {
-    }
-  }
-  return ctx.numbers.rounded(value, ctx.decimals);
-}
-
-std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
-                        const std::optional<exact::Surd>& ex, const std::optional<exact::Surd>& ey) {
-  return fmt::format("({}{} {})", shown(ctx, p.x, ex), ctx.numbers.decimal_comma ? "\u00a0;" : ",",
-                     shown(ctx, p.y, ey));
-}
-
-double grid_value(Rng& rng, double lo, double hi, Difficulty d) {
-  if (d == Difficulty::hard)
-    return static_cast<double>(rng.integer(static_cast<std::int64_t>(std::ceil(lo * 10)),
-                                           static_cast<std::int64_t>(std::floor(hi * 10)))) / 10.0;
-  return static_cast<double>(rng.integer(static_cast<std::int64_t>(std::ceil(lo)),
-                                         static_cast<std::int64_t>(std::floor(hi))));
-}
-
-std::string equals_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
-  std::string pretty;
-  if (exact) {
-    try {
-      pretty = exact->pretty();
-    } catch (const exact::ExactOverflow&) {
-    }
-  }
-  // the same length limit as shown(): a longer exact form does not help a reader
-  if (pretty.empty() || pretty.size() > 16) return fmt::format("≈ {}", rounded);
-  pretty = ctx.numbers.localise(pretty);
-  if (!exact->is_rational()) return fmt::format("= {} ≈ {}", pretty, rounded);
-  if (exact->a().is_integer()) return fmt::format("= {}", pretty);
-  // a fraction that stops within the asked decimals is written out exactly
-  if (terminates_within(exact, ctx.decimals))
-    return fmt::format("= {} = {}", pretty, ctx.numbers.datum(value, ctx.decimals));
-  return fmt::format("= {} ≈ {}", pretty, rounded);
-}
-
-bool terminates_within(const std::optional<exact::Surd>& exact, int decimals) {
-  if (!exact || !exact->is_rational()) return false;
-  std::int64_t pow10 = 1;
-  for (int i = 0; i < decimals; ++i) pow10 *= 10;
-  return pow10 % exact->a().den() == 0;
-}
-
-std::string equals_point(const ExerciseContext& ctx, geo::Point2 p, const std::optional<exact::Surd>& ex,
-                         const std::optional<exact::Surd>& ey) {
-  if (terminates_within(ex, ctx.decimals) && terminates_within(ey, ctx.decimals))
-    return fmt::format("= {}", ctx.numbers.point(p.x, p.y, ctx.decimals));
-  return fmt::format("≈ {}", ctx.numbers.rounded_point(p.x, p.y, ctx.decimals));
 }
 
 }  // namespace epure::kinds
