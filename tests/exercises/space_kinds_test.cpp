@@ -1,13 +1,16 @@
 // The kinds in space at the level of the plane's: ray_sphere and ray_cube over many seeds per
 // difficulty and branch (the instance drawn in the asked branch, the questions the solve
 // contract answers, exact forms equal to the values, positive tolerances, complete texts in both
-// languages, the key's worked steps), and the figure families written once over the dimension:
+// languages, the key's worked steps), the same seed drawing the same sheet, the sphere's key
+// diagram per branch, the cube's key walking its candidate faces in order, the spec's
+// constraints held or refused, and the figure families written once over the dimension:
 // a sphere whose figure lies in the plane z = 0 is the circle, a cube met in that plane is the
 // square, under every named mistake too.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
@@ -57,6 +60,28 @@ std::vector<std::string> texts_of(const render::Section& s) {
     }
   }
   return out;
+}
+
+// An instance drawn under a spec of the test's own (its constraints).
+ExerciseInstance make_with(const ExerciseSpec& spec, const std::string& branch, std::uint64_t seed) {
+  const ExerciseContext ctx{2, spec, Texts::builtin("en"), NumberStyle::for_language("en"), 2, branch};
+  Rng rng(seed, 5);
+  return find_kind(spec.kind)->make(rng, ctx);
+}
+
+const Question& question(const ExerciseInstance& inst, const std::string& field) {
+  for (const auto& q : inst.questions)
+    if (q.field == field) return q;
+  FAIL("no question " << field);
+  throw std::logic_error("unreachable");
+}
+
+const render::Scene& key_scene(const ExerciseInstance& inst) {
+  const render::Figure* figure = nullptr;
+  for (const auto& block : inst.key.blocks)
+    if (auto* f = std::get_if<render::Figure>(&block)) figure = f;
+  REQUIRE(figure != nullptr);
+  return figure->scene;
 }
 
 int paragraphs(const render::Section& s) {
@@ -130,6 +155,114 @@ TEST_CASE("ray_sphere and ray_cube: French texts are complete, with a decimal co
       for (const auto& t : texts_of(fr.key)) comma = comma || t.find("\u00a0;") != std::string::npos;
       CHECK(comma);
     }
+}
+
+TEST_CASE("ray_sphere and ray_cube: the same seed draws the same instance and the same texts") {
+  for (const char* kind : {"ray_sphere", "ray_cube"}) {
+    for (const auto& [branch, weight] : find_kind(kind)->default_branches())
+      for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        CAPTURE(kind);
+        CAPTURE(branch);
+        CAPTURE(seed);
+        const auto a = make(kind, Difficulty::standard, branch, seed), b = make(kind, Difficulty::standard, branch, seed);
+        CHECK(a.instance == b.instance);
+        CHECK(texts_of(a.key) == texts_of(b.key));
+        CHECK(texts_of(a.sheet) == texts_of(b.sheet));
+        CHECK(a.fingerprint == b.fingerprint);
+      }
+    CHECK(make(kind, Difficulty::standard, "hit", 1).instance != make(kind, Difficulty::standard, "hit", 2).instance);
+  }
+}
+
+TEST_CASE("ray_sphere: the key's diagram shows the 3D view and the construction in the plane of the ray and C") {
+  for (const char* branch : {"hit", "behind", "miss", "inside"}) {
+    const std::string b = branch;
+    CAPTURE(b);
+    const auto inst = make("ray_sphere", Difficulty::standard, branch, 11);
+    const render::Scene& scene = key_scene(inst);
+    REQUIRE(scene.panels.size() == 2);  // the 3D view, then the plane in true size
+    CHECK(scene.links.size() == 1);
+    const bool hit = b == "hit" || b == "inside";
+    int normals_3d = 0, outlines = 0;
+    for (const auto& item : scene.panels[0].items) {
+      if (auto* a = std::get_if<render::Arrow>(&item); a && a->role == render::Role::normal) ++normals_3d;
+      if (std::holds_alternative<render::Circle>(item)) ++outlines;
+    }
+    CHECK(outlines == 1);  // the sphere's outline
+    CHECK(normals_3d == (hit ? 1 : 0));
+    int dimensions = 0, right_angles = 0, normals = 0, filled = 0, circles = 0;
+    for (const auto& item : scene.panels[1].items) {
+      if (std::holds_alternative<render::Dimension>(item)) ++dimensions;
+      if (std::holds_alternative<render::RightAngle>(item)) ++right_angles;
+      if (auto* a = std::get_if<render::Arrow>(&item); a && a->role == render::Role::normal) ++normals;
+      if (auto* p = std::get_if<render::Polygon>(&item); p && p->filled) ++filled;
+      if (std::holds_alternative<render::Circle>(item)) ++circles;
+    }
+    CHECK(circles == 1);
+    CHECK(right_angles == 1);
+    CHECK(dimensions == (hit ? 3 : b == "miss" ? 2 : 0));  // d, √(r² − d²), r; or d > r
+    CHECK(normals == (hit ? 1 : 0));
+    CHECK(filled == (hit ? 1 : 0));
+  }
+}
+
+TEST_CASE("ray_sphere: a spec can tighten the constraints, and an impossible one is refused") {
+  ExerciseSpec spec;
+  spec.kind = "ray_sphere";
+  spec.constraints["min_radius"] = 3;
+  spec.constraints["max_radius"] = 3;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    CAPTURE(seed);
+    CHECK(json::parse(make_with(spec, "hit", seed).instance)["r"].get<double>() == doctest::Approx(3).epsilon(1e-12));
+  }
+  spec.constraints["max_radius"] = 1;  // below the smallest radius
+  CHECK_THROWS_AS(make_with(spec, "hit", 1), std::runtime_error);
+}
+
+TEST_CASE("ray_cube: the key walks the candidate faces in the course's order") {
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    CAPTURE(seed);
+    const auto inst = make("ray_cube", Difficulty::standard, "hit", seed);
+    const auto faces = std::get<std::vector<std::string>>(question(inst, "faces").expected);
+    // from outside, the candidates are the faces whose outer half-space holds A: one to three
+    CHECK(!faces.empty());
+    CHECK(faces.size() <= 3);
+    std::vector<std::string> walked;
+    for (const auto& block : inst.key.blocks)
+      if (auto* p = std::get_if<render::Paragraph>(&block))
+        for (const auto& f : faces)
+          if (p->text.rfind("Face " + kinds::face_label(f) + ":", 0) == 0) walked.push_back(f);
+    CHECK(walked == faces);  // one step per candidate, in the contract's order of the faces
+  }
+}
+
+TEST_CASE("ray_cube: from inside, the exit face is the smallest t among the faces the ray heads to") {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    CAPTURE(seed);
+    const auto inst = make("ray_cube", Difficulty::standard, "inside", seed);
+    CHECK(std::get<bool>(question(inst, "inside").expected));
+    CHECK(std::get<std::vector<std::string>>(question(inst, "faces").expected).empty());
+    const json A = json::parse(inst.instance)["A"];
+    for (int k = 0; k < 3; ++k) CHECK(std::abs(A[k].get<double>()) < 1);
+    int exits = 0;
+    for (const auto& block : inst.key.blocks)
+      if (auto* p = std::get_if<render::Paragraph>(&block))
+        exits += p->text.find("> 0, and t = (1 − A·") != std::string::npos;
+    CHECK(exits >= 1);  // at least one face heads out of the cube
+  }
+}
+
+TEST_CASE("ray_cube: a spec can tighten the constraints, and an impossible one is refused") {
+  ExerciseSpec spec;
+  spec.kind = "ray_cube";
+  spec.constraints["t_min"] = 2;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    CAPTURE(seed);
+    const auto inst = make_with(spec, "hit", seed);
+    CHECK(std::get<double>(question(inst, "t").expected) >= 2 - 1e-9);
+  }
+  spec.constraints["t_min"] = 1000;  // no ray from the drawing's area travels that far to the cube
+  CHECK_THROWS_AS(make_with(spec, "hit", 1), std::runtime_error);
 }
 
 TEST_CASE("ray_cube: faces are printed with the minus sign, as the square's sides") {

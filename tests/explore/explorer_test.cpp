@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "explore/explorer.h"
@@ -44,6 +46,45 @@ TEST_CASE("explore: every kind has a view with its handles, steps and the key's 
     // the key's solution is the one `epure solve` gives the same data (worksheet semantics), of
     // the instance's contract kind (vectors_3d's is the contract's vectors)
     CHECK(v["solution"]["kind"] == json::parse(start)["kind"]);
+  }
+}
+
+TEST_CASE("explore: the handles are the schema's data by their roles, and each moves its own datum") {
+  // every datum with a role of its own has a handle (a sizes pair two: its axes' ends), and
+  // nothing else has one; a drag of a handle changes its datum (and, for the first axis, the
+  // angle its role names), never another field
+  for (const epure::ExerciseKind* kind : epure::all_kinds()) {
+    CAPTURE(kind->name());
+    std::vector<std::string> expected;
+    for (const epure::DataField& f : kind->data_fields()) {
+      if (f.role.role == epure::FieldRole::number) continue;
+      if (f.role.role == epure::FieldRole::axes) {
+        expected.push_back(std::string(f.name) + ".0");
+        expected.push_back(std::string(f.name) + ".1");
+      } else {
+        expected.emplace_back(f.name);
+      }
+    }
+    const std::string start = ex::starting_instance(kind->name());
+    const json v = view_of(start);
+    std::vector<std::string> ids;
+    for (const auto& h : v["handles"]) ids.push_back(h["id"]);
+    std::sort(ids.begin(), ids.end());
+    std::sort(expected.begin(), expected.end());
+    CHECK(ids == expected);
+    const json before = json::parse(start);
+    for (const auto& h : v["handles"]) {
+      const std::string id = h["id"];
+      CAPTURE(id);
+      const json after = json::parse(ex::drag(start, id, h["x"].get<double>() + 17, h["y"].get<double>() + 9,
+                                              v["frame"].dump(), false));
+      const std::string field = id.substr(0, id.find('.'));
+      std::vector<std::string> changed;
+      for (const auto& [key, value] : before.items())
+        if (after[key] != value) changed.push_back(key);
+      CHECK_FALSE(changed.empty());
+      for (const auto& key : changed) CHECK((key == field || (id == field + ".0" && key == "angle")));
+    }
   }
 }
 

@@ -3,6 +3,9 @@
 
 usage: adversarial_cases.py SEED N      (prints N lines of JSON Lines, blank lines included)
 
+The kinds and their fields are the registry's (`$EPURE kinds --json`: each kind's solve input and
+its schema's fields; $EPURE defaults to build/epure beside these sources).
+
 Deterministic for a seed (random.Random(SEED), nothing else random). The figures go where a
 double-precision solver is fragile: coordinates around 1e-8 and 1e8, a small figure far from the
 origin, directions of length 1e-6 and 1e6, nearly parallel segments (sin of the angle 1e-6 to
@@ -34,6 +37,7 @@ import json
 import math
 import os
 import random
+import subprocess
 import sys
 from fractions import Fraction
 
@@ -42,18 +46,25 @@ import reference_solve as ref  # noqa: E402
 
 MARGIN = Fraction(1, 2**40)  # ≈ 9.1e-13
 PAIRS = 6
-POSITIONAL = ("A", "B", "C", "D", "r", "radii", "half")
-DIRECTIONAL = ("u", "v")
-KINDS = ("vectors", "projection", "segments", "ray_circle", "ray_square", "ray_ellipse",
-         "ray_rectangle", "ray_sphere", "ray_cube")
-FIELDS = {
-    "vectors": {"u": 2, "v": 2}, "projection": {"A": 2, "B": 2, "C": 2},
-    "segments": {"A": 2, "B": 2, "C": 2, "D": 2},
-    "ray_circle": {"A": 2, "u": 2, "C": 2, "r": 0}, "ray_square": {"A": 2, "u": 2},
-    "ray_ellipse": {"A": 2, "u": 2, "C": 2, "radii": 2, "angle": 0},
-    "ray_rectangle": {"A": 2, "u": 2, "C": 2, "half": 2, "angle": 0},
-    "ray_sphere": {"A": 3, "u": 3, "C": 3, "r": 0}, "ray_cube": {"A": 3, "u": 3},
-}
+
+
+def registry_kinds():
+    """The kinds as the registry describes them (`epure kinds --json`), but a kind that shares its
+    solve kind with another (the preamble in space, the contract's `vectors` with three
+    components), which solve_vectors_3d.sh covers."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    epure = os.environ.get("EPURE") or os.path.join(here, "..", "..", "build", "epure")
+    out = subprocess.run([epure, "kinds", "--json"], check=True, capture_output=True, text=True).stdout
+    return [k for k in json.loads(out) if k["solve_kind"] == k["name"]]
+
+
+KINDS = registry_kinds()
+# Each kind's solve fields and their components (0 for a number).
+FIELDS = {k["name"]: {f["field"]: f["dim"] if f["dim"] > 1 else 0 for f in k["data"]} for k in KINDS}
+# The fields that place or size the figure (points, radii, half-sizes), and the directions, by
+# their schema roles: a move of the figure moves the first by its scale, the second by its own.
+POSITIONAL = {f["field"] for k in KINDS for f in k["data"] if f["role"] in ("point", "radius", "axes")}
+DIRECTIONAL = {f["field"] for k in KINDS for f in k["data"] if f["role"] == "direction"}
 
 
 # ---- decidability ----------------------------------------------------------------------------
