@@ -312,35 +312,49 @@ class MethodKind : public ExerciseKind {
     return KeySolution{std::move(exact), core, std::move(q)};
   }
 
-  // The instance of drawn data, its sections laid out as every figure kind lays them: the sheet
-  // (title, statement with the data, the question's figure, the answer fields) and the key
-  // (title, the data, the worked steps the method told, `after` (more of the kind's steps), the
-  // construction's figure, the answers). `sheet_figure` and `key_figure` make the figures from
-  // the key's solution (the drawing reads the run's values).
-  template <class SheetFigure, class KeyFigure>
-  static ExerciseInstance assemble(const Data& d, const ExerciseContext& ctx, SheetFigure&& sheet_figure,
-                                   KeyFigure&& key_figure, std::span<const std::string_view> after = {}) {
+  // An instance of drawn data begun as every figure kind begins it: its identity, the key's
+  // solution (its questions taken into the instance), the sheet (title, statement with the data
+  // by the schema, the question's figure, the answer fields) and the key's title and data.
+  // `sheet_figure` makes the question's figure from the key's solution. The kind then adds its
+  // worked steps, its figure and the answer lines (add_lines) to inst.key.
+  struct Begun {
+    ExerciseInstance inst;
+    KeySolution key;
+  };
+  template <class SheetFigure>
+  static Begun begin_sections(const Data& d, const ExerciseContext& ctx, SheetFigure&& sheet_figure) {
     const auto& T = ctx.texts;
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = key_solution(d, ctx);
-    inst.questions = key.questions.take_questions();
+    Begun b{begin_instance(d, ctx), key_solution(d, ctx)};
+    b.inst.questions = b.key.questions.take_questions();
     DataVars vars(ctx.numbers);
     visit_schema(vars, d);
     const TextVars data = vars.take();
     const std::string kind(Kind::kName);
     if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, kind + ".title");
-      inst.sheet.add(render::Paragraph{T.format(kind + ".statement", data)});
-      inst.sheet.add(sheet_figure(key));
-      add_fields(inst.sheet, key.questions);
+      b.inst.sheet = begin_sheet_section(ctx, kind + ".title");
+      b.inst.sheet.add(render::Paragraph{T.format(kind + ".statement", data)});
+      b.inst.sheet.add(sheet_figure(b.key));
+      add_fields(b.inst.sheet, b.key.questions);
     }
-    inst.key = begin_key_section(ctx, kind + ".title");
-    inst.key.add(render::Paragraph{T.format(kind + ".data", data)});
-    replay_steps(inst.key, ctx, key, Kind::kName);
-    for (std::string_view step : after) inst.key.add(render::Paragraph{T.format(fmt::format("{}.step.{}", kind, step))});
-    inst.key.add(key_figure(key));
-    add_lines(inst.key, key.questions);
-    return inst;
+    b.inst.key = begin_key_section(ctx, kind + ".title");
+    b.inst.key.add(render::Paragraph{T.format(kind + ".data", data)});
+    return b;
+  }
+
+  // The instance of drawn data, its sections laid out as every figure kind lays them
+  // (begin_sections), the key's worked steps those the method told, then `after` (more of the
+  // kind's steps), the construction's figure and the answers. `sheet_figure` and `key_figure`
+  // make the figures from the key's solution (the drawing reads the run's values).
+  template <class SheetFigure, class KeyFigure>
+  static ExerciseInstance assemble(const Data& d, const ExerciseContext& ctx, SheetFigure&& sheet_figure,
+                                   KeyFigure&& key_figure, std::span<const std::string_view> after = {}) {
+    Begun b = begin_sections(d, ctx, sheet_figure);
+    replay_steps(b.inst.key, ctx, b.key, Kind::kName);
+    for (std::string_view step : after)
+      b.inst.key.add(render::Paragraph{ctx.texts.format(fmt::format("{}.step.{}", Kind::kName, step))});
+    b.inst.key.add(key_figure(b.key));
+    add_lines(b.inst.key, b.key.questions);
+    return std::move(b.inst);
   }
 
   // The identity of a drawn instance and, unless an earlier sheet holds it, its key solution

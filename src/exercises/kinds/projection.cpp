@@ -130,25 +130,12 @@ class Projection final : public MethodKind<ProjectionMethod> {
     const auto& N = ctx.numbers;
     const auto p = geo::project(d.A, d.B, d.C);
 
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = key_solution(d, ctx);
+    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{question_scene(d, ctx), 0.55}; };
+    Begun begun = begin_sections(d, ctx, sheet_figure);
+    ExerciseInstance& inst = begun.inst;
+    const KeySolution& key = begun.key;
     const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
 
-    const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
-                                {"B", N.point(d.B.x, d.B.y)},
-                                {"C", N.point(d.C.x, d.C.y)}};
-    // ---- the sheet
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "projection.title");
-      inst.sheet.add(render::Paragraph{T.format("projection.statement", data_vars)});
-      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
-      add_fields(inst.sheet, q);
-    }
-
-    // ---- the key
-    inst.key = begin_key_section(ctx, "projection.title");
-    inst.key.add(render::Paragraph{T.format("projection.data", data_vars)});
     const Vec2 AB = p.AB, AC = p.AC;
     inst.key.add(render::Paragraph{T.format(
         "projection.step.vectors", {{"AB", N.point(AB.x, AB.y)}, {"AC", N.point(AC.x, AC.y)}})});
@@ -161,7 +148,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
     inst.key.add(render::Paragraph{T.get(fmt::format("projection.step.position.{}", geo::to_string(p.position)))});
     inst.key.add(render::Figure{key_scene(d, p, ctx), 0.45});
     add_lines(inst.key, q);
-    return inst;
+    return std::move(inst);
   }
 
   static render::Panel data_panel(const Data& d, const geo::Projection& p) {
@@ -209,9 +196,6 @@ class Projection final : public MethodKind<ProjectionMethod> {
 
 }  // namespace
 
-const ExerciseKind& projection_kind() {
-  static const Projection kind;
-  return kind;
-}
+const ExerciseKind& projection_kind() { return the_kind<Projection>(); }
 
 }  // namespace epure::kinds

@@ -276,10 +276,11 @@ class Segments final : public MethodKind<SegmentsMethod> {
     const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
     const bool crossing = s.t_ab.has_value();
 
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = key_solution(d, ctx);
+    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{question_scene(d, ctx), 0.55}; };
+    Begun begun = begin_sections(d, ctx, sheet_figure);
+    ExerciseInstance& inst = begun.inst;
+    const KeySolution& key = begun.key;
     const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
     Exact e;
     Point2 P{};  // where the lines cross
     if (crossing) {
@@ -287,21 +288,6 @@ class Segments final : public MethodKind<SegmentsMethod> {
       P = s.I ? *s.I : key.point("P");
     }
 
-    const TextVars data_vars = {{"A", N.point(d.A.x, d.A.y)},
-                                {"B", N.point(d.B.x, d.B.y)},
-                                {"C", N.point(d.C.x, d.C.y)},
-                                {"D", N.point(d.D.x, d.D.y)}};
-    // ---- the sheet
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "segments.title");
-      inst.sheet.add(render::Paragraph{T.format("segments.statement", data_vars)});
-      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.55});
-      add_fields(inst.sheet, q);
-    }
-
-    // ---- the key
-    inst.key = begin_key_section(ctx, "segments.title");
-    inst.key.add(render::Paragraph{T.format("segments.data", data_vars)});
     inst.key.add(render::Paragraph{T.format("segments.step.vectors", {{"AB", N.point(s.AB.x, s.AB.y)},
                                                                        {"CD", N.point(s.CD.x, s.CD.y)},
                                                                        {"AC", N.point(s.AC.x, s.AC.y)}})});
@@ -327,7 +313,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
     }
     inst.key.add(render::Figure{key_scene(d, s, P, e, ctx), 0.45});
     add_lines(inst.key, q);
-    return inst;
+    return std::move(inst);
   }
 
   static render::Panel data_panel(const Data& d, const std::optional<Point2>& P) {
@@ -387,9 +373,6 @@ class Segments final : public MethodKind<SegmentsMethod> {
 
 }  // namespace
 
-const ExerciseKind& segments_kind() {
-  static const Segments kind;
-  return kind;
-}
+const ExerciseKind& segments_kind() { return the_kind<Segments>(); }
 
 }  // namespace epure::kinds

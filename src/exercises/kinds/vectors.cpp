@@ -200,23 +200,12 @@ class Vectors final : public MethodKind<VectorsMethod> {
     const auto& N = ctx.numbers;
     const auto r = geo::compare_vectors(d.u, d.v);
 
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = key_solution(d, ctx);
+    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{question_scene(d, ctx), 0.45}; };
+    Begun begun = begin_sections(d, ctx, sheet_figure);
+    ExerciseInstance& inst = begun.inst;
+    const KeySolution& key = begun.key;
     const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
 
-    const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y)}, {"v", N.point(d.v.x, d.v.y)}};
-    // ---- the sheet
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "vectors.title");
-      inst.sheet.add(render::Paragraph{T.format("vectors.statement", data_vars)});
-      inst.sheet.add(render::Figure{question_scene(d, ctx), 0.45});
-      add_fields(inst.sheet, q);
-    }
-
-    // ---- the key
-    inst.key = begin_key_section(ctx, "vectors.title");
-    inst.key.add(render::Paragraph{T.format("vectors.data", data_vars)});
     const TextVars factors = {{"ux", factor(N, d.u.x)}, {"uy", factor(N, d.u.y)},
                               {"vx", factor(N, d.v.x)}, {"vy", factor(N, d.v.y)}};
     // u·v, u∧v, ‖u‖² and ‖v‖² are exact decimals of the data: written out in full
@@ -241,7 +230,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
     inst.key.add(render::Paragraph{T.get(r.cross > 0 ? "vectors.step.ccw" : "vectors.step.cw")});
     inst.key.add(render::Figure{key_scene(d, r, ctx), 0.4});
     add_lines(inst.key, q);
-    return inst;
+    return std::move(inst);
   }
 
   static render::Panel data_panel(const Data& d) {
@@ -305,9 +294,6 @@ class Vectors final : public MethodKind<VectorsMethod> {
 
 }  // namespace
 
-const ExerciseKind& vectors_kind() {
-  static const Vectors kind;
-  return kind;
-}
+const ExerciseKind& vectors_kind() { return the_kind<Vectors>(); }
 
 }  // namespace epure::kinds

@@ -177,21 +177,12 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     const auto r = geo::compare_vectors_3d(d.u, d.v);
     const std::string branch = branch_of(r);
 
-    ExerciseInstance inst = begin_instance(d, ctx);
-    KeySolution key = key_solution(d, ctx);
+    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{scene(d, r, ctx, false), 0.45}; };
+    Begun begun = begin_sections(d, ctx, sheet_figure);
+    ExerciseInstance& inst = begun.inst;
+    const KeySolution& key = begun.key;
     const Questions& q = key.questions;
-    inst.questions = key.questions.take_questions();
 
-    const TextVars data_vars = {{"u", N.point(d.u.x, d.u.y, d.u.z)}, {"v", N.point(d.v.x, d.v.y, d.v.z)}};
-    if (ctx.sheet) {  // not for the explorer's views, which show the key only
-      inst.sheet = begin_sheet_section(ctx, "vectors_3d.title");
-      inst.sheet.add(render::Paragraph{T.format("vectors_3d.statement", data_vars)});
-      inst.sheet.add(render::Figure{scene(d, r, ctx, false), 0.45});
-      add_fields(inst.sheet, q);
-    }
-
-    inst.key = begin_key_section(ctx, "vectors_3d.title");
-    inst.key.add(render::Paragraph{T.format("vectors_3d.data", data_vars)});
     const TextVars f = {{"ux", factor(N, d.u.x)}, {"uy", factor(N, d.u.y)}, {"uz", factor(N, d.u.z)},
                         {"vx", factor(N, d.v.x)}, {"vy", factor(N, d.v.y)}, {"vz", factor(N, d.v.z)}};
     auto with = [&](TextVars vars, TextVars more) {
@@ -216,7 +207,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     step(branch, {});
     inst.key.add(render::Figure{scene(d, r, ctx, true), 0.5});
     add_lines(inst.key, q);
-    return inst;
+    return std::move(inst);
   }
 
   // The 3D view: u and v from the origin; on the key, u∧v too (to its direction, two units
@@ -253,9 +244,6 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
 
 }  // namespace
 
-const ExerciseKind& vectors_3d_kind() {
-  static const Vectors3d kind;
-  return kind;
-}
+const ExerciseKind& vectors_3d_kind() { return the_kind<Vectors3d>(); }
 
 }  // namespace epure::kinds
