@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "exercises/kind_support.h"
+#include "geometry/box_faces.h"
 #include "grading/review.h"
 #include "render/markup_escape.h"
 #include "render/pdf_document.h"
@@ -220,7 +221,8 @@ std::vector<Option> VariantBuilder::side_options(const ExerciseKind* kind, std::
   if (const auto* d = decl_of(kind, field))
     for (auto w : d->choices) names.emplace_back(w);
   else
-    for (const char* f : {"+x", "+y", "-x", "-y"}) names.emplace_back(f);
+    for (const geo::Face f : {geo::Face{0, +1}, geo::Face{1, +1}, geo::Face{0, -1}, geo::Face{1, -1}})
+      names.emplace_back(geo::face_name(f));
   std::vector<Option> out;
   for (const auto& f : names) out.push_back({f, render::markup_escaped(kinds::face_label(f)), false});
   out.push_back({"none", html_of(feedback_.texts().get("common.none")), false});
