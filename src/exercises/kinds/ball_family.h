@@ -20,25 +20,23 @@
 #include <fmt/format.h>
 
 #include "exercises/kind_method.h"
+#include "exercises/kinds/dimension.h"
 #include "geometry/ray_3d.h"
 #include "geometry/ray_circle.h"
 #include "solve/result.h"
 
 namespace epure::kinds::ball {
 
-// What differs between the plane and space: the core's types, and how a point is asked and
-// recorded (in the plane one point answer "I" with I.x and I.y; in space three numbers).
+// What differs between the plane and space: the core's types (dimension.h: its point, vector,
+// ray and step names; here its ball and result), and how a point is asked and recorded (in the
+// plane one point answer "I" with I.x and I.y; in space three numbers).
 template <int Dim>
 struct Space;
 
 template <>
-struct Space<2> {
-  using Point = geo::Point2;
-  using Vec = geo::Vec2;
-  using Ray = geo::Ray2;
+struct Space<2> : Dimension<2> {
   using Ball = geo::Circle;
   using Result = geo::RayCircle;
-  using Name = std::string_view;
   static constexpr Name AC = "AC", u_hat = "u_hat", P = "P", I = "I", N = "N";
   static constexpr std::string_view kReasons[] = {"behind", "miss"};
   static constexpr method::QuestionDecl kQuestions[] = {
@@ -49,13 +47,9 @@ struct Space<2> {
 };
 
 template <>
-struct Space<3> {
-  using Point = geo::Point3;
-  using Vec = geo::Vec3;
-  using Ray = geo::Ray3;
+struct Space<3> : Dimension<3> {
   using Ball = geo::Sphere;
   using Result = geo::RaySphere;
-  using Name = method::Names3;
   static constexpr Name AC = {"AC.x", "AC.y", "AC.z"}, u_hat = {"u_hat.x", "u_hat.y", "u_hat.z"},
                         P = {"P.x", "P.y", "P.z"}, I = {"I.x", "I.y", "I.z"}, N = {"N.x", "N.y", "N.z"};
   static constexpr std::string_view kReasons[] = {"behind", "miss"};

@@ -26,6 +26,7 @@
 #include <string_view>
 
 #include "exercises/kind_method.h"
+#include "exercises/kinds/dimension.h"
 #include "geometry/box_faces.h"
 #include "geometry/ray_3d.h"
 #include "geometry/ray_square.h"
@@ -61,19 +62,16 @@ constexpr std::array<std::string_view, N> names_of(const Face (&faces)[N]) {
   return names;
 }
 
-// What differs between the plane and space: the core's types, the faces in the contract's
-// order, the names of the method's steps on each (recorded steps keep views of them), and how
-// a point is asked (in the plane one point answer "I"; in space three numbers).
+// What differs between the plane and space: the core's types (dimension.h; here the result),
+// the faces in the contract's order, the names of the method's steps on each (recorded steps
+// keep views of them), and how a point is asked (in the plane one point answer "I"; in space
+// three numbers).
 template <int Dim>
 struct Space;
 
 template <>
-struct Space<2> {
-  using Point = geo::Point2;
-  using Vec = geo::Vec2;
-  using Ray = geo::Ray2;
+struct Space<2> : Dimension<2> {
   using Result = geo::RaySquare;
-  using Name = std::string_view;
   static constexpr Face kFaces[] = {{0, +1}, {1, +1}, {0, -1}, {1, -1}};
   static constexpr auto kFaceNames = names_of(kFaces);
   static constexpr std::string_view kAxes[] = {"x", "y"};
@@ -93,12 +91,8 @@ struct Space<2> {
 };
 
 template <>
-struct Space<3> {
-  using Point = geo::Point3;
-  using Vec = geo::Vec3;
-  using Ray = geo::Ray3;
+struct Space<3> : Dimension<3> {
   using Result = geo::RayCube;
-  using Name = method::Names3;
   static constexpr Face kFaces[] = {{0, +1}, {1, +1}, {2, +1}, {0, -1}, {1, -1}, {2, -1}};
   static constexpr auto kFaceNames = names_of(kFaces);
   static constexpr std::string_view kAxes[] = {"x", "y", "z"};
