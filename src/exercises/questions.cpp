@@ -125,13 +125,17 @@ void Questions::point(std::string_view field, geo::Point2 value, double abs_x, d
                     fmt::format("({}{} {})", shown[0], ctx_.numbers.decimal_comma ? "\u00a0;" : ",", shown[1])});
 }
 
-void Questions::boolean(std::string_view field, bool value) {
+void Questions::ask_exactly(std::string_view field, Expected value) {
   Question q;
   q.field = std::string(field);
-  q.expected = value;
+  q.expected = std::move(value);
   q.tolerance = exact_rule();
   q.points = points_for(field);
-  questions_.push_back(q);
+  questions_.push_back(std::move(q));
+}
+
+void Questions::boolean(std::string_view field, bool value) {
+  ask_exactly(field, value);
   fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::boolean,
                      {ctx_.texts.get("common.yes"), ctx_.texts.get("common.no")}});
   lines_.push_back({id(field), prompt(field), ctx_.texts.get(value ? "common.yes" : "common.no")});
@@ -153,12 +157,7 @@ std::vector<std::string> face_options(const ExerciseContext& ctx, const std::vec
 
 void Questions::choice(std::string_view field, std::string_view value,
                        const std::vector<std::string>& choices) {
-  Question q;
-  q.field = std::string(field);
-  q.expected = std::string(value);
-  q.tolerance = exact_rule();
-  q.points = points_for(field);
-  questions_.push_back(q);
+  ask_exactly(field, std::string(value));
   std::vector<std::string> shown;
   for (const auto& c : choices) shown.push_back(ctx_.texts.get(fmt::format("choice.{}", c)));
   fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::choice, shown});
@@ -167,12 +166,7 @@ void Questions::choice(std::string_view field, std::string_view value,
 
 void Questions::faces(std::string_view field, const std::vector<std::string>& value,
                       const std::vector<std::string>& all) {
-  Question q;
-  q.field = std::string(field);
-  q.expected = value;
-  q.tolerance = exact_rule();
-  q.points = points_for(field);
-  questions_.push_back(q);
+  ask_exactly(field, value);
   fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, face_options(ctx_, all), true});
   std::string shown;
   for (const auto& f : value) shown += fmt::format("{}{}", shown.empty() ? "" : ", ", face_label(f));

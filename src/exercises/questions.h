@@ -52,6 +52,8 @@ class Questions {
   // Whether the questions and the sheet's fields are wanted, or (the explorer's views, which
   // show the key only) the key's answer lines alone.
   bool marking() const { return ctx_.sheet; }
+  // A question whose answer is marked equal or not (a boolean, a choice, a set of faces).
+  void ask_exactly(std::string_view field, Expected value);
   const QuestionSpec* spec_for(std::string_view field) const;
   double points_for(std::string_view field) const;
   std::string id(std::string_view field) const;
