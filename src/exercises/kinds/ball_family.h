@@ -21,6 +21,7 @@
 
 #include "exercises/kind_method.h"
 #include "exercises/kinds/dimension.h"
+#include "exercises/kinds/ray_branch.h"
 #include "geometry/ray_3d.h"
 #include "geometry/ray_circle.h"
 #include "solve/result.h"
@@ -79,10 +80,10 @@ typename Space<Dim>::Result solve_core(const Data<Dim>& d) {
 
 // The branch the core's solution shows: inside, hit, behind or miss.
 template <class Result>
-std::string branch_of(const Result& r) {
-  if (r.inside) return "inside";
-  if (r.hit) return "hit";
-  return geo::to_string(*r.reason);
+RayBranch branch_of(const Result& r) {
+  if (r.inside) return RayBranch::inside;
+  if (r.hit) return RayBranch::hit;
+  return *r.reason == geo::NoHit::behind ? RayBranch::behind : RayBranch::miss;
 }
 
 // The family, for MethodKind (kind_method.h): a kind adds its kName and kPoints.
@@ -203,8 +204,8 @@ inline Margins margins(const ExerciseContext& ctx, const ExerciseKind& kind) {
 // Hard: close to tangency or to the ball, yet on the clear side of the margins (a quarter of the
 // tangent margin, a third of the boundary's).
 template <class Result>
-bool clear(const Result& rc, double r, const std::string& branch, const Margins& mg, bool hard) {
-  if (branch_of(rc) != branch) return false;
+bool clear(const Result& rc, double r, std::optional<RayBranch> branch, const Margins& mg, bool hard) {
+  if (!branch || branch_of(rc) != *branch) return false;
   const double tm_clear = hard ? mg.tangent / 4 : mg.tangent, bm_clear = hard ? mg.boundary / 3 : mg.boundary;
   const double ac = geo::norm(rc.AC) / r;  // A's distance to C, in radii
   const double dr = std::sqrt(rc.d2) / r;   // the line's distance to C, in radii
@@ -215,9 +216,9 @@ bool clear(const Result& rc, double r, const std::string& branch, const Margins&
   }
   if (ac < 1 + bm_clear || std::abs(dr - 1) < tm_clear) return false;
   const bool near_tangent = std::abs(dr - 1) <= mg.tangent, near_ball = ac <= 1 + mg.boundary;
-  if (branch == "behind") return rc.t_proj <= -mg.t_proj && (!hard || near_tangent || near_ball);
+  if (branch == RayBranch::behind) return rc.t_proj <= -mg.t_proj && (!hard || near_tangent || near_ball);
   if (rc.t_proj < mg.t_proj) return false;
-  if (branch == "miss") return !hard || near_tangent;
+  if (branch == RayBranch::miss) return !hard || near_tangent;
   return rc.hit->t >= mg.t_min && (!hard || near_tangent || near_ball);
 }
 
@@ -225,7 +226,8 @@ bool clear(const Result& rc, double r, const std::string& branch, const Margins&
 // reach it.
 template <class Kind>
 bool pythagorean(const typename Kind::Data& d, const ExerciseContext& ctx) {
-  if (ctx.spec.difficulty != Difficulty::easy || ctx.branch == "behind" || ctx.branch == "miss") return true;
+  const auto branch = ray_branch(ctx.branch);
+  if (ctx.spec.difficulty != Difficulty::easy || branch == RayBranch::behind || branch == RayBranch::miss) return true;
   const auto run = MethodKind<Kind>::exact_run(d);
   const auto* h = run.step("h");
   return h && h->x.e && h->x.e->is_rational();
@@ -255,6 +257,7 @@ class BallKind final : public MethodKind<Kind> {
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const bool hard = ctx.spec.difficulty == Difficulty::hard;
+    const std::optional<RayBranch> branch = ray_branch(ctx.branch);
     const Margins mg = margins(ctx, *this);
     const double r_lo = constraint(ctx, *this, "min_radius");
     const double r_hi = constraint(ctx, *this, "max_radius");
@@ -267,7 +270,7 @@ class BallKind final : public MethodKind<Kind> {
       const std::optional<Data> x = Kind::draw(rng, ctx, r_lo, r_hi);
       if (!x) return std::nullopt;
       const auto rc = solve_core(*x);
-      if (!Kind::in_area(rc, ctx) || !clear(rc, x->r, ctx.branch, mg, hard) || !pythagorean<Kind>(*x, ctx))
+      if (!Kind::in_area(rc, ctx) || !clear(rc, x->r, branch, mg, hard) || !pythagorean<Kind>(*x, ctx))
         return std::nullopt;
       return x;
     });

@@ -27,6 +27,7 @@
 
 #include "exercises/kind_method.h"
 #include "exercises/kinds/dimension.h"
+#include "exercises/kinds/ray_branch.h"
 #include "geometry/box_faces.h"
 #include "geometry/ray_3d.h"
 #include "geometry/ray_square.h"
@@ -251,10 +252,11 @@ typename Space<Dim>::Result solve_core(const Data<Dim>& d) {
   else return geo::intersect_canonical_cube(geo::Ray3::unit(d.A, d.u));
 }
 
+// The branch the core's solution shows: inside, hit or miss.
 template <class Result>
-std::string branch_of(const Result& r) {
-  if (r.inside) return "inside";
-  return r.hit ? "hit" : "miss";
+RayBranch branch_of(const Result& r) {
+  if (r.inside) return RayBranch::inside;
+  return r.hit ? RayBranch::hit : RayBranch::miss;
 }
 
 // The family, for MethodKind (kind_method.h): a kind adds its kName and kPoints.
@@ -409,10 +411,10 @@ struct Margins {
 // others off), no face in play nearly parallel to the ray. `closest` is how near a decisive
 // crossing comes to a face's edge (none without a crossing), for the hard level's choice.
 template <int Dim>
-bool clear(const Data<Dim>& x, const typename Space<Dim>::Result& rs, const std::string& branch,
+bool clear(const Data<Dim>& x, const typename Space<Dim>::Result& rs, std::optional<RayBranch> branch,
            const Margins& mg, double edge_clear, double face_clear, std::optional<double>& closest) {
   using S = Space<Dim>;
-  if (branch_of(rs) != branch) return false;
+  if (!branch || branch_of(rs) != *branch) return false;
   for (int k = 0; k < Dim; ++k)
     if (std::abs(std::abs(coord(x.A, k)) - 1) < face_clear) return false;
   if (rs.hit && rs.hit->t < mg.t_min) return false;
@@ -450,7 +452,7 @@ bool clear(const Data<Dim>& x, const typename Space<Dim>::Result& rs, const std:
 template <int Dim, class EasyDirection>
 std::optional<Data<Dim>> draw_data(Rng& rng, const ExerciseContext& ctx, EasyDirection&& easy_direction) {
   const Difficulty level = ctx.spec.difficulty;
-  const bool hard = level == Difficulty::hard, inside = ctx.branch == "inside";
+  const bool hard = level == Difficulty::hard, inside = ray_branch(ctx.branch) == RayBranch::inside;
   const int w = ctx.widening;
   std::array<double, Dim> a{};
   if (inside && !hard) {
@@ -503,13 +505,14 @@ class BoxKind final : public MethodKind<Kind> {
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const bool hard = ctx.spec.difficulty == Difficulty::hard;
+    const std::optional<RayBranch> branch = ray_branch(ctx.branch);
     const Margins mg = Kind::margins(ctx, *this);
     // hard: near an edge or grazing a face's end, yet on the clear side of these margins
     const double edge_clear = hard ? mg.edge / 3 : mg.edge, face_clear = hard ? mg.face / 5 : mg.face;
     auto accept = [&](const Data& x) {
       const auto rs = solve_core(x);
       std::optional<double> closest;  // how near a decisive crossing comes to a face's edge
-      if (!clear(x, rs, ctx.branch, mg, edge_clear, face_clear, closest)) return false;
+      if (!clear(x, rs, branch, mg, edge_clear, face_clear, closest)) return false;
       return !hard || Kind::hard_enough(x, rs, closest, mg, face_clear);
     };
     const Data d = draw_until(200000, fmt::format("{} ({})", Kind::kName, Kind::kWhat), [&]() -> std::optional<Data> {

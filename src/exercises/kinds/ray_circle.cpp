@@ -78,13 +78,13 @@ struct RayCircle : ball::Family<2> {
     return s;
   }
 
-  static render::Scene key_scene(const Data& d, const geo::RayCircle& rc, const std::string& branch,
+  static render::Scene key_scene(const Data& d, const geo::RayCircle& rc, RayBranch branch,
                           const ExerciseContext& ctx) {
     using render::Role;
     const auto& T = ctx.texts;
     render::Scene s;
     s.title = T.get("ray_circle.title");
-    s.description = T.get(fmt::format("ray_circle.figure.key.{}", branch));
+    s.description = T.get(fmt::format("ray_circle.figure.key.{}", name(branch)));
     render::Panel panel = data_panel(d, rc);
     const Vec2 uh = d.u / geo::norm(d.u);
     // a side a→b of the triangle gets its dimension on the side away from the third vertex c
@@ -111,7 +111,7 @@ struct RayCircle : ball::Family<2> {
                                   outward(rc.P, I, d.C), Role::construction});
       panel.add(render::Dimension{p2(I), p2(d.C), T.get("ray_circle.figure.r"),
                                   outward(I, d.C, rc.P), Role::construction});
-    } else if (branch == "miss") {
+    } else if (branch == RayBranch::miss) {
       // d > r: the radius towards P stops short of P
       const Vec2 to_P = rc.P - d.C;
       const Point2 R = d.C + (d.r / geo::norm(to_P)) * to_P;

@@ -154,7 +154,7 @@ struct RayCube : box::Family<3> {
     const render::Camera cam = space::camera();
     render::Scene s;
     s.title = T.get("ray_cube.title");
-    s.description = T.get(fmt::format("ray_cube.figure.key.{}", box::branch_of(rc)));
+    s.description = T.get(fmt::format("ray_cube.figure.key.{}", name(box::branch_of(rc))));
     render::Panel v3 = view(d, cam, reach_of(d), &faces);
     for (const FaceInPlay& f : faces)
       if (f.J && !(rc.face && *rc.face == f.face))

@@ -93,14 +93,14 @@ struct RayEllipse : Family<RayEllipse> {
 
   // The branch asked, and a figure well away from its boundaries: A clearly in or out, the
   // canonical line clearly through or clearly beside the circle (or clearly pointing away).
-  static bool clear(const geo::RayEllipse& r, const std::string& branch, const Limits& lim) {
+  static bool clear(const geo::RayEllipse& r, std::optional<RayBranch> branch, const Limits& lim) {
     const Vec2 Ac = geo::to_vec(r.canonical_ray.origin);
     const double from_centre = geo::norm(Ac);
     if (std::max(std::abs(Ac.x), std::abs(Ac.y)) > lim.max_canonical) return false;
-    if (branch == "inside" ? !r.inside || from_centre > 1 - lim.margin : from_centre < 1 + lim.margin)
+    if (branch == RayBranch::inside ? !r.inside || from_centre > 1 - lim.margin : from_centre < 1 + lim.margin)
       return false;
     const double d = std::sqrt(r.canonical.d2);
-    if (branch == "miss") {
+    if (branch == RayBranch::miss) {
       if (r.hit) return false;
       // behind or beside, told apart clearly; the half-line's nearest point to O is A_c or P_c
       const double t_proj_length = r.canonical.t_proj * geo::norm(r.canonical_ray.direction);
@@ -108,7 +108,7 @@ struct RayEllipse : Family<RayEllipse> {
       return (t_proj_length > 0 ? d : from_centre) >= 1 + lim.margin;
     }
     if (!r.hit) return false;
-    if (branch == "hit" && d > 1 - lim.margin) return false;  // steeper than min_incidence too
+    if (branch == RayBranch::hit && d > 1 - lim.margin) return false;  // steeper than min_incidence too
     return r.hit->t >= lim.min_gap;
   }
 

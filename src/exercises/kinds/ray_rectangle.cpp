@@ -149,15 +149,15 @@ struct RayRectangle : Family<RayRectangle> {
   // The branch asked, and a figure well away from its boundaries: A_c clearly in or out of the
   // square, every side the method tests clearly met or clearly missed (no corner), the side hit
   // met steeply, a miss clear of the corners.
-  static bool clear(const geo::RayRectangle& r, const std::string& branch, const Limits& lim) {
+  static bool clear(const geo::RayRectangle& r, std::optional<RayBranch> branch, const Limits& lim) {
     const Point2 Ac = r.canonical_ray.origin;
     const Vec2 uc = r.canonical_ray.direction;
     const double reach = std::max(std::abs(Ac.x), std::abs(Ac.y));
     if (reach > lim.max_canonical) return false;
-    if (branch == "inside" ? !r.inside || reach > 1 - lim.margin : reach < 1 + lim.margin) return false;
+    if (branch == RayBranch::inside ? !r.inside || reach > 1 - lim.margin : reach < 1 + lim.margin) return false;
     for (const SideTest& s : side_tests(r))
       if (s.t && std::abs(std::abs(along(s.at, 1 - s.face.axis)) - 1) < lim.margin) return false;
-    if (branch == "miss") {
+    if (branch == RayBranch::miss) {
       if (r.hit) return false;
       // every corner at least `margin` from the half-line (A_c already is from the square)
       for (Point2 corner : {Point2{1, 1}, Point2{-1, 1}, Point2{-1, -1}, Point2{1, -1}}) {

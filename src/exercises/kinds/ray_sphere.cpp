@@ -106,7 +106,7 @@ struct RaySphere : ball::Family<3> {
     return s;
   }
 
-  static render::Scene key_scene(const Data& d, const geo::RaySphere& rs, const std::string& branch,
+  static render::Scene key_scene(const Data& d, const geo::RaySphere& rs, RayBranch branch,
                           const ExerciseContext& ctx) {
     using render::P2;
     using render::Role;
@@ -115,7 +115,7 @@ struct RaySphere : ball::Family<3> {
     const render::Camera cam = space::camera();
     render::Scene s;
     s.title = T.get("ray_sphere.title");
-    s.description = T.get(fmt::format("ray_sphere.figure.key.{}", branch));
+    s.description = T.get(fmt::format("ray_sphere.figure.key.{}", name(branch)));
     render::Panel v3 = view(d, rs, cam, true);
     v3.add(render::PointMark{cam.project(p3(rs.P)), Role::construction,
                              render::Label{"P", cam.project(p3(rs.P)), render::Side::auto_, Role::construction}});
@@ -154,7 +154,7 @@ struct RaySphere : ball::Family<3> {
       plane.add(render::Dimension{C, P, T.get("ray_sphere.figure.d"), outward(C, P, *I), Role::construction});
       plane.add(render::Dimension{P, *I, T.get("ray_sphere.figure.h"), outward(P, *I, C), Role::construction});
       plane.add(render::Dimension{*I, C, T.get("ray_sphere.figure.r"), outward(*I, C, P), Role::construction});
-    } else if (branch == "miss") {
+    } else if (branch == RayBranch::miss) {
       const P2 R{C.x, C.y - d.r};
       plane.add(render::Segment{C, R, Role::construction});
       plane.add(render::Dimension{C, P, T.get("ray_sphere.figure.d"), 0.35, Role::construction});

@@ -97,7 +97,7 @@ struct RaySquare : box::Family<2> {
     const auto& T = ctx.texts;
     render::Scene s;
     s.title = T.get("ray_square.title");
-    s.description = T.get(fmt::format("ray_square.figure.key.{}", box::branch_of(rs)));
+    s.description = T.get(fmt::format("ray_square.figure.key.{}", name(box::branch_of(rs))));
     render::Panel panel = data_panel(d);
     const Vec2 uh = d.u / geo::norm(d.u);
     auto in_view = [&](Point2 p) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "exercises/kind_method.h"
+#include "exercises/kinds/ray_branch.h"
 #include "geometry/ray_transformed.h"
 
 namespace epure::kinds::transformed {
@@ -314,12 +315,13 @@ class TransformedKind final : public MethodKind<Kind> {
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Limits lim = limits(ctx, *this);
     const Difficulty level = ctx.spec.difficulty;
-    const bool inside = ctx.branch == "inside";
+    const std::optional<RayBranch> branch = ray_branch(ctx.branch);
+    const bool inside = branch == RayBranch::inside;
     const Data d = draw_until(50000, fmt::format("{} ({})", Kind::kName, Kind::kWhat), [&]() -> std::optional<Data> {
       auto d = draw_data(rng, level, Kind::kShape, inside, lim);
       if (!d) return std::nullopt;
       const auto r = geo::intersect(world_ray(*d), Kind::figure_of(*d));
-      if (!Kind::clear(r, ctx.branch, lim)) return std::nullopt;
+      if (!Kind::clear(r, branch, lim)) return std::nullopt;
       if constexpr (requires { Kind::easy(*d, r, ctx); })
         if (level == Difficulty::easy && !Kind::easy(*d, r, ctx)) return std::nullopt;
       if (!well_conditioned<Kind>(*d, ctx.decimals, lim)) return std::nullopt;
