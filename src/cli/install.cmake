@@ -47,7 +47,7 @@ install(CODE "
 
 # The Debian package. The version is the project's (CMakeLists.txt: project(VERSION)), as
 # `epure --version` says it; Depends is what dpkg-shlibdeps finds the binary linked with (libc,
-# cairo, pango, qpdf, libzip, qrencode, fmt, jemalloc, libseccomp, …) plus the font the PDFs
+# cairo, pango, libzip, qrencode, fmt, jemalloc, libseccomp, …) plus the font the PDFs
 # embed, which pango loads at run time by name.
 set(EPURE_PACKAGE_MAINTAINER "epure maintainers <epure@example.org>" CACHE STRING "The Debian package's Maintainer field")
 set(CPACK_GENERATOR DEB)
