@@ -52,7 +52,7 @@ render::PdfMetadata pdf_metadata(const WorksheetSpec& spec, const std::string& t
   return m;
 }
 
-// A class-set PDF written as it is drawn, its links with it (render/pdf_link_writer.h),
+// A class-set PDF written as it is drawn, its links with it (render/pdf_stream_writer.h),
 // committed at the end (never a half file). Nothing of the set's PDF is held in memory.
 struct ClassSetPdf {
   AtomicFile file;

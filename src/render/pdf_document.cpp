@@ -44,7 +44,7 @@ void check(cairo_status_t status, const char* what) {
 // write failed.
 struct PdfDocument::Stream {
   explicit Stream(PdfSink sink) : writer(std::move(sink)) {}
-  PdfLinkWriter writer;
+  PdfStreamWriter writer;
   std::exception_ptr error;
   bool discard = false;  // a document dropped unfinished: whatever cairo still writes goes nowhere
 
@@ -109,9 +109,8 @@ PdfDocument::~PdfDocument() {
   }
 }
 
-void PdfDocument::begin_page(PageSize size, std::string_view label) {
+void PdfDocument::begin_page(PageSize size) {
   cairo_pdf_surface_set_size(surface_, size.width_pt, size.height_pt);
-  if (!label.empty()) cairo_pdf_surface_set_page_label(surface_, std::string(label).c_str());
   ++pages_;
 }
 
@@ -144,15 +143,25 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
   for (const PageLink& link : links)
     if (link.page < 0 || static_cast<std::size_t>(link.page) >= pages.size())
       throw std::runtime_error(fmt::format("a PDF link on page {} of {}", link.page + 1, pages.size()));
-  if (outline && !label.empty()) {
-    const std::string link = fmt::format("page={}", pages_ + 1);
-    cairo_pdf_surface_add_outline(surface_, CAIRO_PDF_OUTLINE_ROOT, std::string(label).c_str(), link.c_str(),
-                                  static_cast<cairo_pdf_outline_flags_t>(0));
+  // The names in a viewer's page list and the bookmark, written by the stream writer (not
+  // cairo's, which keeps ~500 bytes a sheet until the end). A document's pages are "<label> 1/n"
+  // to "<label> n/n"; pages numbered otherwise (a part of a document) are named one by one.
+  bool whole = true;
+  for (std::size_t i = 0; i < pages.size(); ++i)
+    if (pages[i].number != static_cast<int>(i) + 1 || pages[i].count != static_cast<int>(pages.size())) whole = false;
+  if (pages.empty()) {
+    // nothing to name
+  } else if (whole || label.empty()) {
+    stream_->writer.add_run({std::string(label), static_cast<int>(pages.size()), true, outline});
+  } else {
+    for (std::size_t i = 0; i < pages.size(); ++i)
+      stream_->writer.add_run(
+          {fmt::format("{} {}/{}", label, pages[i].number, pages[i].count), 1, false, outline && i == 0});
   }
   std::vector<PageLink> on_page;
   for (std::size_t i = 0; i < pages.size(); ++i) {
     const LaidOutPage& page = pages[i];
-    begin_page(page.size, label.empty() ? std::string() : fmt::format("{} {}/{}", label, page.number, page.count));
+    begin_page(page.size);
     on_page.clear();
     for (const PageLink& link : links)
       if (static_cast<std::size_t>(link.page) == i) on_page.push_back(link);
@@ -166,9 +175,12 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
 }
 
 void PdfDocument::add_blank(PageSize size, std::string_view label) {
-  begin_page(size, label);
+  stream_->writer.add_run({std::string(label), 1, false, false});
+  begin_page(size);
+  stream_->writer.begin_page(pages_, size.height_pt, {});
   cairo_show_page(cr_);
   check_stream();
+  stream_->writer.end_page();
 }
 
 void PdfDocument::finish() {

@@ -2,7 +2,7 @@
 // Laid-out pages as a PDF, drawn with cairo and pango (cairo_canvas.h) through the same page
 // painter as the SVG pages. Text is real text in embedded DejaVu Sans subsets, so it can be
 // selected, searched and extracted. The bytes are streamed to a sink as cairo produces them,
-// the links written in on the way (pdf_link_writer.h); with the creation date fixed
+// the links written in on the way (pdf_stream_writer.h); with the creation date fixed
 // (SOURCE_DATE_EPOCH), the same pages give the same bytes.
 #include <cstdint>
 #include <memory>
@@ -14,7 +14,7 @@
 
 #include "render/layout.h"
 #include "render/page_painter.h"
-#include "render/pdf_link_writer.h"
+#include "render/pdf_stream_writer.h"
 
 typedef struct _cairo cairo_t;
 typedef struct _cairo_surface cairo_surface_t;
@@ -65,7 +65,7 @@ class PdfDocument {
   void finish();
 
  private:
-  void begin_page(PageSize size, std::string_view label);
+  void begin_page(PageSize size);
   void check_stream();
   struct Stream;  // what cairo writes into: the link writer, and the sink's error
   std::unique_ptr<Stream> stream_;

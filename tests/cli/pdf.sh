@@ -64,6 +64,40 @@ PY
 else
   python3 "$links" "$tmp/a/keys.pdf" | grep -q . && fail "keys.pdf has links, and the set no explore.html"
 fi
+# The bookmarks and the page labels (written by render/pdf_stream_writer, not cairo), read back
+# with qpdf --json: one bookmark per sheet, in order, named by its id and opening its first page;
+# its pages named "<id> 1/n" to "<id> n/n" in a viewer's page list, a duplex blank page "<id>".
+python3 - "$tmp" <<'PY' || fail "the PDFs' bookmarks and page labels"
+import json, re, subprocess, sys
+tmp = sys.argv[1]
+ids = [s["id"] for s in json.load(open(f"{tmp}/a/key.json"))["sheets"]]
+ok = True
+for name in ("a", "d"):
+    for f in ("sheets", "keys"):
+        j = json.loads(subprocess.run(["qpdf", "--json", "--json-key=outlines", "--json-key=pagelabels",
+                                       "--json-key=pages", f"{tmp}/{name}/{f}.pdf"],
+                                      check=True, capture_output=True, text=True).stdout)
+        count = len(j["pages"])
+        ranges = sorted((r["index"], r["label"]) for r in j["pagelabels"])
+        def label(i):
+            index, d = [r for r in ranges if r[0] <= i][-1]
+            text = d.get("/P", "u:")[2:]
+            return text + (str(d.get("/St", 1) + i - index) if "/S" in d else "")
+        labels = [label(i) for i in range(count)]
+        marks = [(o["title"], o["destpageposfrom1"]) for o in j["outlines"]]
+        where = f"{name}/{f}.pdf"
+        if [t for t, _ in marks] != ids:
+            print(f"{where}: bookmarks {marks}, expected {ids}"); ok = False; continue
+        starts = [p for _, p in marks] + [count + 1]
+        for k, sheet in enumerate(ids):
+            named = labels[starts[k] - 1:starts[k + 1] - 1]
+            if named and named[-1] == sheet and name == "d":
+                named = named[:-1]  # the blank page before the next sheet
+            n = len(named)
+            if named != [f"{sheet} {i}/{n}" for i in range(1, n + 1)] or n == 0:
+                print(f"{where}: pages of {sheet} named {named}"); ok = False
+sys.exit(0 if ok else 1)
+PY
 ls "$tmp/a" | grep -q '\.tmp$' && fail "a temporary file was left behind"
 
 pages() { pdfinfo "$1" | awk '/^Pages:/ {print $2}'; }

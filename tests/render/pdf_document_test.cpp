@@ -90,7 +90,7 @@ TEST_CASE("pdf: links, as Link annotations with a URI, counted in the whole PDF'
   two.finish();
   CHECK(two.links() == 2);
   CHECK(testing::count(bytes, "/URI (explore.html#K7QF-3M2X.1)") == 2);
-  // (tests/render/pdf_link_writer_test.cpp reads the pages back; tests/cli/pdf.sh with qpdf)
+  // (tests/render/pdf_stream_writer_test.cpp reads the pages back; tests/cli/pdf.sh with qpdf)
 }
 
 TEST_CASE("pdf: a sink that fails is an exception, not a file that looks whole") {

@@ -1,4 +1,4 @@
-#include "render/pdf_link_writer.h"
+#include "render/pdf_stream_writer.h"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -151,7 +151,7 @@ TEST_CASE("pdf links: annotations written into cairo's stream, every object wher
   CHECK(again == pdf);
 }
 
-TEST_CASE("pdf links: a PDF without links is cairo's, byte for byte") {
+TEST_CASE("pdf links: without links, the same bytes whether the sink can overwrite or not") {
   const Document doc = sample_document(2);
   const auto pages = layout_document(doc);
   std::string through, plain;
@@ -196,14 +196,14 @@ TEST_CASE("pdf links: what cannot be written whole is an error, not a file witho
   }
   SUBCASE("3. a page that is not cairo's") {
     std::string out;
-    PdfLinkWriter writer(string_sink(out));
+    PdfStreamWriter writer(string_sink(out));
     writer.begin_page(1, 842, links);
     writer.write("1 0 obj\n<< /Type /Pages >>\nendobj\n");
     CHECK_THROWS_WITH_AS(writer.end_page(), doctest::Contains("cannot add the PDF's links"), std::runtime_error);
   }
   SUBCASE("4. a page object that is not the last thing written") {
     std::string out;
-    PdfLinkWriter writer(string_sink(out));
+    PdfStreamWriter writer(string_sink(out));
     writer.begin_page(1, 842, links);
     writer.write("3 0 obj\n<< /Type /Page % 1\n   /Parent 1 0 R\n>>\nendobj\n4 0 obj\n   12\nendobj\n");
     CHECK_THROWS_AS(writer.end_page(), std::runtime_error);
@@ -212,7 +212,7 @@ TEST_CASE("pdf links: what cannot be written whole is an error, not a file witho
   const std::string page = "%PDF-1.5\n1 0 obj\n<< /Type /Page % 1\n   /Parent 2 0 R\n>>\nendobj\n";
   const auto with_trailer = [&](const std::string& tail) {
     std::string out;
-    PdfLinkWriter writer(string_sink(out));
+    PdfStreamWriter writer(string_sink(out));
     writer.begin_page(1, 842, links);
     writer.write(page);
     writer.end_page();
@@ -250,4 +250,107 @@ TEST_CASE("pdf links: what cannot be written whole is an error, not a file witho
   SUBCASE("9. a table in two subsections") {
     CHECK_THROWS_AS(with_trailer(objects_2 + "xref\n1 2\n0000000009 00000 n \n"), std::runtime_error);
   }
+  SUBCASE("10. a bookmark on a page cairo never wrote") {
+    std::string out;
+    PdfStreamWriter writer(string_sink(out));
+    writer.add_run({"K7QF-3M2X", 1, true, true});
+    CHECK_THROWS_WITH_AS(writer.begin_trailer(), doctest::Contains("did not write"), std::runtime_error);
+  }
+  SUBCASE("11. a catalog that is not cairo's last object") {
+    std::string out;
+    PdfStreamWriter writer(string_sink(out));
+    writer.add_run({"K7QF-3M2X", 1, true, false});
+    writer.begin_page(1, 842, {});
+    writer.write(page);
+    writer.end_page();
+    writer.begin_trailer();
+    CHECK_THROWS_AS(writer.write("2 0 obj\n<< /Type /Catalog\n   /Pages 3 0 R\n>>\nendobj\n4 0 obj\n<< >>\nendobj\nxref\n"),
+                    std::runtime_error);
+  }
+}
+
+TEST_CASE("pdf stream: with neither links nor names, cairo's bytes pass through untouched") {
+  const std::string cairo = "%PDF-1.5\n1 0 obj\n<< /Type /Page % 1\n   /Parent 2 0 R\n>>\nendobj\n"
+                            "2 0 obj\n<< /Type /Catalog\n   /Pages 3 0 R\n>>\nendobj\nxref\n0 1\n";
+  std::string out;
+  PdfStreamWriter writer(PdfSink{[&](std::string_view b) { out.append(b); }, {}});
+  writer.add_run({"", 1, true, true});  // an unnamed page: no label, no bookmark
+  writer.begin_page(1, 842, {});
+  writer.write(cairo.substr(0, 60));
+  writer.end_page();
+  writer.begin_trailer();
+  writer.write(cairo.substr(60));
+  writer.finish();
+  CHECK(out == cairo);
+}
+
+TEST_CASE("pdf stream: bookmarks and page labels, in the catalog and where the table says") {
+  const Document doc = sample_document(3);
+  const auto pages = layout_document(doc);
+  REQUIRE(pages.size() >= 2);
+  const int n = static_cast<int>(pages.size());
+  const std::vector<PageLink> link{{1, {50, 80, 200, 14}, "explore.html#K7QF-3M2X.2"}};
+
+  std::string pdf;
+  PdfDocument out(string_sink(pdf), metadata());
+  out.add(pages, "K7QF-3M2X", true, {}, link);
+  out.add_blank(PageSize::a4(), "K7QF-3M2X");
+  out.add(pages, "Élève 2 — π", true);  // not ASCII: UTF-16BE
+  out.add(pages, "K7QF-3M2Z", false);   // named pages, no bookmark
+  out.finish();
+  const auto all = objects(pdf);
+
+  // the pages' object numbers, in order
+  std::vector<std::int64_t> page_objects;
+  for (int number = 1;; ++number) {
+    const std::string mark = fmt::format("<< /Type /Page % {}\n", number);
+    std::int64_t found = -1;
+    for (const auto& [k, body] : all)
+      if (body.rfind(mark, 0) == 0) found = k;
+    if (found < 0) break;
+    page_objects.push_back(found);
+  }
+  REQUIRE(page_objects.size() == static_cast<std::size_t>(3 * n + 1));
+
+  // the catalog points at the outline and the labels; cairo's own catalog entries are kept
+  std::string catalog;
+  for (const auto& [k, body] : all)
+    if (body.rfind("<< /Type /Catalog\n", 0) == 0) catalog = body;
+  REQUIRE(!catalog.empty());
+  CHECK(catalog.find("/Pages ") != std::string::npos);
+  const auto ref_after = [](const std::string& text, std::string_view key) {
+    const std::size_t at = text.find(key);
+    REQUIRE(at != std::string::npos);
+    return integer(std::string_view(text).substr(at + key.size() + 1));
+  };
+  const std::string& outline = all.at(ref_after(catalog, "/Outlines"));
+  CHECK(outline.find("/Type /Outlines") != std::string::npos);
+  CHECK(ref_after(outline, "/Count") == 2);
+
+  // two bookmarks, in order, each opening its document's first page
+  const std::string& first = all.at(ref_after(outline, "/First"));
+  const std::string& last = all.at(ref_after(outline, "/Last"));
+  CHECK(ref_after(first, "/Next") == ref_after(outline, "/Last"));
+  CHECK(ref_after(last, "/Prev") == ref_after(outline, "/First"));
+  CHECK(first.find("/Prev") == std::string::npos);
+  CHECK(last.find("/Next") == std::string::npos);
+  CHECK(first.find("/Title (K7QF-3M2X)") != std::string::npos);
+  // "Élève 2 — π": É (00C9), è (00E8), the dash (2014), π (03C0)
+  CHECK(last.find("/Title <FEFF00C9006C00E8007600650020003200202014002003C0>") != std::string::npos);
+  CHECK(first.find(fmt::format("/Dest [{} 0 R /XYZ null null 0]", page_objects[0])) != std::string::npos);
+  CHECK(last.find(fmt::format("/Dest [{} 0 R /XYZ null null 0]", page_objects[static_cast<std::size_t>(n + 1)])) !=
+        std::string::npos);
+
+  // a label per page: "<name> k/n", the blank page its document's name
+  const std::string& labels = all.at(ref_after(catalog, "/PageLabels"));
+  CHECK(labels.find(fmt::format("   0 << /P (K7QF-3M2X 1/{}) >>\n", n)) != std::string::npos);
+  CHECK(labels.find(fmt::format("   {} << /P (K7QF-3M2X {}/{}) >>\n", n - 1, n, n)) != std::string::npos);
+  CHECK(labels.find(fmt::format("   {} << /P (K7QF-3M2X) >>\n", n)) != std::string::npos);
+  CHECK(labels.find(fmt::format("   {} << /P <FEFF00C9006C00E8007600650020003200202014002003C000200031002F", n + 1)) !=
+        std::string::npos);
+  CHECK(labels.find(fmt::format("   {} << /P (K7QF-3M2Z {}/{}) >>\n", 3 * n, n, n)) != std::string::npos);
+  CHECK(testing::count(labels, " << /P ") == 3 * n + 1);
+
+  // the link still where it was, numbered before the outline's objects
+  CHECK(annots(all.at(page_objects[1])).size() == 1);
 }
