@@ -30,10 +30,15 @@ render::Box view_around(const std::vector<render::P2>& points, double margin, do
 namespace {
 
 render::Section begin_section(const ExerciseContext& ctx, std::string_view title_key) {
+  render::Section s;
+  if (ctx.n == 0 && ctx.label.empty()) {
+    // not on a sheet (the explorer's view of a kind): no number to give it
+    s.add(render::Heading{ctx.texts.get(title_key), 1});
+    return s;
+  }
   const std::string label = !ctx.label.empty()
                                 ? ctx.label
                                 : ctx.texts.format("common.exercise_label", {{"n", std::to_string(ctx.n)}});
-  render::Section s;
   s.add(render::Heading{ctx.texts.format("common.exercise_heading", {{"label", label}, {"title", ctx.texts.get(title_key)}}), 1});
   return s;
 }

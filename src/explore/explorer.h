@@ -37,7 +37,8 @@ std::string words(std::string_view language);
 std::string starting_instance(std::string_view kind);
 
 // The view of `instance` (a solve input) in `language` ("en", "fr"), for exercise `n` of a
-// sheet (1 outside one), as a JSON object:
+// sheet, or outside one with n = 0 (the key's heading is then the exercise's name alone, not
+// "Exercise 1"), as a JSON object:
 //   {"kind", "instance" (canonical text), "solution" (the key's solve output), "svg" (the figure with its handles),
 //    "steps" (HTML of the worked solution), "frame" (the map of the figure's first panel, to be
 //    handed back to drag), "handles": [{"id", "x", "y"}], "space" (true when the data are in
@@ -45,7 +46,7 @@ std::string starting_instance(std::string_view kind);
 //    when the data cannot be solved: then no svg nor steps)}.
 // With `frozen` (a frame this function returned), the first panel keeps that view, so that
 // the figure stays still under a dragging pointer; the kind's own framing comes back on release.
-std::string view(std::string_view instance, std::string_view language, int n = 1,
+std::string view(std::string_view instance, std::string_view language, int n = 0,
                  std::string_view frozen = {});
 
 // The same view in three parts, for the page: `head` is view's JSON object without "svg" and
@@ -55,7 +56,7 @@ std::string view(std::string_view instance, std::string_view language, int n = 1
 struct ViewParts {
   std::string head, svg, steps;
 };
-ViewParts view_parts(std::string_view instance, std::string_view language, int n = 1,
+ViewParts view_parts(std::string_view instance, std::string_view language, int n = 0,
                      std::string_view frozen = {});
 
 // The instance with handle `handle` moved to the figure point (x, y) (SVG user units of the

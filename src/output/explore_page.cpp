@@ -6,12 +6,35 @@
 #include <utility>
 
 #include "embed/embedded.h"
+#include "exercises/texts.h"
+#include "render/markup_escape.h"
 
 namespace epure::output {
 
 namespace {
 // The page's configuration element, as src/explore/page.html writes it empty.
 constexpr std::string_view kConfig = "<script id=\"epure-config\" type=\"application/json\">{}</script>";
+// Its language and title, as page.html writes them; set to the set's before the script runs, so
+// that a reader, a search or a screen reader that never runs it gets them too.
+constexpr std::string_view kLang = "<html lang=\"en\">";
+constexpr std::string_view kTitle = "<title></title>";
+
+std::string head_in(std::string_view page_head, std::string_view language) {
+  std::string head(page_head);
+  const auto lang_at = head.find(kLang);
+  const auto title_at = head.find(kTitle);
+  if (lang_at == std::string::npos || title_at == std::string::npos || title_at < lang_at)
+    throw std::logic_error("explore page: no <html lang> or <title> to set");
+  std::string title = "<title>";
+  render::append_markup_escaped(title, Texts::builtin(language).get("explore.title"));
+  title += "</title>";
+  head.replace(title_at, kTitle.size(), title);
+  std::string lang = "<html lang=\"";
+  render::append_markup_escaped(lang, language);
+  lang += "\">";
+  head.replace(lang_at, kLang.size(), lang);
+  return head;
+}
 }  // namespace
 
 bool explore_available() { return explore_page().has_value(); }
@@ -28,7 +51,7 @@ ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write) : w
   page_ = *page;
   config_at_ = page_.find(kConfig);
   if (config_at_ == std::string_view::npos) throw std::logic_error("explore page: no configuration element");
-  write_(page_.substr(0, config_at_));
+  write_(head_in(page_.substr(0, config_at_), language));
   write_("<script id=\"epure-config\" type=\"application/json\">");
   // {"lang":…,"set":{"<id>":[…],…}}, as nlohmann::json's dump() writes the object: no spaces,
   // keys in order ("lang" < "set"; the ids added in increasing order)

@@ -232,6 +232,48 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   await page.close();
 }
 
+// ---- 2b. the page reads like the PDFs: language, title, tab names, arrows, no raw JSON -----------
+{
+  const raw = fs.readFileSync(pagePath, "utf8");
+  const { page, refused, errors } = await open(pagePath);
+  const words = lang => page.evaluate(l => JSON.parse(window.Module.words(l)), lang);
+  const en = await words("en"), fr = await words("fr");
+  check(raw.includes('<html lang="en">') && raw.includes(`<title>${en.title}</title>`),
+        "page: lang and title in the markup itself (English page)", (raw.match(/<title>[^<]*<\/title>/) || [""])[0]);
+  for (const [lang, w] of [["en", en], ["fr", fr]]) {
+    await page.select("#lang", lang);
+    const got = await page.evaluate(() => ({
+      lang: document.documentElement.lang, title: document.title,
+      tabs: [...document.querySelectorAll("#views button")].map(b => [b.dataset.kind, b.textContent]),
+    }));
+    check(got.lang === lang && got.title === w.title && w.title.length > 0, `page (${lang}): lang and title`, JSON.stringify([got.lang, got.title]));
+    const bad = got.tabs.filter(([k, t]) => t !== w["tab." + k] || /_/.test(t) || t === k);
+    check(got.tabs.length >= 10 && bad.length === 0, `page (${lang}): tabs named as the course names the exercises`, JSON.stringify(bad.length ? bad : got.tabs.map(t => t[1])));
+  }
+  // a view of its own is titled by the exercise's name, not "Exercise 1"
+  await page.click(`#views button[data-kind="vectors"]`);
+  const h = await page.$eval("#steps h2", e => e.textContent);
+  check(h.length > 0 && !/^Exerci[cs]e/.test(h), "page: a view outside a sheet is titled by the exercise's name", h);
+  // vectors wear an arrow, as on paper: no bar (a mesure algébrique in French), an arrowhead drawn
+  const vec = await page.$$eval("#steps .vec", els => els.map(e => {
+    const c = getComputedStyle(e);
+    return { border: c.borderTopWidth, image: c.backgroundImage, width: e.getBoundingClientRect().width };
+  }));
+  check(vec.length > 0 && vec.every(v => v.border === "0px" && /svg/.test(v.image) && /gradient/.test(v.image) && v.width > 0),
+        "page: vectors drawn with an arrow over their name, not a bar", JSON.stringify(vec.slice(0, 2)));
+  await page.screenshot({ path: path.join(outDir, "view-vectors-fr-arrows.png"), clip: { x: 0, y: 0, width: 1400, height: 700 } });
+  // no JSON on the page; the data go to the clipboard as a solve line
+  const text = await page.evaluate(() => document.body.innerText);
+  check(!/\{"kind"/.test(text) && !(await page.$("#data")), "page: no raw JSON on the page", text.slice(-120));
+  await page.click("#copy");
+  await page.waitForFunction(() => window.epureCopied !== undefined, { timeout: 5000 }).catch(() => {});
+  const copied = await page.evaluate(() => ({ line: window.epureCopied, current: window.epure.current(), status: document.getElementById("copied").textContent }));
+  check(typeof copied.line === "string" && JSON.stringify(JSON.parse(copied.line)) === JSON.stringify(copied.current),
+        "page: “copy as a solve line” copies the data shown", `${copied.line} (${copied.status})`);
+  check(refused.length === 0 && errors.length === 0, "page: no request outside the file, no console error", JSON.stringify({ refused, errors }));
+  await page.close();
+}
+
 // ---- 3. a student's own exercise from a link ------------------------------------------------------
 {
   const key = JSON.parse(fs.readFileSync(path.join(setDir, "key.json"), "utf8"));

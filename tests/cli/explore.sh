@@ -29,6 +29,9 @@ grep -Eq '(src|href)="(https?:|//|[a-z0-9_./-]+\.(js|wasm|css))' "$page" && fail
 grep -q '<script id="epure-config" type="application/json">{"lang":"fr","set":{}}</script>' "$page" ||
   fail "the page does not open in French"
 grep -q 'data:application/octet-stream;base64,' "$page" || fail "no inlined WebAssembly"
+# its language and title in the markup itself, before any script runs
+grep -q '^<html lang="fr">$' "$page" || fail "explore.html is not lang=\"fr\": $(grep -m1 '<html' "$page")"
+grep -q '^<title>epure — corrigés à manipuler</title>$' "$page" || fail "explore.html's title: $(grep -m1 '<title' "$page")"
 "$EPURE" explore --out "$tmp/y" --lang de 2>"$tmp/err2" && fail "--lang de accepted"
 [ -s "$tmp/err2" ] || fail "--lang de: no message"
 # generate writes it beside index.html, with the set's instances, and links each exercise

@@ -249,6 +249,33 @@ TEST_CASE("explore: the page's words come from the templates, in both languages"
   CHECK(std::string(en["hint_space"]).find("Shift") != std::string::npos);
 }
 
+TEST_CASE("explore: tabs named as the course names the exercises; a view outside a sheet is not 'Exercise 1'") {
+  const json kinds = json::parse(ex::kinds());
+  for (const char* lang : {"en", "fr"}) {
+    const json w = json::parse(ex::words(lang));
+    CHECK(w["title"] != "");
+    for (const auto& k : kinds) {
+      const std::string kind = k.get<std::string>();
+      CAPTURE(lang);
+      CAPTURE(kind);
+      REQUIRE(w.contains("tab." + kind));
+      const std::string tab = w["tab." + kind];
+      CHECK(tab.find('_') == std::string::npos);  // not the internal name
+      CHECK(tab != kind);
+    }
+  }
+  CHECK(json::parse(ex::words("fr"))["tab.ray_circle"] == "Rayon / cercle");
+  CHECK(json::parse(ex::words("fr"))["title"] != json::parse(ex::words("en"))["title"]);
+
+  // the key's heading: the exercise's name alone outside a sheet, "Exercice 3 — …" as the third
+  // exercise of one
+  const std::string start = ex::starting_instance("ray_circle");
+  const std::string alone = json::parse(ex::view(start, "fr"))["steps"];
+  CHECK(alone.rfind("<h2>Intersection d’un rayon et d’un cercle</h2>", 0) == 0);
+  const std::string third = json::parse(ex::view(start, "fr", 3))["steps"];
+  CHECK(third.rfind("<h2>Exercice 3 — Intersection d’un rayon et d’un cercle</h2>", 0) == 0);
+}
+
 TEST_CASE("explore: the view in parts is the view; without tolerances the key reads the same") {
   using namespace epure;
   for (const ExerciseKind* kind : all_kinds()) {
