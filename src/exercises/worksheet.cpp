@@ -161,6 +161,8 @@ render::Document WorksheetSet::key_document(const Sheet& sheet) const {
   doc.language = language_;
   doc.words = page_words(texts);
   doc.page = page_size(spec_.page);
+  doc.breaks = render::Document::Breaks::between_blocks;  // the worked steps may run on
+  doc.page_budget = 6;
   for (const auto& e : sheet.exercises) doc.sections.push_back(e.key);
   return doc;
 }

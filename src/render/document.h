@@ -44,8 +44,9 @@ struct Figure {
 
 using Block = std::variant<Heading, Paragraph, AnswerField, AnswerLine, Figure>;
 
-// One exercise (or the preamble): a unit that layout keeps together where it can, and never
-// separates a Figure from the Paragraph just before it.
+// One exercise (or the preamble): a unit that layout keeps together as Document::breaks says,
+// and never separates a Figure from the Paragraph just before it nor from the fields or answers
+// just after it.
 struct Section {
   std::vector<Block> blocks;
   // Where the section's heading links to in a PDF (a URI relative to the set's directory: the
@@ -89,6 +90,17 @@ struct Document {
   // paper printed duplex. The layout meets it, where it can, by setting its tallest figures
   // smaller (layout.h), never by crowding the text.
   int page_budget = 0;
+  // Where a page may end inside a section. Wherever it ends, it ends between blocks or between
+  // sentences of a paragraph: never inside a sentence or a parenthesis, never right after a
+  // heading, never between a figure and the paragraph before it or the fields after it.
+  enum class Breaks {
+    // Nowhere, unless the section alone is taller than a page: an exercise read on one page, its
+    // heading, statement, figure and fields together (a student's sheet).
+    whole,
+    // Between its paragraphs and blocks too, where the rules above allow (a key, whose worked
+    // steps may run on to the next page; its figure and answer table stay with the last steps).
+    between_blocks,
+  } breaks = Breaks::whole;
   PageWords words;
   PageSize page;
   std::vector<Section> sections;

@@ -28,14 +28,14 @@ constexpr double kUnbounded = 1e9;
 // The prompt columns depend on the run and the column's width only: remembered.
 double SectionAtoms::field_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
   const RowKey key{&blocks[from], 0, bits(width_), bits(prompt_share_), false, false};
-  if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
-  return prompt_columns_[key] = measure_field_prompt_column(blocks, from);
+  if (auto it = memo_.prompt_columns.find(key); it != memo_.prompt_columns.end()) return it->second;
+  return memo_.prompt_columns[key] = measure_field_prompt_column(blocks, from);
 }
 
 double SectionAtoms::key_prompt_column(const std::vector<Block>& blocks, std::size_t from) {
   const RowKey key{&blocks[from], 0, bits(width_), 0, true, false};
-  if (auto it = prompt_columns_.find(key); it != prompt_columns_.end()) return it->second;
-  return prompt_columns_[key] = measure_key_prompt_column(blocks, from);
+  if (auto it = memo_.prompt_columns.find(key); it != memo_.prompt_columns.end()) return it->second;
+  return memo_.prompt_columns[key] = measure_key_prompt_column(blocks, from);
 }
 
 double SectionAtoms::measure_field_prompt_column(const std::vector<Block>& blocks, std::size_t from) const {
@@ -45,10 +45,19 @@ double SectionAtoms::measure_field_prompt_column(const std::vector<Block>& block
   double body = 0;
   const double size = s_.body_size;
   using K = AnswerField::Kind;
+  // The boxes line up after the prompts of the fields that have boxes; a question answered by
+  // ticks sets its own (answer_field), unless the run has only ticks.
+  bool any_boxes = false;
   for (std::size_t i = from; i < blocks.size(); ++i) {
     const auto* f = std::get_if<AnswerField>(&blocks[i]);
     if (!f) break;
-    widest = std::max(widest, text_width(f->prompt, size));
+    any_boxes = any_boxes || f->kind == K::number || f->kind == K::point || f->kind == K::point3;
+  }
+  for (std::size_t i = from; i < blocks.size(); ++i) {
+    const auto* f = std::get_if<AnswerField>(&blocks[i]);
+    if (!f) break;
+    const bool boxes = f->kind == K::number || f->kind == K::point || f->kind == K::point3;
+    if (boxes || !any_boxes) widest = std::max(widest, text_width(f->prompt, size));
     const double id = f->question_id.empty() ? 0 : text_width(f->question_id, s_.id_size) + kIdGap;
     double need = s_.number_box_width;
     if (f->kind == K::point || f->kind == K::point3) {
@@ -95,7 +104,7 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
   auto id = plain(f.question_id);
   const double id_w = f.question_id.empty() ? 0 : text_width(id, s_.id_size);
   const double limit = right_ - (id_w > 0 ? id_w + kIdGap : 0);
-  const double x0 = left_ + field_column_;
+  double x0 = left_ + field_column_;  // where the boxes, or the ticks, start
 
   using K = AnswerField::Kind;
   const bool ticks = f.kind == K::choice || f.kind == K::faces || f.kind == K::boolean;
@@ -130,14 +139,90 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
     }
   }
 
-  // The prompt, left of the boxes, wrapped if wider than its column. A question asked as a
-  // question ("Is A inside the ellipse?") would stand in a thin column of words beside its
-  // ticks: it reads better, and takes less height, on lines of its own above them.
+  // The prompt, left of the boxes, wrapped if wider than its column. A question answered by
+  // ticks is set the shortest way (on a tie, the first): beside its ticks, on one or two lines, in
+  // the boxes' column or a column as wide as it needs ("Does the ray hit the square?  □ yes
+  // □ no" in a run of short prompts such as "t ="); or on lines of its own above them (a question
+  // asked as a question, "Is A inside the ellipse?", would otherwise stand in a thin column of
+  // words).
   const auto* prompt_lines = &text_.wrap(f.prompt, size, field_column_ - kPromptGap);
   bool prompt_above = false;
-  if (ticks && prompt_lines->size() > 2) {
+
+  std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
+  std::vector<std::vector<TextRun>> labels;
+  std::vector<double> widths;
+  // The options on as few rows as fit from `x`, in aligned columns: six faces become two rows
+  // of three rather than five and a lonely one. A last choice set apart ("none" after the sides)
+  // gets a row of its own.
+  struct Grid {
+    std::size_t per_row = 0, rows = 0, grid_rows = 0;
+    std::vector<double> columns;
+  };
+  const std::size_t n_options = ticks ? (f.kind == K::boolean ? 2 : f.choices.size()) : 0;
+  const std::size_t grid_n = f.last_choice_apart && n_options > 1 ? n_options - 1 : n_options;
+  auto grid_from = [&](double x) {
+    Grid g;
+    g.per_row = grid_n;
+    for (std::size_t rows = 1; rows <= grid_n; ++rows) {
+      g.per_row = (grid_n + rows - 1) / rows;
+      g.columns.assign(g.per_row, 0);
+      for (std::size_t i = 0; i < grid_n; ++i) g.columns[i % g.per_row] = std::max(g.columns[i % g.per_row], widths[i]);
+      double total = kOptionGap * static_cast<double>(g.per_row - 1);
+      for (double c : g.columns) total += c;
+      if (x + total <= limit + kFitSlack) break;
+    }
+    g.grid_rows = grid_n == 0 ? 1 : (grid_n + g.per_row - 1) / g.per_row;
+    g.rows = g.grid_rows + (grid_n < n_options ? 1 : 0);
+    return g;
+  };
+  Grid grid;
+  if (ticks) {
+    if (f.kind == K::boolean) {
+      options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
+    } else {
+      for (const auto& c : f.choices) options.emplace_back(c, c);
+    }
+    for (const auto& o : options) {
+      labels.push_back(parse_rich_text(o.first));
+      widths.push_back(s_.tick_size + kTickGap + text_width(labels.back(), size));
+    }
+    const double tick_row = s_.tick_row_height;
+    const auto lines_height = [&](std::size_t lines) { return static_cast<double>(lines) * body_line_; };
+    // A prompt wrapped at `width` whose every line fits it (no word longer than the column), on
+    // two lines at most: a longer question reads better above its ticks than in a thin column.
+    const auto fits_in = [&](double width) {
+      const WrappedText& w = text_.wrapped(f.prompt, size, width);
+      return w.widest <= width + kFitSlack && w.count() <= 2;
+    };
+    constexpr double kNever = 1e300;
+    double best = kNever;
+    // Beside the ticks, in a column `column` wide (from the row's left): the boxes' column, or
+    // one as wide as the prompt needs, leaving the options one to a row at least, or all on one.
+    const double widest_option = *std::max_element(widths.begin(), widths.end());
+    double one_row = kOptionGap * static_cast<double>(grid_n > 0 ? grid_n - 1 : 0);
+    for (std::size_t i = 0; i < grid_n; ++i) one_row += widths[i];
+    const double prompt_w = text_.wrapped(f.prompt, size, kUnbounded).widest + kPromptGap;
+    const double room = limit - left_;
+    for (const double column : {std::max(field_column_, std::min(prompt_w, room - widest_option)),
+                                std::min(prompt_w, room - one_row)}) {
+      if (column < field_column_ - kFitSlack || !fits_in(column - kPromptGap)) continue;
+      const Grid g = grid_from(left_ + column);
+      const auto& lines = text_.wrap(f.prompt, size, column - kPromptGap);
+      const double h = std::max(static_cast<double>(g.rows) * tick_row, lines_height(lines.size()));
+      if (h < best - kFitSlack) {
+        best = h;
+        grid = g;
+        x0 = left_ + column;
+        prompt_lines = &lines;
+      }
+    }
+    // Above, across the row.
     const auto& wide = text_.wrap(f.prompt, size, limit - left_);
-    if (wide.size() < prompt_lines->size()) {
+    const Grid under = grid_from(left_ + field_column_);
+    const double h = lines_height(wide.size()) + static_cast<double>(under.rows) * tick_row;
+    if (h < best - kFitSlack) {
+      grid = under;
+      x0 = left_ + field_column_;
       prompt_lines = &wide;
       prompt_above = true;
     }
@@ -145,40 +230,12 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
   const double ticks_top = prompt_above ? static_cast<double>(prompt_lines->size()) * body_line_ : 0;
 
   if (ticks) {
-    std::vector<std::pair<std::string, std::string>> options;  // (printed, value)
-    if (f.kind == K::boolean) {
-      options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
-    } else {
-      for (const auto& c : f.choices) options.emplace_back(c, c);
-    }
-    // The options on as few rows as fit, in aligned columns: six faces become two rows of
-    // three rather than five and a lonely one. A last choice set apart ("none" after the
-    // sides) gets a row of its own.
-    std::vector<std::vector<TextRun>> labels;
-    std::vector<double> widths;
-    for (const auto& o : options) {
-      labels.push_back(parse_rich_text(o.first));
-      widths.push_back(s_.tick_size + kTickGap + text_width(labels.back(), size));
-    }
-    const std::size_t n = options.size();
-    const std::size_t grid = f.last_choice_apart && n > 1 ? n - 1 : n;
-    std::size_t per_row = grid;
-    std::vector<double> columns;
-    for (std::size_t rows = 1; rows <= grid; ++rows) {
-      per_row = (grid + rows - 1) / rows;
-      columns.assign(per_row, 0);
-      for (std::size_t i = 0; i < grid; ++i) columns[i % per_row] = std::max(columns[i % per_row], widths[i]);
-      double total = kOptionGap * static_cast<double>(per_row - 1);
-      for (double c : columns) total += c;
-      if (x0 + total <= limit + kFitSlack) break;
-    }
-    const std::size_t grid_rows = grid == 0 ? 1 : (grid + per_row - 1) / per_row;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n_options; ++i) {
       double x = x0;
-      std::size_t row = grid_rows;  // the option after the grid
-      if (i < grid) {
-        for (std::size_t c = 0; c < i % per_row; ++c) x += columns[c] + kOptionGap;
-        row = i / per_row;
+      std::size_t row = grid.grid_rows;  // the option after the grid
+      if (i < grid_n) {
+        for (std::size_t c = 0; c < i % grid.per_row; ++c) x += grid.columns[c] + kOptionGap;
+        row = i / grid.per_row;
       }
       const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
       const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
@@ -186,8 +243,7 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
                                  std::move(options[i].second)});
       a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
     }
-    const std::size_t rows = grid_rows + (grid < n ? 1 : 0);
-    body_h = ticks_top + static_cast<double>(rows) * s_.tick_row_height;
+    body_h = ticks_top + static_cast<double>(grid.rows) * s_.tick_row_height;
   }
 
   double prompt_h = 0;
@@ -220,7 +276,7 @@ void SectionAtoms::answer_line(int si, int bi, const AnswerLine& l, bool follows
   double answer_x = left_ + key_column_;
   double prompt_w = key_column_ - kPromptGap;
   const auto* answer = &text_.wrap(l.answer, size, right_ - answer_x - id_room);
-  const std::size_t own_lines = text_.line_count(l.answer, size, kUnbounded);
+  const std::size_t own_lines = text_.wrapped(l.answer, size, kUnbounded).count();
   bool stacked = false;
   if (answer->size() > own_lines) {
     // Prompt on its line, the answer under it with the column's whole width.

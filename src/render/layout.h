@@ -5,25 +5,34 @@
 // so both draw the same thing.
 //
 // The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
-// with the name and student number fields and the sheet id as a QR code; sections share pages,
-// and a section starts on a fresh page only when its opening (its statement, up to its first
-// figure or field, and the run of fields or answers after it) would fit there but not in what is
-// left of the current one; otherwise it flows, breaking
-// only between lines of text, runs of fields, tables or blocks: never right after a Heading,
-// never between a Figure and the Paragraph just before it, never leaving one line of a
-// paragraph alone, never inside a run of fields or a key's table that a page could hold.
+// with the name and student number fields and the sheet id as a QR code; sections share pages.
+// A page ends only between blocks or between sentences of a paragraph (never inside a sentence or
+// a parenthesis, never leaving one line of a paragraph alone), never right after a Heading, never
+// between a Figure and the Paragraph just before it or the fields (a key's answers) just after
+// it, never inside a run of fields or a key's table that a page could hold. A document whose
+// sections are kept whole (Document::breaks, a student's sheet) has each section on one page,
+// unless the section alone is taller than a page. In one whose sections may break (a key), a
+// section starts on a fresh page only when its opening (its statement, up to its first figure or
+// field, and the run of fields or answers after it) would fit there but not in what is left of
+// the current one; otherwise it flows.
+//
 // A figure followed by fields or a key's answers has them beside it, in a column on its right,
 // when they fit there (half the paper of one above the other); a figure of several panels side
 // by side is never narrowed for that column. The plain paragraphs just before a figure (a
 // statement, a key's last steps) go in that column too, above the answers or with the answers
 // under the figure, when that makes the whole shorter by more than half a line; the figure keeps
 // the width its kind asks for. A statement too long for that column may flow around the figure:
-// its first lines across the page, the rest in the column above the fields. Such a section, when
-// its opening does not fit in what is left of a page and would leave more than a tenth of it
-// empty, may be set with its paragraphs above the figure instead, so that the page may end
-// between them: every combination of these choices over the document is tried on the atoms'
-// heights, and the one with the fewest pages (no page but the last less than half full) is set,
-// on a tie the one that takes the paragraphs-above layout each time.
+// its first lines across the page, the rest in the column above the fields. Every such option is
+// measured as shapes (heights and extents, no text) and only the shortest is built. In a document
+// whose sections may break, such a section, when its opening does not fit in what is left of a
+// page and would leave more than a tenth of it empty, may be set with its paragraphs above the
+// figure instead, so that the page may end between them: every combination of these choices over
+// the document is tried on the atoms' shapes, and the one with the fewest pages (no page but the
+// last less than half full) is set, on a tie the one that takes the paragraphs-above layout each
+// time.
+//
+// Every answer field is a PlacedBox with its question id and the value it stands for, in points
+// from its page's top-left corner: the rectangles a scan would read, exported as they are drawn.
 #include <string>
 #include <vector>
 
@@ -150,22 +159,24 @@ struct LayoutStyle {
   // A figure never takes more than this share of a page's text height, so that the paragraph
   // it belongs to still fits above it.
   double figure_max_height = 0.55;
-  // A document over its page budget (Document::page_budget) is laid out again with that share
-  // lowered by this step, down to figure_min_height, and the first that meets the budget is set;
-  // when none does, the figures keep their height. Only a figure whose data are about as tall as
-  // wide or taller reaches the cap: at 0.4 (286 pt on A4, 10 cm) it is still the tallest figure of
-  // a sheet, with a grid unit of about a centimetre, so there is room to draw on it.
-  double figure_min_height = 0.4;
-  double figure_height_step = 0.05;
+  // A document over its page budget (Document::page_budget) is laid out again with some of its
+  // sections' figures smaller: each section's figures at a scale below 1 (their width and their
+  // height cap alike), in steps of figure_scale_step down to figure_min_scale. The smallest scale
+  // that all sections need alike to meet the budget is found first, then each section, in order,
+  // is given back the largest scale that still meets it, so that only the figures that must be
+  // smaller are, and by no more than they must. When even figure_min_scale does not meet the
+  // budget, the figures keep their size (a spec with many exercises: no figure shrinks for
+  // nothing).
+  double figure_min_scale = 0.7;
+  double figure_scale_step = 0.05;
   double figure_space = 6;         // above and below a figure (a frame needs more air than text)
   // A figure followed by answer fields (or a key's answers) gets them in a column on its right
   // when they fit there; the figure is then narrowed, but never below this share of the text width.
   double figure_min_share = 0.42;
 };
 
-// Lays out the whole document, within its page budget where lowering the figures' height cap
-// (figure_max_height, down to figure_min_height) achieves it. Deterministic: the same Document and
-// style give the same pages.
+// Lays out the whole document, within its page budget where setting some figures smaller
+// (figure_min_scale) achieves it. Deterministic: the same Document and style give the same pages.
 std::vector<LaidOutPage> layout_document(const Document& doc, const LayoutStyle& style = {});
 
 }  // namespace epure::render

@@ -143,6 +143,7 @@ struct Atom {
   std::vector<PlacedBlock> side_blocks;
   bool wrapped = false;  // a key's answer broken over lines it does not ask for
   bool follows_heading = false;  // right after a heading: a page may not end before it
+  bool figure = false;   // holds a figure (a shape keeps this of its content)
   Fragment content;
 };
 

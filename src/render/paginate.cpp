@@ -22,16 +22,53 @@ constexpr std::size_t kMaxFallbackChoices = 10;
 
 }  // namespace
 
-Paginator::Paginator(const Document& doc, const LayoutStyle& style, SectionAtoms& sections)
-    : doc_(doc), sections_(sections), atoms_(sections.atoms()),
-      left_(TextArea(doc, style).left), width_(TextArea(doc, style).width),
-      top_(TextArea(doc, style).top), bottom_(TextArea(doc, style).bottom) {
-  for (const int si : sections.sections_with_fallback()) fallback_.insert(si);
+Paginator::Paginator(const Document& doc, const LayoutStyle& style)
+    : doc_(doc),
+      left_(TextArea(doc, style).left),
+      width_(TextArea(doc, style).width),
+      top_(TextArea(doc, style).top),
+      bottom_(TextArea(doc, style).bottom),
+      whole_(doc.breaks == Document::Breaks::whole) {}
+
+std::vector<LaidOutPage> Paginator::place(std::vector<Atom> atoms, const Fallbacks& fallbacks) {
+  atoms_ = std::move(atoms);
+  fallbacks_ = &fallbacks;
+  pages_.clear();
+  keep_sections_whole();
+  choose_fallbacks();
+  run_flow();
+  return std::move(pages_);
 }
 
-std::vector<LaidOutPage> Paginator::run() {
-  flow();
-  return std::move(pages_);
+std::size_t Paginator::count(std::vector<Atom> atoms, const Fallbacks& fallbacks, bool page_by_page) {
+  atoms_ = std::move(atoms);
+  fallbacks_ = &fallbacks;
+  keep_sections_whole();
+  if (page_by_page) {
+    fallback_mask_ = ~std::uint32_t{0};
+    fallback_bit_.clear();
+  } else {
+    choose_fallbacks();
+  }
+  dry_ = true;
+  dry_pages_ = 0;
+  dry_fills_.clear();
+  run_flow();
+  dry_ = false;
+  return dry_pages_;
+}
+
+// A section a page holds is one group: a page ends before it or after it, not inside it. A
+// section taller than a page keeps the places its atoms allow (see run_flow).
+void Paginator::keep_sections_whole() {
+  if (!whole_) return;
+  for (std::size_t i = 0; i < atoms_.size();) {
+    std::size_t end = i + 1;
+    while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+    if (atoms_[i].section_start && span(i, end) <= bottom_ - top_ + kFitSlack)
+      for (std::size_t k = i + 1; k < end; ++k) atoms_[k].break_before = false;
+    i = end;
+  }
 }
 
 void Paginator::new_page() {
@@ -55,31 +92,25 @@ double Paginator::span(std::size_t from, std::size_t to) const { return layout_d
 
 bool Paginator::fits(double h) const { return y_ + h <= bottom_ + kFitSlack; }
 
-// The atoms on pages. A section whose statement was set beside its figure and whose opening
-// does not fit in what is left of a page has two ways to go (see open_section): whole to the
-// next page, or laid out again with the statement above the figure, which may end this page.
-// Taking the second every time, as one page alone would choose, can leave a sheet one page
-// longer than it needs: a statement ends a page whose next figure does not fit. So every
-// combination of these choices is tried on the atoms' heights alone (a sheet has at most
-// seven such sections), and the one that gives the fewest pages, none of them but the last
-// less than half full, is set; on a tie, the page-by-page choice.
-void Paginator::flow() {
-  choose_fallbacks();
-  run_flow();
-}
-
-// The sections with a fallback, each a bit of a choice mask (set: take the fallback when its
-// opening does not fit), and the fallback's atoms, built once in full.
+// A breakable document's sections whose statement (or last steps) went beside its figure and
+// whose opening does not fit in what is left of a page have two ways to go (see open_section):
+// whole to the next page, or laid out again with the statement above the figure, which may end
+// this page. Taking the second every time, as one page alone would choose, can leave a document
+// one page longer than it needs: a statement ends a page whose next figure does not fit. So
+// every combination of these choices is tried on the atoms' shapes, and the one that gives the
+// fewest pages, none of them but the last less than half full, is set; on a tie, the
+// page-by-page choice. Each section with a fallback is a bit of the choice mask (set: take the
+// fallback when its opening does not fit).
 void Paginator::choose_fallbacks() {
   fallback_mask_ = ~std::uint32_t{0};
-  if (fallback_.empty() || fallback_.size() > kMaxFallbackChoices) return;
+  fallback_bit_.clear();
+  const auto& fallbacks = fallbacks_->shapes;
+  if (whole_ || fallbacks.empty() || fallbacks.size() > kMaxFallbackChoices) return;
   std::uint32_t bit = 0;
-  for (const int si : fallback_) {
-    fallback_bit_[si] = bit++;
-    const auto& built = fallback_atoms_.emplace(si, sections_.fallback(si)).first->second;
-    fallback_shapes_.emplace(si, geometry(built));
-  }
-  const std::vector<Atom> shapes = geometry(atoms_);
+  for (const auto& [si, atoms] : fallbacks) fallback_bit_[si] = bit++;
+  std::vector<Atom> shapes;
+  shapes.reserve(atoms_.size());
+  for (const Atom& a : atoms_) shapes.push_back(shape(a));
   const std::uint32_t all = (std::uint32_t{1} << bit) - 1;
   std::size_t best_pages = trial_pages(all, shapes);
   std::uint32_t best = all;
@@ -95,22 +126,22 @@ void Paginator::choose_fallbacks() {
 }
 
 // How many pages the atoms take with this choice mask (dry_fills_: how full each page but the
-// last ends), placed from a copy of `shapes`, the atoms' geometry (placing edits the atoms).
+// last ends), placed from a copy of `shapes` (placing edits the atoms).
 std::size_t Paginator::trial_pages(std::uint32_t mask, const std::vector<Atom>& shapes) {
   std::vector<Atom> copies = shapes;
   std::swap(atoms_, copies);
+  const bool dry = dry_;
   fallback_mask_ = mask;
   dry_ = true;
   dry_pages_ = 0;
   dry_fills_.clear();
   run_flow();
-  dry_ = false;
+  dry_ = dry;
   std::swap(atoms_, copies);
   return dry_pages_;
 }
 
-// An atom without its content: what placing it needs (a figure's presence, for open_section).
-Atom Paginator::geometry(const Atom& a) {
+Atom Paginator::shape(const Atom& a) {
   Atom g;
   g.height = a.height;
   g.space_before = a.space_before;
@@ -121,14 +152,8 @@ Atom Paginator::geometry(const Atom& a) {
   g.block = a.block;
   g.wrapped = a.wrapped;
   g.follows_heading = a.follows_heading;
+  g.figure = a.figure;
   g.content.keep_texts = false;
-  g.content.figures = a.content.figures;
-  return g;
-}
-std::vector<Atom> Paginator::geometry(const std::vector<Atom>& atoms) {
-  std::vector<Atom> g;
-  g.reserve(atoms.size());
-  for (const Atom& a : atoms) g.push_back(geometry(a));
   return g;
 }
 
@@ -165,23 +190,23 @@ void Paginator::run_flow() {
 void Paginator::open_section(std::size_t i, double space) {
   std::size_t end = i + 1;
   while (end < atoms_.size() && !atoms_[end].section_start) ++end;
+  if (whole_) {
+    // A section kept whole is one group (keep_sections_whole). One taller than a page is broken
+    // anyway: it starts on a fresh page unless more than half of this one is left.
+    if (span(i, end) > bottom_ - top_ + kFitSlack && bottom_ - y_ < 0.5 * (bottom_ - top_)) new_page();
+    return;
+  }
   // A section whose statement was set beside its figure is one tall group: when it does not
   // fit here and would leave much of this page empty, it is laid out as the statement above
   // the figure instead, which may end this page between the two.
-  if (auto alt = fallback_.find(atoms_[i].section); alt != fallback_.end()) {
+  const int si = atoms_[i].section;
+  if (auto shapes = fallbacks_->shapes.find(si); shapes != fallbacks_->shapes.end()) {
     const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
     std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
-    const auto bit = fallback_bit_.find(*alt);
+    const auto bit = fallback_bit_.find(si);
     const bool chosen = bit == fallback_bit_.end() || ((fallback_mask_ >> bit->second) & 1) != 0;
     if (!fits(space + span(i, head_end)) && !little_left && chosen) {
-      std::vector<Atom> other;
-      if (auto built = fallback_atoms_.find(*alt); built == fallback_atoms_.end()) {
-        other = sections_.fallback(*alt);
-      } else if (dry_) {
-        other = fallback_shapes_.at(*alt);
-      } else {
-        other = std::move(built->second);
-      }
+      std::vector<Atom> other = dry_ ? shapes->second : fallbacks_->build(si);
       atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
       const std::size_t n = other.size();
       atoms_.insert(atoms_.begin() + static_cast<std::ptrdiff_t>(i), std::make_move_iterator(other.begin()),
@@ -198,14 +223,7 @@ void Paginator::open_section(std::size_t i, double space) {
   const double head = span(i, head_end);
   if (fits(space + head)) return;
   const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
-  if (head <= bottom_ - top_ + kFitSlack && little_left) {
-    new_page();
-    return;
-  }
-  const std::size_t figure = i + atom.head_atoms - 1;
-  if (atom.head_atoms > 1 && figure < end && !atoms_[figure].content.figures.empty() &&
-      !atoms_[figure].follows_heading && fits(space + span(i, figure)))
-    atoms_[figure].break_before = true;
+  if (head <= bottom_ - top_ + kFitSlack && little_left) new_page();
 }
 
 void Paginator::place(Atom& atom) {

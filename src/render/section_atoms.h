@@ -3,13 +3,14 @@
 // column's width and broken into the units a page may end between — a line of a paragraph, a
 // heading, a row of fields or of a key's table, a figure with what stands beside it. The options
 // for a figure and its neighbours (fields beside or under it, paragraphs beside it) are measured
-// and the shortest is built (section_atoms.cpp); rows of fields and of a key's answers are made in
-// field_rows.cpp. Putting the atoms on pages is paginate.h's job.
+// as shapes (atoms with their geometry and no content) and only the shortest is built
+// (section_atoms.cpp); rows of fields and of a key's answers are made in field_rows.cpp. Putting
+// the atoms on pages is paginate.h's job.
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -20,19 +21,50 @@
 
 namespace epure::render::layout_detail {
 
+// A row of fields or of a key's answers, measured with a given geometry.
+struct RowKey {
+  const void* block = nullptr;
+  std::uint64_t left = 0, width = 0, column = 0;
+  bool follows = false, in_column = false;
+  friend bool operator==(const RowKey&, const RowKey&) = default;
+};
+struct RowHash {
+  std::size_t operator()(const RowKey& k) const;
+};
+
+// What measuring a document's blocks leaves behind, kept for the whole of its layout: the page
+// budget's trials measure the same texts, rows and figures at the same widths again.
+struct LayoutMemo {
+  TextMeasure text;
+  std::unordered_map<RowKey, Atom, RowHash> rows;  // a row's shape at a geometry
+  std::unordered_map<RowKey, double, RowHash> prompt_columns;
+  // a figure's size: (scene, width asked, height cap) → (width, height)
+  std::map<std::tuple<const Scene*, std::uint64_t, std::uint64_t>, std::pair<double, double>> figure_sizes;
+  // The option taken for a figure and its neighbours (see figure_with_neighbours), by (figure,
+  // scale, paragraphs allowed beside it): measured once, as shapes, and built from that.
+  struct Option {
+    std::size_t beside_paragraphs = 0;
+    bool answers_beside = false;
+    std::size_t split = 0;
+  };
+  std::map<std::tuple<const Figure*, std::uint64_t, bool>, Option> options;
+};
+
 class SectionAtoms {
  public:
-  SectionAtoms(const Document& doc, const LayoutStyle& style);
+  SectionAtoms(const Document& doc, const LayoutStyle& style, LayoutMemo& memo);
 
-  // The name row and header note (a student's first page), then every section's atoms.
-  void build();
-  std::vector<Atom>& atoms() { return atoms_; }
+  // The first page's name row and the header note under it.
+  std::vector<Atom> opening(bool shapes_only);
 
-  // The sections whose paragraphs went beside a figure: each may be laid out again without that
-  // (fallback), from the builder's state at its start.
-  std::vector<int> sections_with_fallback() const;
-  // The section laid out with no paragraph beside a figure.
-  std::vector<Atom> fallback(int si);
+  // A section's atoms, its figures at `scale` of the size they would have (width and height cap
+  // alike). With `shapes_only`, the atoms carry their geometry and no content: enough to count
+  // pages. With `allow_side` false, no paragraph goes beside a figure (a section's fallback).
+  struct Built {
+    std::vector<Atom> atoms;
+    bool side_used = false;  // a paragraph went beside a figure: the section has a fallback
+  };
+  Built section(int si, double scale, bool shapes_only, bool allow_side = true);
 
  private:
   // The builder's state before a block: undoing a block's atoms goes back to it.
@@ -40,15 +72,10 @@ class SectionAtoms {
     std::size_t atoms = 0;
     bool after_heading = false, after_figure = false;
   };
-  // A row of fields or of a key's answers, measured with a given geometry (see replay).
-  struct RowKey {
-    const void* block = nullptr;
-    std::uint64_t left = 0, width = 0, column = 0;
-    bool follows = false, in_column = false;
-    friend bool operator==(const RowKey&, const RowKey&) = default;
-  };
-  struct RowHash {
-    std::size_t operator()(const RowKey& k) const;
+  // The column beside a figure, as measured: the figure's width and where the column starts.
+  struct Column {
+    double figure_w = 0, left = 0;
+    std::vector<Atom> atoms;
   };
 
   Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
@@ -59,19 +86,23 @@ class SectionAtoms {
   bool replay(const RowKey& key);
   void remember(const RowKey& key, const Atom& a);
 
-  void section(int si);
   void build_section(int si);
   std::size_t figure_with_neighbours(int si, std::size_t fi, const Figure& f, const std::vector<Block>& blocks);
   void emit_answers(int si, const std::vector<Block>& blocks, std::size_t from, std::size_t to);
   void heading(int si, int bi, const Heading& h);
-  void paragraph(int si, int bi, const RichText& text, bool emphasis);
-  void line_atoms(int si, int bi, std::size_t n, const std::vector<std::vector<TextRun>>* lines);
+  // From its `from`-th word on, when given: the rest of a paragraph beside its figure.
+  void paragraph(int si, int bi, const RichText& text, bool emphasis, std::size_t from = 0);
+  void line_atoms(int si, int bi, const WrappedText& wrapped, std::size_t n,
+                  const std::vector<std::vector<TextRun>>* lines);
+  // A figure's size at most `w` wide (× the section's scale) and its cap of the page high.
   std::pair<double, double> figure_size(const Figure& f, double w);
-  std::pair<double, double> measure_figure(const Figure& f, double w) const;
+  std::pair<double, double> measure_figure(const Figure& f, double w, double max_h) const;
   static std::size_t answers_run_end(const std::vector<Block>& blocks, std::size_t from);
   bool beside(int si, int bi, const Figure& f, bool follows_paragraph, const std::vector<Block>& blocks,
-              const std::vector<std::size_t>& side_blocks, bool natural_only,
-              const std::optional<RichText>& first_text = std::nullopt);
+              const std::vector<std::size_t>& side_blocks, bool natural_only, std::size_t first_from);
+  std::optional<Column> column_beside(int si, const Figure& f, const std::vector<Block>& blocks,
+                                      const std::vector<std::size_t>& side_blocks, bool natural_only,
+                                      std::size_t first_from);
   void figure(int si, int bi, const Figure& f, bool follows_paragraph);
 
   // field_rows.cpp
@@ -84,6 +115,8 @@ class SectionAtoms {
 
   const Document& doc_;
   const LayoutStyle& s_;
+  LayoutMemo& memo_;
+  TextMeasure& text_;
   const TextArea area_;
   // The text column; `beside` narrows left_ and width_ for the fields set beside a figure.
   double left_;
@@ -92,19 +125,15 @@ class SectionAtoms {
   const double top_, bottom_, body_line_;
   double prompt_share_;  // of width_, at most, for the fields' prompts
 
-  TextMeasure text_;
+  // The section being built.
   std::vector<Atom> atoms_;
+  double scale_ = 1;
   bool after_heading_ = false;
   bool after_figure_ = false;
-  std::size_t section_begin_ = 0;
-  std::vector<Mark> marks_;  // the state before each block of the section being measured
+  std::vector<Mark> marks_;  // the state before each block of the section
   bool allow_side_ = true, side_used_ = false;
-  std::map<int, Mark> fallback_;  // the sections with paragraphs beside a figure: the state at their start
-  bool measuring_ = false;  // building an option only to measure it
-  std::unordered_map<RowKey, Atom, RowHash> measured_rows_;
-  std::unordered_map<RowKey, double, RowHash> prompt_columns_;
+  bool shapes_ = false;     // atoms with their geometry only: an option measured, or pages counted
   bool in_column_ = false;  // building the column beside a figure
-  std::map<std::pair<const Scene*, double>, std::pair<double, double>> figure_sizes_;
   double field_column_ = 0, key_column_ = 0;
 };
 

@@ -124,6 +124,7 @@ struct Word {
 // "I = A + t·û", nor splits "∘" from a map's factors.
 bool binding_token(std::string_view w) {
   static constexpr std::string_view kBinding[] = {"=", "≠", "≈", "≤", "≥", "<", ">", "+", "−", "·", "×", "/", "∘", "→", "↦"};
+  if (w.empty() || w.size() > 3) return false;  // each is one character: at most 3 bytes
   for (auto t : kBinding)
     if (w == t) return true;
   return false;
@@ -198,9 +199,10 @@ std::vector<Word> words(std::string_view rich) {
 // so their width is measured straight from the bytes (the same sum, in the same order, as
 // text_width gives) instead of parsing them into runs first.
 double word_width(std::string_view word, double font_size, Face face) {
-  if (word.find_first_of("\\_^{}") != npos) {
-    return text_width(word, font_size, face == Face::bold ? Weight::bold : Weight::regular);
-  }
+  const bool markup = std::any_of(word.begin(), word.end(), [](char c) {
+    return c == '\\' || c == '_' || c == '^' || c == '{' || c == '}';
+  });
+  if (markup) return text_width(word, font_size, face == Face::bold ? Weight::bold : Weight::regular);
   return advance_sum(word, face) * font_size;
 }
 
@@ -325,58 +327,62 @@ MeasuredText measure_text(std::string_view rich, double font_size, Weight weight
   return m;
 }
 
-std::vector<std::string> wrap_measured(const MeasuredText& m, double max_width) {
-  std::vector<std::string> lines;
+std::vector<MeasuredLine> break_measured(const MeasuredText& m, double max_width, std::size_t first_word) {
+  std::vector<MeasuredLine> lines;
   if (m.text.empty()) return lines;
   const double space = m.space;
-  const std::string_view text = m.text;
-  const auto finish = [&](const std::string& line) { lines.push_back(line); };
-  for (const auto& ws : m.pieces) {
-    std::string line;
-    double line_width = 0;
-    bool any = false;
-    const auto word = [&](const MeasuredText::Word& w) { return text.substr(w.offset, w.size); };
-    const auto place = [&](std::string_view w, double ww) {
-      if (any && line_width + space + ww > max_width) {
-        finish(line);
-        line.clear();
-        line_width = 0;
-        any = false;
-      }
-      if (any) {
-        line += ' ';
-        line_width += space;
-      }
-      line += w;
-      line_width += ww;
-      any = true;
+  for (std::size_t p = 0; p < m.pieces.size(); ++p) {
+    const auto& ws = m.pieces[p];
+    const std::size_t start = p == 0 ? std::min(first_word, ws.size()) : 0;
+    MeasuredLine line{p, start, start, 0};
+    const auto finish = [&](std::size_t next) {
+      lines.push_back(line);
+      line = MeasuredLine{p, next, next, 0};
+    };
+    // Adds word k to the line, or starts the next line with it when it does not fit.
+    const auto place = [&](std::size_t k) {
+      const bool any = line.end > line.first;
+      if (any && line.width + space + ws[k].width > max_width) finish(k);
+      if (line.end > line.first) line.width += space;  // two sums, in wrap_measured's order
+      line.width += ws[k].width;
+      line.end = k + 1;
     };
     // Glued words move to the next line together, as one chunk; a chunk wider than a whole line
     // falls back to breaking at its own spaces.
-    for (std::size_t i = 0; i < ws.size();) {
+    for (std::size_t i = start; i < ws.size();) {
       std::size_t j = i + 1;
       while (j < ws.size() && ws[j].glued) ++j;
       double chunk = 0;
       for (std::size_t k = i; k < j; ++k) chunk += ws[k].width + (k > i ? space : 0);
-      if (j - i > 1 && chunk <= max_width && any && line_width + space + chunk > max_width) {
-        finish(line);
-        line.clear();
-        line_width = 0;
-        any = false;
-      }
+      if (j - i > 1 && chunk <= max_width && line.end > line.first && line.width + space + chunk > max_width) finish(i);
       for (std::size_t k = i; k < j; ++k) {
         if (chunk <= max_width && k > i) {  // within a chunk that fits a line: never a break
-          line += ' ';
-          line += word(ws[k]);
-          line_width += space + ws[k].width;
+          line.width += space + ws[k].width;
+          line.end = k + 1;
         } else {
-          place(word(ws[k]), ws[k].width);
+          place(k);
         }
       }
       i = j;
     }
-    finish(line);  // an empty piece (two '\n' in a row) gives an empty line
+    lines.push_back(line);  // an empty piece (two '\n' in a row) gives an empty line
   }
+  return lines;
+}
+
+std::string line_source(const MeasuredText& m, const MeasuredLine& line) {
+  std::string out;
+  const auto& ws = m.pieces[line.piece];
+  for (std::size_t k = line.first; k < line.end; ++k) {
+    if (k > line.first) out += ' ';
+    out.append(m.text, ws[k].offset, ws[k].size);
+  }
+  return out;
+}
+
+std::vector<std::string> wrap_measured(const MeasuredText& m, double max_width) {
+  std::vector<std::string> lines;
+  for (const MeasuredLine& line : break_measured(m, max_width)) lines.push_back(line_source(m, line));
   return lines;
 }
 

@@ -99,4 +99,18 @@ MeasuredText measure_text(std::string_view rich, double font_size, Weight weight
 // wrap_rich_source of a measured text: the same lines.
 std::vector<std::string> wrap_measured(const MeasuredText& text, double max_width);
 
+// The same lines as spans of the measured words, without building their text: what counting
+// lines, or telling where a sentence ends, needs. `width` is the line's width as the breaking
+// measured it (its words' widths and the spaces between them).
+struct MeasuredLine {
+  std::size_t piece = 0;             // index in MeasuredText::pieces
+  std::size_t first = 0, end = 0;    // its words, [first, end) in that piece
+  double width = 0;
+};
+// From `first_word` of the text's first piece on, when given: the rest of a paragraph after its
+// first lines.
+std::vector<MeasuredLine> break_measured(const MeasuredText& text, double max_width, std::size_t first_word = 0);
+// A line's markup: its words joined by single spaces (wrap_measured's line).
+std::string line_source(const MeasuredText& text, const MeasuredLine& line);
+
 }  // namespace epure::render

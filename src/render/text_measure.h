@@ -1,8 +1,10 @@
 #pragma once
-// Measuring text for the layout (internal to layout.cpp and its helpers): a document's texts
-// wrapped at the widths the layout tries, each remembered, so that the options tried for a
-// figure and its neighbours (and the layouts a page budget tries) wrap the same text at the same
-// width once. The lines' markup is enough to count them; their runs are parsed when a line is set.
+// Measuring text for the layout (internal to layout.cpp and its helpers): a document's texts cut
+// into measured words once, and wrapped at each width the layout tries once, remembered for the
+// whole layout of a document (the options tried for a figure and its neighbours, and the
+// layouts a page budget tries, ask the same texts at the same widths again and again). A wrapped
+// text is first only line spans: enough to count its lines, know the widest and where a sentence
+// ends; the lines' markup and runs are made when a line is set.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -26,52 +28,62 @@ inline std::size_t hash_combine(std::size_t h, std::uint64_t v) {
   return h ^ (std::hash<std::uint64_t>{}(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
 }
 
-// What a wrapped text is remembered by: the text, its size and its width. Looked up through a
-// view, so that a lookup copies nothing.
-struct WrapView {
-  std::string_view text;
-  double size = 0, width = 0;
-  friend bool operator==(const WrapView& a, const WrapView& b) {
-    return a.text == b.text && bits(a.size) == bits(b.size) && bits(a.width) == bits(b.width);
-  }
-};
-struct WrapKey {
-  std::string text;
-  double size = 0, width = 0;
-  operator WrapView() const { return {text, size, width}; }
-  friend bool operator==(const WrapKey& a, const WrapKey& b) { return WrapView(a) == WrapView(b); }
-};
-struct WrapHash {
-  using is_transparent = void;
-  std::size_t operator()(const WrapView& k) const {
-    return hash_combine(hash_combine(std::hash<std::string_view>{}(k.text), bits(k.size)), bits(k.width));
-  }
-  std::size_t operator()(const WrapKey& k) const { return (*this)(WrapView(k)); }
+// A text wrapped at one width.
+struct WrappedText {
+  const MeasuredText* measured = nullptr;
+  std::vector<MeasuredLine> lines;
+  // ends_sentence[i]: line i ends with the end of a sentence (".", "!", "?", maybe closed by a
+  // quote or bracket) outside any parenthesis: the one place inside a paragraph where a page may
+  // end, so that no sentence, and nothing in parentheses, is read across two pages.
+  std::vector<bool> ends_sentence;
+  double widest = 0;  // the widest line, as the breaking measured it
+  std::size_t count() const { return lines.size(); }
 };
 
+// Remembers texts by their address: every text the layout measures belongs to the Document (or
+// to the layout's memo), which outlives the measuring, so that a lookup hashes a pointer and
+// two numbers, not the text.
 class TextMeasure {
  public:
-  // wrap_rich_text, remembered: how many lines `text` takes at `width`.
-  std::size_t line_count(const RichText& text, double size, double width);
-  // The lines' runs, parsed once a line is to be set.
-  const std::vector<std::vector<TextRun>>& wrap(const RichText& text, double size, double width);
-  // wrap_rich_source, remembered: the lines' markup, to split a paragraph after its first lines.
-  const std::vector<std::string>& wrap_source(const RichText& text, double size, double width);
+  // `text` at `size` broken into lines no wider than `width`; from its `from`-th word on (a
+  // paragraph's rest after its first lines; in a text without '\n').
+  const WrappedText& wrapped(const RichText& text, double size, double width, Weight weight = Weight::regular,
+                             std::size_t from = 0);
+  // The lines' runs (parse_rich_text of each line's markup), made once.
+  const std::vector<std::vector<TextRun>>& wrap(const RichText& text, double size, double width,
+                                                Weight weight = Weight::regular, std::size_t from = 0);
 
  private:
-  // A text wrapped at a width: its lines' markup, enough to count them, and their runs once a
-  // line is set.
-  struct Wrapped {
-    std::vector<std::string> lines;
+  struct Key {
+    const RichText* text = nullptr;
+    std::uint64_t size = 0, width = 0;
+    Weight weight = Weight::regular;
+    std::size_t from = 0;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return hash_combine(hash_combine(hash_combine(std::hash<const void*>{}(k.text), k.size), k.width),
+                          static_cast<std::uint64_t>(k.weight) + (k.from << 1));
+    }
+  };
+  struct Entry {
+    WrappedText wrapped;
     std::optional<std::vector<std::vector<TextRun>>> runs;
   };
 
-  Wrapped& wrapped(const RichText& text, double size, double width);
-  // A text's words and their widths, measured once for all the widths it is wrapped at.
-  const MeasuredText& measured(const RichText& text, double size);
+  // A text's measured words, and after each word whether a sentence ends there outside any
+  // parenthesis (counted over the whole text): what every width's ends_sentence is read from.
+  struct Measured {
+    MeasuredText text;
+    std::vector<std::vector<bool>> sentence_ends;  // [piece][word]
+  };
 
-  std::unordered_map<WrapKey, Wrapped, WrapHash, std::equal_to<>> wrapped_;
-  std::unordered_map<WrapKey, MeasuredText, WrapHash, std::equal_to<>> measured_;
+  Entry& entry(const RichText& text, double size, double width, Weight weight, std::size_t from);
+  const Measured& measured(const RichText& text, double size, Weight weight);
+
+  std::unordered_map<Key, Entry, Hash> wrapped_;
+  std::unordered_map<Key, Measured, Hash> measured_;
 };
 
 }  // namespace epure::render::layout_detail

@@ -235,3 +235,32 @@ TEST_CASE("wrap_rich_source: the lines' markup, which joined gives the text back
     CHECK(joined == text);
   }
 }
+
+TEST_CASE("break_measured: wrap_measured's lines as word spans, their widths, and a paragraph's rest") {
+  const std::string texts[] = {
+      "Les points A, B et C sont donnés. Calculer t_{ab} avec \\vec{AB}·\\vec{AC} = 3, puis P = (−2 ; 4) ; "
+      "« aucun » si A est à l'intérieur : est-ce le cas ?",
+      "Un mot trèstrèstrèstrèstrèslongquidépasselaligne puis d'autres mots courts encore et encore.",
+      "Première ligne\nseconde pièce du texte, après un saut de ligne\n\nune dernière"};
+  for (const auto& text : texts) {
+    const MeasuredText m = measure_text(text, 10);
+    for (double width : {40.0, 90.0, 150.0, 300.0, 1e9}) {
+      CAPTURE(text);
+      CAPTURE(width);
+      const auto lines = break_measured(m, width);
+      const auto sources = wrap_rich_source(text, 10, width);
+      REQUIRE(lines.size() == sources.size());
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        CHECK(line_source(m, lines[i]) == sources[i]);
+        // the width the breaking measured is the line's own (the same advances, summed otherwise)
+        CHECK(lines[i].width == doctest::Approx(text_width(sources[i], 10)).epsilon(1e-9));
+      }
+      // A paragraph's rest from a line's first word on breaks as that rest alone does.
+      if (m.pieces.size() == 1 && lines.size() >= 2) {
+        const auto rest = break_measured(m, width, lines[1].first);
+        CHECK(rest.size() == sources.size() - 1);
+        CHECK(line_source(m, rest.front()) == sources[1]);
+      }
+    }
+  }
+}
