@@ -3,15 +3,18 @@
 //
 //   layout_pages [--spec builtin|builtin:3d] [--sheets N] [--seeds A-B] [--lang en|fr|both]
 //                [--difficulty easy|standard|hard|all] [--paper a4|letter|both]
-//                [--shrink PT] [--time RUNS]
+//                [--shrink PT] [--min-scale S] [--time RUNS]
 //
 // Prints, for each set (spec, seed, language, difficulty, paper): the sheets' pages (mean, max,
-// how many over 4), the keys' (mean, max), and how much room a sheet's pages leave: the
-// smallest, over the sheet's pages, of the text height left empty at the foot of a page (but
-// its last), in points. --shrink PT lays every document out again with a text height PT points
-// shorter (a taller bottom margin): how many sheets still keep their budget when page furniture
-// takes that much more of every page. --time RUNS lays every document out RUNS times and prints
-// the CPU time a document and a page (the documents are made once, before the clock starts).
+// how many over 4), how many sheets have figures set smaller to meet the budget and the smallest
+// scale any figure took, the keys' (mean, max, how many set smaller), and how much room a
+// sheet's pages leave: the smallest, over the sheet's pages, of the text height left empty at
+// the foot of a page (but its last), in points. --shrink PT lays every document out again with a
+// text height PT points shorter (a taller bottom margin): how many sheets still keep their
+// budget when page furniture takes that much more of every page. --min-scale S lets figures
+// shrink further than the default (LayoutStyle::figure_min_scale) to meet the budget. --time
+// RUNS lays every document out RUNS times and prints the CPU time a document and a page (the
+// documents are made once, before the clock starts).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -50,12 +53,32 @@ double least_room(const std::vector<render::LaidOutPage>& pages, const render::L
   return least;
 }
 
+// The smallest ratio of a figure's width in `pages` to its width when the same document is laid
+// out without a budget, figure by figure in document order: 1 when no figure was set smaller.
+// A figure set beside its fields in one layout and above them in the other changes width too, so
+// this reads the figures' sizes as printed, not the scale the layout chose.
+double smallest_scale(const render::Document& doc, const std::vector<render::LaidOutPage>& pages,
+                      const render::LayoutStyle& style) {
+  if (doc.page_budget == 0) return 1;
+  render::Document free = doc;
+  free.page_budget = 0;
+  const auto full = render::layout_document(free, style);
+  std::vector<double> a, b;
+  for (const auto& p : pages)
+    for (const auto& f : p.figures) a.push_back(f.rect.width);
+  for (const auto& p : full)
+    for (const auto& f : p.figures) b.push_back(f.rect.width);
+  double least = 1;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) least = std::min(least, a[i] / b[i]);
+  return least;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string spec_name = "builtin", lang = "both", difficulty = "all", paper = "both";
   int sheets = 30, seed_from = 1, seed_to = 3, runs = 0;
-  double shrink = 0;
+  double shrink = 0, min_scale = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--spec") spec_name = value;
@@ -68,6 +91,7 @@ int main(int argc, char** argv) {
     else if (key == "--difficulty") difficulty = value;
     else if (key == "--paper") paper = value;
     else if (key == "--shrink") shrink = std::atof(value.c_str());
+    else if (key == "--min-scale") min_scale = std::atof(value.c_str());
     else if (key == "--time") runs = std::atoi(value.c_str());
     else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
@@ -81,9 +105,12 @@ int main(int argc, char** argv) {
   }
   render::LayoutStyle style;
   style.margin_bottom += shrink;
+  if (min_scale > 0) style.figure_min_scale = min_scale;
 
-  std::printf("| set | sheets: mean | max | over 4 | least room (pt) | keys: mean | max |\n|---|---:|---:|---:|---:|---:|---:|\n");
-  int all_sheets = 0, all_over = 0;
+  std::printf("| set | sheets: mean | max | over 4 | smaller figures | least scale | least room (pt) | keys: mean | max | smaller |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  int all_sheets = 0, all_over = 0, all_smaller = 0, all_keys_smaller = 0;
+  double all_least_scale = 1;
   double all_sheet_pages = 0, all_key_pages = 0, worst_room = 1e300;
   double cpu = 0;
   std::size_t timed_docs = 0, timed_pages = 0;
@@ -102,17 +129,21 @@ int main(int argc, char** argv) {
             docs.push_back(set.sheet_document(sheet));
             docs.push_back(set.key_document(sheet));
           }
-          int sheet_max = 0, key_max = 0, over = 0;
-          double sheet_pages = 0, key_pages = 0, room = 1e300;
+          int sheet_max = 0, key_max = 0, over = 0, smaller = 0, keys_smaller = 0;
+          double sheet_pages = 0, key_pages = 0, room = 1e300, least_scale = 1;
           for (std::size_t k = 0; k < docs.size(); ++k) {
             const auto pages = render::layout_document(docs[k], style);
             const int n = static_cast<int>(pages.size());
+            const double scale = smallest_scale(docs[k], pages, style);
+            least_scale = std::min(least_scale, scale);
             if (k % 2 == 0) {
+              smaller += scale < 1 - 1e-9;
               sheet_pages += n;
               sheet_max = std::max(sheet_max, n);
               over += n > 4;
               room = std::min(room, least_room(pages, style));
             } else {
+              keys_smaller += scale < 1 - 1e-9;
               key_pages += n;
               key_max = std::max(key_max, n);
             }
@@ -123,8 +154,12 @@ int main(int argc, char** argv) {
             cpu += cpu_seconds() - t0;
             timed_docs += docs.size();
           }
-          std::printf("| %s %d %s %s %s | %.2f | %d | %d | %.0f | %.2f | %d |\n", spec_name.c_str(), seed, l.c_str(),
-                      d.c_str(), p.c_str(), sheet_pages / sheets, sheet_max, over, room, key_pages / sheets, key_max);
+          std::printf("| %s %d %s %s %s | %.2f | %d | %d | %d | %.2f | %.0f | %.2f | %d | %d |\n", spec_name.c_str(), seed,
+                      l.c_str(), d.c_str(), p.c_str(), sheet_pages / sheets, sheet_max, over, smaller, least_scale, room,
+                      key_pages / sheets, key_max, keys_smaller);
+          all_smaller += smaller;
+          all_keys_smaller += keys_smaller;
+          all_least_scale = std::min(all_least_scale, least_scale);
           all_sheets += sheets;
           all_over += over;
           all_sheet_pages += sheet_pages;
@@ -134,8 +169,10 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("all: %d sheets, %.3f pages a sheet, %d over 4 pages, least room %.0f pt; keys %.3f pages on average\n",
-              all_sheets, all_sheet_pages / all_sheets, all_over, worst_room, all_key_pages / all_sheets);
+  std::printf("all: %d sheets, %.3f pages a sheet, %d over 4 pages, %d with figures set smaller (least scale %.2f), "
+              "least room %.0f pt; keys %.3f pages on average, %d set smaller\n",
+              all_sheets, all_sheet_pages / all_sheets, all_over, all_smaller, all_least_scale, worst_room,
+              all_key_pages / all_sheets, all_keys_smaller);
   if (runs > 0)
     std::printf("layout CPU: %.3f ms a document, %.4f ms a page (%zu documents, %zu pages)\n", 1e3 * cpu / timed_docs,
                 1e3 * cpu / timed_pages, timed_docs, timed_pages);
