@@ -87,6 +87,7 @@ ExportSet read_set(const std::filesystem::path& dir, const std::string& language
   }
   set.not_asked_feedback_html = html_of(feedback.texts().get("export.not_asked"));
   set.does_not_apply_html = html_of(feedback.texts().get("export.does_not_apply"));
+  set.solution_title = grading::plain_text(feedback.texts().get("export.solution_title"));
   std::sort(set.exercises.begin(), set.exercises.end(), [](const auto& a, const auto& b) { return a.n < b.n; });
   return set;
 }

@@ -85,6 +85,14 @@ struct Block {
   bool whole_point = false; // field: a point marked as a whole (its parts carry the radius)
 };
 
+// A piece of the key's worked solution, in the key's order.
+struct SolutionBlock {
+  enum class Kind { heading, text, image, answer } kind = Kind::text;
+  std::string html;         // heading, text: its HTML; answer: the question's prompt ("t =")
+  std::string answer_html;  // answer: the key's answer ("√10/2 ≈ 1.58")
+  int image = -1;           // image: index in Variant::solution_images
+};
+
 // One student's instance of one exercise: one online question.
 struct Variant {
   std::string sheet_id;
@@ -93,6 +101,10 @@ struct Variant {
   std::vector<Image> images;
   std::vector<Part> parts;
   double points = 0;  // the exercise's points (the parts' sum)
+  // The key's worked steps, construction diagram and answers for this instance: what a platform
+  // shows once the question is answered (Moodle's general feedback, QTI's solution feedback).
+  std::vector<SolutionBlock> solution;
+  std::vector<Image> solution_images;
 };
 
 struct ExerciseSlot {
@@ -113,6 +125,7 @@ struct ExportSet {
   std::vector<ExerciseSlot> exercises;
   std::string not_asked_feedback_html;  // what a box that is not asked says when filled in
   std::string does_not_apply_html;      // the option a list adds for a case that does not ask it
+  std::string solution_title;           // plain text: what the worked solution is called ("Worked solution")
 };
 
 // Reads DIR/key.json and draws every exercise of every sheet again in `language` (the set's
@@ -127,6 +140,9 @@ ExportSet read_set(const std::filesystem::path& dir, const std::string& language
 // <sub>/<sup> for scripts, a combining arrow over a vector's name.
 std::string html_of(std::string_view rich);
 // (text escaped for XML and HTML: render/markup_escape.h)
+// A variant's worked solution as XHTML that both Moodle and a QTI itemBody accept: paragraphs,
+// the diagrams as <img src="<image_src><name>">, each run of answers as one two-column table.
+std::string solution_html(const Variant& v, std::string_view image_src);
 // The shortest decimal that reads back as x, with a '.' mark, no '+', no exponent when the
 // plain form is as short ("0.26229508196721313", "-18", "1e-07").
 std::string shortest(double x);

@@ -260,7 +260,13 @@ std::string moodle_xml(const ExportSet& set) {
         out += fmt::format("      <file name=\"{}\" path=\"/\" encoding=\"base64\">{}</file>\n", render::markup_escaped(im.name),
                            base64(im.bytes));
       out += "    </questiontext>\n";
-      out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";
+      // the key's worked solution for this variant, its diagrams as the feedback's own files
+      out += "    <generalfeedback format=\"html\">\n";
+      out += "      <text>" + cdata(solution_html(v, "@@PLUGINFILE@@/")) + "</text>\n";
+      for (const auto& im : v.solution_images)
+        out += fmt::format("      <file name=\"{}\" path=\"/\" encoding=\"base64\">{}</file>\n", render::markup_escaped(im.name),
+                           base64(im.bytes));
+      out += "    </generalfeedback>\n";
       out += "    <penalty>0.3333333</penalty>\n";  // Moodle's default, for a quiz with several tries
       out += "    <hidden>0</hidden>\n";
       out += fmt::format("    <idnumber>{}-{}</idnumber>\n", v.sheet_id, slot.n);

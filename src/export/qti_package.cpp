@@ -45,14 +45,16 @@ std::string add_score(double pts) {
       points(pts));
 }
 
-std::string add_feedback(const std::string& id) {
+std::string add_feedback(std::string_view id, std::string_view indent = "        ") {
   return fmt::format(
-      "        <setOutcomeValue identifier=\"FEEDBACK\"><multiple><variable identifier=\"FEEDBACK\"/>"
+      "{}<setOutcomeValue identifier=\"FEEDBACK\"><multiple><variable identifier=\"FEEDBACK\"/>"
       "<baseValue baseType=\"identifier\">{}</baseValue></multiple></setOutcomeValue>\n",
-      id);
+      indent, id);
 }
 
 std::string not_asked_id(std::size_t part) { return fmt::format("NA{}", part + 1); }
+// The worked solution's feedback (its identifier cannot clash: the others start NA or M).
+constexpr std::string_view kSolutionId = "SOLUTION";
 
 // A point marked as a whole (whole_point): its points when the distance to the key's point is
 // within the key's rule, (x − x₀)² + (y − y₀)² ≤ r²; a named mistake when every coordinate is
@@ -243,6 +245,8 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
     }
     x += "    </responseCondition>\n";
   }
+  // the worked solution, whatever the answers: shown once the item is answered
+  if (!v.solution.empty()) x += add_feedback(kSolutionId, "    ");
   x += "  </responseProcessing>\n";
   for (std::size_t i = 0; i < v.parts.size(); ++i) {
     if (!v.parts[i].asked)
@@ -263,6 +267,10 @@ std::string item_xml(const ExportSet& set, const ExerciseSlot& slot, const Varia
                        "<p>{}</p></modalFeedback>\n",
                        feedback_id(i, m), m.feedback_html);
   }
+  if (!v.solution.empty())
+    x += fmt::format("  <modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"{}\" showHide=\"show\" title=\"{}\">\n"
+                     "{}  </modalFeedback>\n",
+                     kSolutionId, render::markup_escaped(set.solution_title), solution_html(v, "../images/"));
   x += "</assessmentItem>\n";
   return x;
 }
@@ -304,10 +312,11 @@ std::vector<ZipEntry> qti_files(const ExportSet& set) {
       resources += fmt::format("    <resource identifier=\"{}\" type=\"imsqti_item_xmlv2p1\" href=\"{}\">\n",
                                item_id(v, slot.n), file);
       resources += fmt::format("      <file href=\"{}\"/>\n", file);
-      for (const auto& im : v.images) {
-        files.push_back({"images/" + im.name, im.bytes});
-        resources += fmt::format("      <file href=\"images/{}\"/>\n", im.name);
-      }
+      for (const auto* images : {&v.images, &v.solution_images})
+        for (const auto& im : *images) {
+          files.push_back({"images/" + im.name, im.bytes});
+          resources += fmt::format("      <file href=\"images/{}\"/>\n", im.name);
+        }
       resources += "    </resource>\n";
       test_dependencies += fmt::format("      <dependency identifierref=\"{}\"/>\n", item_id(v, slot.n));
     }

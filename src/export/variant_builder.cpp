@@ -142,6 +142,22 @@ Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::Exe
       v.blocks.push_back(std::move(b));
     }
   }
+  // the key's worked solution, as the paper key sets it (its heading is the question's name)
+  for (const auto& block : inst.key.blocks) {
+    using K = SolutionBlock::Kind;
+    if (const auto* h = std::get_if<render::Heading>(&block)) {
+      if (h->level > 1) v.solution.push_back({K::heading, html_of(h->text), {}, -1});
+    } else if (const auto* p = std::get_if<render::Paragraph>(&block)) {
+      const std::string html = html_of(p->text);
+      v.solution.push_back({K::text, p->emphasis ? "<em>" + html + "</em>" : html, {}, -1});
+    } else if (const auto* f = std::get_if<render::Figure>(&block)) {
+      v.solution.push_back({K::image, {}, {}, static_cast<int>(v.solution_images.size())});
+      v.solution_images.push_back(
+          image(f->scene, fmt::format("{}-{}-key-{}", sheet.id, ex.n, v.solution_images.size() + 1)));
+    } else if (const auto* a = std::get_if<render::AnswerLine>(&block)) {
+      v.solution.push_back({K::answer, html_of(a->prompt), html_of(a->answer), -1});
+    }
+  }
   // a question the sheet has no field for: asked all the same, under its id
   for (std::size_t i = 0; i < v.parts.size(); ++i)
     if (!used[i])

@@ -9,7 +9,8 @@
 #include "render/text.h"
 
 // The pieces every platform writer shares (export_set.h, "shared pieces of the writers"): markup
-// as HTML, numbers as the shortest decimals, the key's rules as widths, the face sets of a part.
+// as HTML, a variant's worked solution as XHTML, numbers as the shortest decimals, the key's rules
+// as widths, the face sets of a part.
 namespace epure::exporting {
 
 std::vector<std::vector<std::string>> face_sets(const Part& faces) {
@@ -61,6 +62,34 @@ std::string html_of(std::string_view rich) {
       case render::Shift::super: out += "<sup>" + text + "</sup>"; break;
     }
   }
+  return out;
+}
+
+std::string solution_html(const Variant& v, std::string_view image_src) {
+  std::string out;
+  bool table = false;
+  for (const auto& b : v.solution) {
+    if (b.kind == SolutionBlock::Kind::answer) {
+      if (!table) out += "<table><tbody>\n";
+      table = true;
+      out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", b.html, b.answer_html);
+      continue;
+    }
+    if (table) out += "</tbody></table>\n";
+    table = false;
+    switch (b.kind) {
+      case SolutionBlock::Kind::heading: out += "<p><strong>" + b.html + "</strong></p>\n"; break;
+      case SolutionBlock::Kind::text: out += "<p>" + b.html + "</p>\n"; break;
+      case SolutionBlock::Kind::image: {
+        const Image& im = v.solution_images[static_cast<std::size_t>(b.image)];
+        out += fmt::format("<p><img src=\"{}{}\" alt=\"{}\" width=\"{}\"/></p>\n", image_src, im.name,
+                           render::markup_escaped(im.alt), im.width_px);
+        break;
+      }
+      case SolutionBlock::Kind::answer: break;
+    }
+  }
+  if (table) out += "</tbody></table>\n";
   return out;
 }
 

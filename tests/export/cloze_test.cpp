@@ -235,3 +235,21 @@ TEST_CASE("cloze_part: a field the case does not ask looks like the others and i
     CHECK(cloze_part(p, 0, ClozeContext{}).find('=') == std::string::npos);  // only offered when asked for
   }
 }
+
+TEST_CASE("solution_html: the key's steps, its diagrams at the writer's path, each run of answers one table") {
+  Variant v;
+  v.solution_images.push_back({"S-2-key-1.png", "image/png", "…", 480, "a \"ray\" & a circle"});
+  using K = SolutionBlock::Kind;
+  v.solution = {{K::text, "t = 1", {}, -1},       {K::image, {}, {}, 0},
+                {K::answer, "t =", "1", -1},       {K::answer, "I =", "(1, 2)", -1},
+                {K::heading, "Check", {}, -1},     {K::answer, "N =", "(0, 1)", -1}};
+  const std::string moodle = solution_html(v, "@@PLUGINFILE@@/");
+  CHECK(moodle ==
+        "<p>t = 1</p>\n"
+        "<p><img src=\"@@PLUGINFILE@@/S-2-key-1.png\" alt=\"a &quot;ray&quot; &amp; a circle\" width=\"480\"/></p>\n"
+        "<table><tbody>\n<tr><td>t =</td><td>1</td></tr>\n<tr><td>I =</td><td>(1, 2)</td></tr>\n</tbody></table>\n"
+        "<p><strong>Check</strong></p>\n"
+        "<table><tbody>\n<tr><td>N =</td><td>(0, 1)</td></tr>\n</tbody></table>\n");
+  CHECK(solution_html(v, "../images/").find("src=\"../images/S-2-key-1.png\"") != std::string::npos);
+  CHECK(solution_html(Variant{}, "x/").empty());
+}

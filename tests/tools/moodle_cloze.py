@@ -25,7 +25,11 @@ Then, for every sheet of the key and every exercise:
     dash and says "not marked" for anything else, or a list whose right option is "— (does not
     apply)"; in each exercise every variant shows the same boxes (same widths) and the same
     lists, so that the question's shape does not tell the case;
-  - every diagram is a base64 PNG (or SVG) <file> the text references as @@PLUGINFILE@@/name.
+  - every diagram is a base64 PNG (or SVG) <file> the text references as @@PLUGINFILE@@/name;
+  - the general feedback is this variant's worked solution: its diagrams embedded in the
+    feedback itself (as the importer reads generalfeedback/file), one table row per answer at
+    least, and every number the key expects printed there rounded as the sheet asks (so that the
+    feedback of another sheet, or an empty one, fails).
 Exit status 0 when everything holds; otherwise every failure is printed.
 
 usage: moodle_cloze.py MOODLE.xml KEY.json GRADING.toml [--summary]
@@ -34,6 +38,7 @@ import base64
 import html
 import json
 import math
+import os
 import re
 import sys
 import tomllib
@@ -202,7 +207,7 @@ def main(argv):
             fail(name, f'type {q.get("type")}, not multianswer')
 
     counts = {'questions': 0, 'parts': 0, 'numbers': 0, 'mistakes': 0, 'images': 0, 'choices': 0, 'faces': 0,
-              'not_asked': 0}
+              'not_asked': 0, 'feedbacks': 0, 'feedback_images': 0}
     shapes = {}  # exercise n → [(where, [shape of each part])]
     with open(grading_path, 'rb') as f:
         export_words = tomllib.load(f)['export']
@@ -226,6 +231,50 @@ def main(argv):
                 fail(where, f'a list not asked has {right} right, not {does_not_apply!r}')
         else:
             fail(where, f'a field not asked as {part["type"]}')
+
+    decimals = key['spec'].get('decimals', 2)
+    comma = os.path.basename(os.path.dirname(os.path.abspath(grading_path))) == 'fr'  # the texts' language
+
+    def shown(x):
+        """A number as the key prints it: rounded to the set's decimals, no trailing zeros, the
+        language's decimal mark, a real minus sign."""
+        t = f'{round(x, decimals):.{decimals}f}'.rstrip('0').rstrip('.')
+        if t in ('-0', ''):
+            t = '0'
+        if comma:
+            t = t.replace('.', ',')
+        return t.replace('-', '\u2212')
+
+    def check_feedback(q, ex, where, fail):
+        gf = q.find('generalfeedback')
+        if gf is None or gf.get('format') != 'html':
+            fail(where, 'no general feedback in HTML')
+            return
+        text = gf.findtext('text') or ''
+        files = {f.get('name'): f for f in gf.findall('file')}
+        refs = re.findall(r'@@PLUGINFILE@@/([^"]+)"', text)
+        if not refs:
+            fail(where, 'the general feedback has no diagram')
+        for r in refs:
+            f = files.get(r)
+            if f is None or f.get('encoding') != 'base64' or f.get('path') != '/':
+                fail(where, f'the general feedback shows {r}, which it does not embed')
+                continue
+            data = base64.b64decode(f.text or '', validate=True)
+            if not (data.startswith(b'\x89PNG\r\n\x1a\n') or b'<svg' in data[:2000]):
+                fail(where, f'{r} in the general feedback is neither a PNG nor an SVG')
+            counts['feedback_images'] += 1
+        for name in files:
+            if name not in refs:
+                fail(where, f'{name} is embedded in the general feedback but not shown')
+        plain = html.unescape(re.sub(r'<[^>]+>', '', text))
+        if text.count('<tr>') < 1:
+            fail(where, 'the general feedback has no answers')
+        for kq in ex['questions']:
+            e = kq['expected']
+            if isinstance(e, (int, float)) and not isinstance(e, bool) and shown(e) not in plain:
+                fail(f'{where} {kq["id"]}', f'the general feedback does not show the key\'s {shown(e)}')
+        counts['feedbacks'] += 1
 
     codes_seen = set()
     title = key['spec']['title']
@@ -262,6 +311,8 @@ def main(argv):
             for name in files:
                 if name not in refs:
                     fail(where, f'{name} is embedded but not shown')
+
+            check_feedback(q, ex, where, fail)
 
             all_parts, rest = extract(text)
             if re.search(r'\{[0-9]*:[A-Z_]+:', rest):
@@ -399,6 +450,7 @@ def main(argv):
               f'{counts["choices"]} choices, {counts["faces"]} face sets, {counts["not_asked"]} fields not asked), '
               f'{counts["mistakes"]} named-mistake answers '
               f'({len(codes_seen)} mistakes: {", ".join(sorted(codes_seen))}), {counts["images"]} images; '
+              f'{counts["feedbacks"]} general feedbacks with {counts["feedback_images"]} diagrams; '
               f'{len(failures)} failures')
     return 1 if failures else 0
 

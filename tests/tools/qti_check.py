@@ -13,7 +13,10 @@
     the response processing;
   - a field the sheet prints and the case does not ask has a response with no correct value,
     read only to say that it is not marked;
-  - every <img> of an item is in the package.
+  - every <img> of an item is in the package;
+  - every item carries its worked solution: a modalFeedback SOLUTION that the response
+    processing sets whatever the answers, with the key's diagrams (in the package), its answers
+    as a table, and every number the key expects printed there rounded as the sheet asks.
 usage: qti_check.py QTI.zip KEY.json EXTRACT_DIR
 """
 import json
@@ -36,11 +39,50 @@ def rule_width(tol, at):
     return 0.0
 
 
+def shown(x, decimals, comma):
+    """A number as the key prints it: rounded to the set's decimals, no trailing zeros, the
+    language's decimal mark, a real minus sign."""
+    t = f'{round(x, decimals):.{decimals}f}'.rstrip('0').rstrip('.')
+    if t in ('-0', ''):
+        t = '0'
+    if comma:
+        t = t.replace('.', ',')
+    return t.replace('-', '\u2212')
+
+
+def check_solution(item, processing, ex, where, names, decimals, fail):
+    """The item's worked solution: shown whatever the answers, this sheet's own."""
+    sol = [mf for mf in item.findall(QTI + 'modalFeedback') if mf.get('identifier') == 'SOLUTION']
+    if len(sol) != 1:
+        fail(where, 'no worked solution (modalFeedback SOLUTION)')
+        return
+    unconditional = [b.text for rule in processing.findall(QTI + 'setOutcomeValue')
+                     for b in rule.iter(QTI + 'baseValue') if b.get('baseType') == 'identifier']
+    if 'SOLUTION' not in unconditional:
+        fail(where, 'the worked solution is not set whatever the answers')
+    mf = sol[0]
+    imgs = list(mf.iter(QTI + 'img'))
+    if not imgs:
+        fail(where, 'the worked solution has no diagram')
+    for img in imgs:
+        if os.path.normpath(os.path.join('items', img.get('src'))) not in names:
+            fail(where, f'the worked solution\'s image {img.get("src")} is not in the package')
+    if mf.find(f'.//{QTI}tr') is None:
+        fail(where, 'the worked solution has no answers')
+    text = ''.join(mf.itertext())
+    comma = item.get('{http://www.w3.org/XML/1998/namespace}lang') == 'fr'
+    for kq in ex['questions']:
+        e = kq['expected']
+        if isinstance(e, (int, float)) and not isinstance(e, bool) and shown(e, decimals, comma) not in text:
+            fail(f'{where} {kq["id"]}', f'the worked solution does not show the key\'s {shown(e, decimals, comma)}')
+
+
 def main(argv):
     zpath, key_path, out_dir = argv[1], argv[2], argv[3]
     failures = []
     fail = lambda where, what: failures.append(f'{where}: {what}')
     key = json.load(open(key_path, encoding='utf-8'))
+    decimals = key['spec'].get('decimals', 2)
     z = zipfile.ZipFile(zpath)
     names = z.namelist()
     if len(names) != len(set(names)):
@@ -198,6 +240,7 @@ def main(argv):
                         fail(qwhere, f'correct {sorted(got)} is not the key\'s {e}')
             if abs(total - sum(q['points'] for q in qs)) > 1e-9:
                 fail(where, f'the scores add up to {total}, the key\'s points to {sum(q["points"] for q in qs)}')
+            check_solution(item, processing, ex, where, names, decimals, fail)
             set_ids = {b.text for b in processing.iter(QTI + 'baseValue') if b.get('baseType') == 'identifier'}
             for mf in item.findall(QTI + 'modalFeedback'):
                 if mf.get('identifier') not in set_ids:
