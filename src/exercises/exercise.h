@@ -62,6 +62,7 @@ struct Question {
 
 struct ExerciseInstance {
   int n = 0;             // place on the sheet, 1-based
+  std::string number;    // the exercise's number, starting its questions' ids (exercise_id)
   std::string kind;
   std::string branch;    // which case this instance shows ("between", "miss", …)
   std::string instance;  // the solve input, JSON text
@@ -90,6 +91,8 @@ struct ExerciseContext {
   int widening = 0;
   // What the sheet calls it: "Exercise 2", or the spec's heading ("Preamble"). Empty: "Exercise n".
   std::string label{};
+  // The exercise's number, starting its questions' ids ("3.3" asks 3.3.t). Empty: n.
+  std::string number{};
   // Whether to build the sheet's section too; false for the explorer's views, which show the key
   // only (ExerciseInstance::sheet is then left empty, and its questions too: the key's answer
   // lines are all a view shows of them).

@@ -48,11 +48,14 @@ std::string solve_instance(std::string_view instance) {
   return std::string(out.data(), out.size());
 }
 
+std::string number_of(const ExerciseContext& ctx) { return ctx.number.empty() ? std::to_string(ctx.n) : ctx.number; }
+
 std::optional<ExerciseInstance> already_taken(const ExerciseContext& ctx, std::string instance) {
   const std::uint64_t f = fingerprint(instance);
   if (!ctx.taken || !ctx.taken->contains(f)) return std::nullopt;
   ExerciseInstance inst;
   inst.n = ctx.n;
+  inst.number = number_of(ctx);
   inst.branch = ctx.branch;
   inst.instance = std::move(instance);
   inst.fingerprint = f;

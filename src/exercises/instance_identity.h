@@ -34,6 +34,9 @@ std::string solve_instance(std::string_view instance);
 // 64-bit FNV-1a of the instance text: equal data, equal fingerprint.
 std::uint64_t fingerprint(std::string_view text);
 
+// The exercise's number as its question ids start ("3.3", "P"): the context's, else its place.
+std::string number_of(const ExerciseContext& ctx);
+
 // The set's collision check, made before the costly part of an instance (solution, exact forms,
 // texts, scenes): when an earlier sheet already holds this instance (ctx.taken), only its
 // identity (instance text and fingerprint) comes back, and the set draws again. Nothing else

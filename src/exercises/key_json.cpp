@@ -67,6 +67,9 @@ void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first) {
   for (const auto& e : sheet.exercises) {
     w.begin_object();
     w.key("n").integer(e.n);
+    // the number its ids start with ("3.3"), when it is not n (key.json before it: always n)
+    const std::string number = e.number.empty() ? std::to_string(e.n) : e.number;
+    if (number != std::to_string(e.n)) w.field("number", std::string_view(number));
     w.field("kind", std::string_view(e.kind));
     w.field("branch", std::string_view(e.branch));
     w.key("instance").raw(e.instance);
@@ -74,7 +77,7 @@ void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first) {
     w.key("questions").begin_array();
     for (const auto& q : e.questions) {
       w.begin_object();
-      w.field("id", std::string_view(fmt::format("{}.{}", e.n, q.field)));
+      w.field("id", std::string_view(fmt::format("{}.{}", number, q.field)));
       w.key("expected");
       write_expected(w, q.expected);
       if (q.exact) w.field("exact", std::string_view(*q.exact));
@@ -87,7 +90,7 @@ void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first) {
       w.field("why", std::string_view(q.tolerance.why));
       w.end_object();
       w.field("points", q.points);
-      if (!q.point_group.empty()) w.field("point", std::string_view(fmt::format("{}.{}", e.n, q.point_group)));
+      if (!q.point_group.empty()) w.field("point", std::string_view(fmt::format("{}.{}", number, q.point_group)));
       w.end_object();
     }
     w.end_array();

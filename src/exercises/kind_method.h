@@ -362,6 +362,7 @@ class MethodKind : public ExerciseKind {
   static ExerciseInstance begin_instance(const Data& d, const ExerciseContext& ctx) {
     ExerciseInstance inst;
     inst.n = ctx.n;
+    inst.number = number_of(ctx);
     inst.kind = std::string(Kind::kName);
     inst.branch = ctx.branch;
     inst.instance = write(d);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "exercises/instance_identity.h"
 #include "support/portable.h"
 
 namespace epure::kinds {
@@ -44,7 +45,7 @@ double Questions::points_for(std::string_view field) const {
   return 1;
 }
 
-std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", ctx_.n, field); }
+std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", number_of(ctx_), field); }
 
 std::string Questions::prompt(std::string_view field) const {
   return ctx_.texts.get(fmt::format("{}.q.{}", ctx_.spec.kind, field));
@@ -192,7 +193,7 @@ void add_fields(render::Section& s, const Questions& q) {
       shown = face_options(ctx, f.choices);
     else
       shown = f.choices;
-    s.add(render::AnswerField{fmt::format("{}.{}", ctx.n, f.field),
+    s.add(render::AnswerField{fmt::format("{}.{}", number_of(ctx), f.field),
                               ctx.texts.get(fmt::format("{}.q.{}", ctx.spec.kind, f.field)), f.kind, shown,
                               f.kind == Kind::faces});
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exercises/instance_identity.h"
+
 namespace epure::kinds {
 
 render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size,
@@ -38,7 +40,7 @@ render::Section begin_section(const ExerciseContext& ctx, std::string_view title
   }
   const std::string label = !ctx.label.empty()
                                 ? ctx.label
-                                : ctx.texts.format("common.exercise_label", {{"n", std::to_string(ctx.n)}});
+                                : ctx.texts.format("common.exercise_label", {{"n", number_of(ctx)}});
   s.add(render::Heading{ctx.texts.format("common.exercise_heading", {{"label", label}, {"title", ctx.texts.get(title_key)}}), 1});
   return s;
 }

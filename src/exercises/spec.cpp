@@ -125,11 +125,35 @@ class Reader {
   std::string source_;
 };
 
+constexpr std::size_t kMaxNumberLength = 12;
+
+// "P", "2", "3.3": printed beside fields and read back as CSV columns, so plain ASCII, no space.
+bool valid_number(std::string_view n) {
+  if (n.empty() || n.size() > kMaxNumberLength || n.front() == '.' || n.back() == '.') return false;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const char c = n[i];
+    const bool alnum = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    if (!alnum && !(c == '.' && n[i - 1] != '.')) return false;
+  }
+  return true;
+}
+
 ExerciseSpec read_exercise(const Reader& r, const toml::table& t, std::string_view prefix,
                            Difficulty default_difficulty, std::string_view language, const toml::node& where) {
-  r.only(t, prefix, {"kind", "heading", "difficulty", "branches", "points", "questions", "constraints"});
+  r.only(t, prefix, {"kind", "heading", "number", "difficulty", "branches", "points", "questions", "constraints"});
   ExerciseSpec e;
   e.heading = r.localized(t, prefix, "heading", language, e.heading_by_language);
+  if (const toml::node* n = t.get("number")) {
+    const std::string key = Reader::qualified(prefix, "number");
+    if (const auto* i = n->as_integer()) e.number = std::to_string(i->get());
+    else if (n->is_string()) e.number = n->as_string()->get();
+    else r.fail(*n, key, "expected a string such as \"3.3\" or \"P\"");
+    if (!valid_number(e.number))
+      r.fail(*n, key,
+             fmt::format("\"{}\": letters and digits, parts joined by single dots, at most {} characters "
+                         "(\"P\", \"2\", \"3.3\"): it starts every question id of the exercise",
+                         e.number, kMaxNumberLength));
+  }
   e.kind = r.string(t, prefix, "kind", "");
   if (e.kind.empty()) r.fail(where, Reader::qualified(prefix, "kind"), "missing");
   const ExerciseKind* kind = find_kind(e.kind);
@@ -292,6 +316,15 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
     if (!t) r.fail(node, prefix, "expected a table");
     spec.exercises.push_back(read_exercise(r, *t, prefix, difficulty, spec.language, node));
   }
+  // every exercise's number, given or derived, and none twice: a question id names one question
+  std::vector<std::string> numbers;
+  for (std::size_t i = 0; i < spec.exercises.size(); ++i) numbers.push_back(exercise_id(spec, i));
+  for (std::size_t i = 0; i < numbers.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (numbers[i] == numbers[j])
+        r.fail(*array->get(i), fmt::format("exercise[{}]", i + 1),
+               fmt::format("its number {} is exercise[{}]'s too: give one of them another `number`", numbers[i], j + 1));
+  for (std::size_t i = 0; i < numbers.size(); ++i) spec.exercises[i].number = numbers[i];
   return spec;
 }
 
@@ -314,6 +347,23 @@ int exercise_number(const WorksheetSpec& spec, std::size_t slot) {
   for (std::size_t i = 0; i < slot && i < spec.exercises.size(); ++i)
     if (spec.exercises[i].heading.empty()) ++n;
   return n;
+}
+
+std::string exercise_id(const WorksheetSpec& spec, std::size_t slot) {
+  const auto& e = spec.exercises.at(slot);
+  if (!e.number.empty()) return e.number;
+  if (e.heading.empty()) return std::to_string(exercise_number(spec, slot));
+  const std::string place = std::to_string(slot + 1);
+  for (std::size_t i = 0; i < spec.exercises.size(); ++i) {
+    if (i == slot) continue;
+    const auto& o = spec.exercises[i];
+    // the numbers the others have without asking this one's (no recursion through headings)
+    const std::string theirs = !o.number.empty() ? o.number
+                               : o.heading.empty() ? std::to_string(exercise_number(spec, i))
+                                                   : std::string();
+    if (theirs == place) return "s" + place;
+  }
+  return place;
 }
 
 namespace {

@@ -39,6 +39,11 @@ struct ExerciseSpec {
   std::string heading;
   std::map<std::string, std::string> heading_by_language;
   std::string heading_in(std::string_view language) const;
+  // The exercise's number in every place that names it: its questions' ids ("3.3" gives
+  // 3.3.t, printed beside the field, the answers CSV's column, key.json), and "Exercise n" when
+  // it has no heading. Letters, digits and inner dots ("P", "3.3"). Empty as written: see
+  // exercise_id, which parse_spec fills in.
+  std::string number;
 };
 
 // The spec's own words, printed on every page and in the PDF's metadata.
@@ -84,6 +89,12 @@ class SpecError : public std::runtime_error {
 // The number the sheet gives the exercise in `slot` when it has no heading of its own: 1 + the
 // unheaded exercises before it.
 int exercise_number(const WorksheetSpec& spec, std::size_t slot);
+// The exercise's number as its ids and heading use it: the spec's `number`, else for an
+// exercise without a heading its exercise_number ("Exercise 2" asks 2.t), else its place on the
+// sheet (1-based) — or "s" and that place when another exercise already has that number (a
+// spec written before `number` existed, with a "Preamble" first, still reads). parse_spec checks
+// that no two exercises share one.
+std::string exercise_id(const WorksheetSpec& spec, std::size_t slot);
 
 // Throws SpecError "<source>:<line>:<column>: key '<key>': <why>".
 WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_name);

@@ -36,6 +36,7 @@ ExerciseContext WorksheetSet::context(int slot, int n, const std::string& branch
   ExerciseContext ctx{n, spec_.exercises[slot], texts, NumberStyle::for_language(language_),
                       spec_.decimals, branch};
   ctx.label = exercise_label(spec_, static_cast<std::size_t>(slot), texts);
+  ctx.number = exercise_id(spec_, static_cast<std::size_t>(slot));
   return ctx;
 }
 
@@ -44,7 +45,7 @@ std::string exercise_label(const WorksheetSpec& spec, std::size_t slot, const Te
     std::string own = spec.exercises[slot].heading_in(texts.language());
     if (!own.empty()) return own;
   }
-  return texts.format("common.exercise_label", {{"n", std::to_string(exercise_number(spec, slot))}});
+  return texts.format("common.exercise_label", {{"n", exercise_id(spec, slot)}});
 }
 
 ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std::string& branch,
@@ -56,6 +57,7 @@ ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std:
   ctx.widening = widening;
   const ExerciseKind& kind = *find_kind(spec_.exercises[slot].kind);
   ExerciseInstance instance = kind.make(rng, ctx);
+  instance.number = ctx.number;
   // the questions' weights become their shares of the exercise's points, whatever the branch
   spread_points(instance.questions, spec_.exercises[slot].points.value_or(kind.default_points()));
   return instance;

@@ -96,7 +96,7 @@ struct SolutionBlock {
 // One student's instance of one exercise: one online question.
 struct Variant {
   std::string sheet_id;
-  std::string name;  // "2. Projection of a point on a line — 1000-0001-000X"
+  std::string name;  // "Exercise 1 — Projection of a point on a line — 1000-0001-000X": the sheet's heading
   std::vector<Block> blocks;
   std::vector<Image> images;
   std::vector<Part> parts;
@@ -108,13 +108,14 @@ struct Variant {
 };
 
 struct ExerciseSlot {
-  int n = 0;
+  int n = 0;           // place on the sheet (the order of the slots)
+  std::string number;  // what its question ids start with ("3.3")
   // The question ids some variant prints but does not ask: every variant then says that such a
   // box is not marked (export.not_asked_hint), and a platform that needs a right option in every
   // list offers "— (does not apply)" in these lists on every variant, so that neither tells the case.
   std::vector<std::string> not_asked;
   std::string kind;
-  std::string title;  // "Projection of a point on a line", in the set's language
+  std::string title;  // the sheet's heading, "Exercise 1 — Projection of a point on a line", in the set's language
   std::vector<Variant> variants;  // in sheet order
 };
 

@@ -58,7 +58,7 @@ int weight_scale(const ExerciseSlot& slot) {
       for (const auto& p : v.parts) whole = whole && std::abs(p.points * scale - std::round(p.points * scale)) < 1e-9;
     if (whole) return scale;
   }
-  throw ExportError(fmt::format("exercise {}: points that are not quarter points cannot be Cloze weights", slot.n));
+  throw ExportError(fmt::format("{}: points that are not quarter points cannot be Cloze weights", slot.title));
 }
 
 // A category path segment: Moodle splits the path at '/', and reads "//" as a slash.
@@ -217,8 +217,9 @@ std::string moodle_xml(const ExportSet& set) {
   const bool comma = set.language == "fr";
   for (const auto& slot : set.exercises) {
     const int scale = weight_scale(slot);
-    const std::string category = fmt::format("$course$/top/{}/{}. {}", category_segment(set.title), slot.n,
-                                             category_segment(slot.title));
+    // the exercise as the sheet heads it: the same name as its questions' ids' number
+    const std::string category =
+        fmt::format("$course$/top/{}/{}", category_segment(set.title), category_segment(slot.title));
     out += "  <question type=\"category\">\n";
     out += fmt::format("    <category><text>{}</text></category>\n", render::markup_escaped(category));
     out += "    <info format=\"html\"><text></text></info>\n";

@@ -283,7 +283,7 @@ std::string test_xml(const ExportSet& set) {
   x += "  <testPart identifier=\"part\" navigationMode=\"nonlinear\" submissionMode=\"simultaneous\">\n";
   for (const auto& slot : set.exercises) {
     x += fmt::format("    <assessmentSection identifier=\"exercise-{}\" title=\"{}\" visible=\"true\">\n", slot.n,
-                     render::markup_escaped(fmt::format("{}. {}", slot.n, slot.title)));
+                     render::markup_escaped(slot.title));
     x += "      <selection select=\"1\"/>\n";
     for (const auto& v : slot.variants)
       x += fmt::format("      <assessmentItemRef identifier=\"{}\" href=\"{}\"/>\n", item_id(v, slot.n),

@@ -89,7 +89,7 @@ Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::Exe
               const std::string& title) const {
   Variant v;
   v.sheet_id = sheet.id;
-  v.name = fmt::format("{}. {} \u2014 {}", ex.n, title, sheet.id);
+  v.name = fmt::format("{} \u2014 {}", title, sheet.id);
   const ExerciseKind* kind = find_kind(ex.kind);
   const Runs runs = evaluate(kind, ex);
   // where each mistake first shows, in the key's order of questions
@@ -119,9 +119,12 @@ Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::Exe
     } else if (const auto* a = std::get_if<render::AnswerField>(&block)) {
       Block b{Block::Kind::field, html_of(a->prompt), -1, {}, false};
       const bool point = a->kind == render::AnswerField::Kind::point || a->kind == render::AnswerField::Kind::point3;
+      // the field's id as the key numbers it: the same unless the key was written before
+      // exercises had numbers of their own (its ids then start with the place, "6.t")
+      const std::string field_id = ex.number + a->question_id.substr(std::min(inst.number.size(), a->question_id.size()));
       const std::vector<std::string> ids =
-          point ? std::vector<std::string>{a->question_id + ".x", a->question_id + ".y", a->question_id + ".z"}
-                : std::vector<std::string>{a->question_id};
+          point ? std::vector<std::string>{field_id + ".x", field_id + ".y", field_id + ".z"}
+                : std::vector<std::string>{field_id};
       for (const auto& id : ids)
         for (std::size_t i = 0; i < v.parts.size(); ++i)
           if (v.parts[i].question_id == id && !used[i]) {
@@ -134,7 +137,7 @@ Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::Exe
         for (const auto& id : point ? std::vector<std::string>(ids.begin(), ids.begin() + (a->kind == render::AnswerField::Kind::point3 ? 3 : 2))
                                     : ids) {
           b.parts.push_back(static_cast<int>(v.parts.size()));
-          v.parts.push_back(not_asked(kind, *a, id));
+          v.parts.push_back(not_asked(kind, *a, id, ex.number));
           used.push_back(true);
         }
       b.point = point && b.parts.size() > 1;
@@ -189,13 +192,14 @@ std::string VariantBuilder::sentence(const QuestionKey& q, std::string_view code
 }
 
 // A field the sheet prints and this case does not ask: its options as the sheet's.
-Part VariantBuilder::not_asked(const ExerciseKind* kind, const render::AnswerField& field, const std::string& id) const {
+Part VariantBuilder::not_asked(const ExerciseKind* kind, const render::AnswerField& field, const std::string& id,
+                              const std::string& number) const {
   Part p;
   p.question_id = id;
   p.asked = false;
   p.points = 0;
   using Kind = render::AnswerField::Kind;
-  const std::string field_name = id.substr(id.find('.') + 1);
+  const std::string field_name = id.substr(number.size() + 1);
   switch (field.kind) {
     case Kind::number:
     case Kind::point:

@@ -20,7 +20,10 @@ class VariantBuilder {
   struct Runs;
   Runs evaluate(const ExerciseKind* kind, const grading::ExerciseKey& ex) const;
   std::string sentence(const grading::QuestionKey& q, std::string_view code, double value) const;
-  Part not_asked(const ExerciseKind* kind, const render::AnswerField& field, const std::string& id) const;
+  // A field the sheet prints and this case does not ask (its id starts with `number`, the
+  // exercise's number in the key).
+  Part not_asked(const ExerciseKind* kind, const render::AnswerField& field, const std::string& id,
+                 const std::string& number) const;
   std::vector<Option> yes_no() const;
   std::vector<Option> choice_options(const ExerciseKind* kind, std::string_view field) const;
   std::vector<Option> side_options(const ExerciseKind* kind, std::string_view field) const;

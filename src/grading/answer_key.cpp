@@ -100,11 +100,11 @@ ToleranceRule read_rule(const json& q, const Where& where) {
   return r;
 }
 
-QuestionKey read_question(const json& q, int n, Where where) {
+QuestionKey read_question(const json& q, const std::string& number, Where where) {
   QuestionKey k;
   k.id = string_member(q, "id", where);
   where.item = fmt::format("question {}", k.id);
-  const std::string prefix = fmt::format("{}.", n);
+  const std::string prefix = number + ".";
   if (k.id.rfind(prefix, 0) != 0 || k.id.size() == prefix.size())
     where.fail(fmt::format("its id should start with '{}' (the exercise's number)", prefix));
   k.field = k.id.substr(prefix.size());
@@ -141,6 +141,18 @@ QuestionKey read_question(const json& q, int n, Where where) {
 }
 
 }  // namespace
+
+const std::string* AnswerKey::id_of_place_name(std::string_view name) const {
+  const auto it = place_names_.find(name);
+  return it == place_names_.end() ? nullptr : &it->second;
+}
+
+bool AnswerKey::only_by_place(std::string_view name) const {
+  return place_names_.find(name) != place_names_.end() &&
+         std::find(question_ids_.begin(), question_ids_.end(), name) == question_ids_.end();
+}
+
+bool AnswerKey::has_number(std::string_view number) const { return numbers_.find(number) != numbers_.end(); }
 
 int ExerciseKey::find(std::string_view field) const {
   // kinds' graders ask by name many times per exercise: by hash alone once packed (every
@@ -192,6 +204,7 @@ void AnswerKey::add(SheetKey sheet) {
   // before it on this sheet (or first among its exercise's), so every exercise keeps the
   // order its sheets ask in, whatever branch each sheet drew.
   for (const auto& e : sheet.exercises) {
+    numbers_.emplace(e.number, e.n);
     std::string previous;
     for (const auto& q : e.questions) {
       auto it = std::find(question_ids_.begin(), question_ids_.end(), q.id);
@@ -201,13 +214,19 @@ void AnswerKey::add(SheetKey sheet) {
           at = std::find(question_ids_.begin(), question_ids_.end(), previous) + 1;
         } else {
           // before the first id of a later exercise
-          at = std::find_if(question_ids_.begin(), question_ids_.end(), [&](const std::string& id) {
-            return std::stoi(id) > e.n;
-          });
+          at = question_ids_.begin() +
+               (std::find_if(question_places_.begin(), question_places_.end(), [&](int n) { return n > e.n; }) -
+                question_places_.begin());
         }
+        question_places_.insert(question_places_.begin() + (at - question_ids_.begin()), e.n);
         question_ids_.insert(at, q.id);
       }
       previous = q.id;
+      if (e.number != std::to_string(e.n) || !place_names_.empty()) {
+        if (place_names_.empty())  // the exercises before the first numbered one: by place too
+          for (const auto& id : question_ids_) place_names_.emplace(id, id);
+        place_names_.emplace(fmt::format("{}.{}", e.n, q.field), q.id);
+      }
     }
   }
   if (find(sheet.id)) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
@@ -239,13 +258,19 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
     ExerciseKey ex;
     ex.n = static_cast<int>(integer_member(e, "n", 1, static_cast<std::int64_t>(kMaxExercises), where));
     where.item = fmt::format("exercise {}", ex.n);
+    ex.number = std::to_string(ex.n);
+    if (auto num = e.find("number"); num != e.end()) {
+      if (!num->is_string() || num->get<std::string>().empty() || num->get<std::string>().size() > 64)
+        where.fail("'number' must be a short string (\"3.3\")");
+      ex.number = num->get<std::string>();
+    }
     ex.kind = string_member(e, "kind", where);
     if (auto b = e.find("branch"); b != e.end() && b->is_string()) ex.branch = b->get<std::string>();
     ex.instance = member(e, "instance", where);
     ex.solution = member(e, "solution", where);
     const json& qs = member(e, "questions", where);
     if (!qs.is_array()) where.fail("'questions' must be an array");
-    for (const auto& q : qs) ex.questions.push_back(read_question(q, ex.n, where));
+    for (const auto& q : qs) ex.questions.push_back(read_question(q, ex.number, where));
     ex.grader = find_grader(ex.kind);
     if (ex.grader) {
       try {

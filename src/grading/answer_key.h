@@ -73,6 +73,7 @@ struct HotQuestion {
 
 struct ExerciseKey {
   int n = 0;
+  std::string number;  // what its question ids start with: key.json's "number", else n ("3.3", "2")
   std::string kind;
   std::string branch;
   nlohmann::json instance;  // exactly a solve input
@@ -127,6 +128,17 @@ class AnswerKey {
   const std::vector<std::string>& question_ids() const { return question_ids_; }
   // Ids that were asked for but could not be rebuilt (--spec), with why.
   const std::map<std::string, std::string>& refused() const { return refused_; }
+  // The id a column named the way sets numbered their questions before exercise numbers
+  // (place on the sheet, "6.t" for the ellipse's t where it is now 3.3.t) stands for, or null
+  // (also null for every name when no exercise's number differs from its place): answers
+  // collected with an older template still grade. Such a name may be another question's id
+  // ("4.t" was the circle's t, it is now the square's): only_by_place tells the header apart.
+  const std::string* id_of_place_name(std::string_view name) const;
+  // Whether `name` is a place name and no question's id ("1.dot", "6.t"): a header holding one
+  // is read by place, all of it.
+  bool only_by_place(std::string_view name) const;
+  // Whether `number` starts some question id of the key ("3.3", "P", "2").
+  bool has_number(std::string_view number) const;
 
   // Adds a sheet (its graders prepared) and merges its question ids into the report order.
   void add(SheetKey sheet);
@@ -140,6 +152,9 @@ class AnswerKey {
   std::vector<std::uint32_t> slots_;
   void rehash(std::size_t slots);
   std::vector<std::string> question_ids_;
+  std::vector<int> question_places_;  // question_ids_[i]'s exercise place n, for the report order
+  std::map<std::string, std::string, std::less<>> place_names_;  // "6.t" → "3.3.t"
+  std::map<std::string, int, std::less<>> numbers_;
   std::map<std::string, std::string> refused_;
 };
 

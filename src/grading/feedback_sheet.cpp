@@ -125,7 +125,7 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
     const WorksheetSpec* spec = diagrams ? diagrams->spec() : nullptr;
     const std::string label = spec && e < spec->exercises.size() && spec->exercises[e].kind == ex.kind
                                   ? exercise_label(*spec, e, T)
-                                  : T.format("common.exercise_label", {{"n", std::to_string(ex.n)}});
+                                  : T.format("common.exercise_label", {{"n", ex.number}});
     section.add(render::Heading{T.format("common.exercise_heading", {{"label", label}, {"title", title}}), 1});
     if (diagrams) {
       if (auto scene = diagrams->scene(*s.sheet, e)) {

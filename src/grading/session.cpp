@@ -176,6 +176,11 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     }
     return -1;
   };
+  // a header naming a question by its place on the sheet where it now has a number of its own
+  // ("1.dot" for P.dot) was written for the set's sheets as numbered before: read it by place
+  bool by_place = false;
+  for (const auto& n : names_) by_place = by_place || key_.only_by_place(trim_cell(n));
+  if (by_place) problem(header_line_, texts_.get("grading.problem.columns_by_place"), false, "column");
   for (std::size_t c = 0; c < names_.size(); ++c) {
     std::string_view name = trim_cell(names_[c]);
     if (c == 0 && name.substr(0, 3) == "\xef\xbb\xbf") name.remove_prefix(3);  // a BOM written twice
@@ -192,11 +197,19 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
       student_number_column_ = static_cast<int>(c);
       continue;
     }
-    if (const int x = point_of(name); x >= 0 && looks_like_question(name) && point_column_[static_cast<std::size_t>(x)] < 0) {
+    // by place, "2.P" is the point whose first coordinate was "2.P.x"
+    std::string point_name(name);
+    if (by_place)
+      if (const std::string* id = key_.id_of_place_name(point_name + ".x")) point_name = id->substr(0, id->size() - 2);
+    if (const int x = point_of(point_name); x >= 0 && looks_like_question(name) && point_column_[static_cast<std::size_t>(x)] < 0) {
       point_column_[static_cast<std::size_t>(x)] = static_cast<int>(c);
       continue;
     }
-    auto it = std::find(ids.begin(), ids.end(), name);
+    auto it = ids.end();
+    // "6.t": a header written before exercises had numbers of their own, every column by place
+    if (by_place)
+      if (const std::string* id = key_.id_of_place_name(name)) it = std::find(ids.begin(), ids.end(), *id);
+    if (it == ids.end()) it = std::find(ids.begin(), ids.end(), name);
     if (it == ids.end()) {
       // "2.T_AB" for "2.t_ab": ids are lower case but for the point names
       it = std::find_if(ids.begin(), ids.end(), [&](const std::string& id) {
@@ -224,7 +237,8 @@ void GradingSession::header(const std::vector<std::string>& names, int line) {
     // a name shaped like a question id is most likely a typo: an error; any other column (an
     // e-mail, a time stamp) a warning
     const TextVars vars{{"column", std::to_string(c + 1)}, {"name", std::string(name)}};
-    if (looks_like_question(name))
+    if (looks_like_question(name) ||
+        (name.find('.') != std::string_view::npos && key_.has_number(name.substr(0, name.find('.')))))
       problem(header_line_, texts_.format("grading.problem.column_not_in_key", vars), true, "column");
     else
       problem(header_line_, texts_.format("grading.problem.column_ignored", vars), false, "column");

@@ -132,15 +132,23 @@ assert [s["student"] for s in a["submissions"]] == [s["student"] for s in b["sub
 PY
 done
 
-# keys rebuilt from the spec and the ids: the same points on every question the small key has
+# keys rebuilt from the spec and the ids: the same points on every question the small key has.
+# The export's header names questions by place (1.dot, 2.t), as the sheets of key_small.json
+# were printed; the course's spec now numbers its exercises P, 1, 2, …: the header is read by
+# place, with a warning, and every question marked as before under its new id.
 "$EPURE" grade --spec builtin --answers "$data/export_fr.csv" --json "$tmp/spec.json" -q >/dev/null 2>"$tmp/spec.err" \
   || fail "--spec builtin: exit $? ($(cat "$tmp/spec.err"))"
+grep -q "by their exercise's place" "$tmp/spec.err" || fail "--spec builtin: no warning that the columns are read by place"
 python3 - "$tmp/marks.json" "$tmp/spec.json" <<'PY' || fail "--spec builtin marks differ from key.json's"
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
+numbers = ["P", "1", "2", "3", "4", "3.3", "4.3"]  # templates/course.toml
+def by_place(i):  # "P.dot" -> "1.dot", "1.t" -> "2.t", "3.3.t" -> "6.t"
+    n = max((n for n in numbers if i.startswith(n + ".")), key=len)
+    return f"{numbers.index(n) + 1}{i[len(n):]}"
 for x, y in zip(a["submissions"], b["submissions"]):
     assert x["sheet"] == y["sheet"]
-    py = {q["id"]: q["points"] for q in y["questions"]}
+    py = {by_place(q["id"]): q["points"] for q in y["questions"]}
     for q in x["questions"]:
         assert py[q["id"]] == q["points"], (x["sheet"], q["id"], q["points"], py[q["id"]])
 PY

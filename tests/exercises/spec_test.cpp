@@ -113,6 +113,32 @@ kind = "ray_circle"
     CHECK(epure::exercise_number(course, 1) == 1);
     CHECK(epure::exercise_number(course, 4) == 4);
     CHECK(course.exercises[5].heading_in("fr") == "Exercice 3, question 3");
+    // one numbering: the ids' number says what the heading says
+    CHECK(epure::exercise_id(course, 0) == "P");
+    CHECK(epure::exercise_id(course, 1) == "1");
+    CHECK(epure::exercise_id(course, 4) == "4");
+    CHECK(epure::exercise_id(course, 5) == "3.3");
+    CHECK(epure::exercise_id(course, 6) == "4.3");
+  }
+  SUBCASE("exercise numbers: given, derived, and never twice") {
+    // without `number`: n for "Exercise n", the place for a heading unless that place is taken
+    CHECK(epure::exercise_id(spec, 0) == "s1");  // "Préambule" at place 1, "Exercise 1" is 1
+    CHECK(epure::exercise_id(spec, 1) == "1");
+    CHECK(epure::exercise_id(spec, 2) == "3");   // "Bonus" at place 3: no exercise is 3
+    CHECK(epure::exercise_id(spec, 3) == "2");
+    CHECK(spec.exercises[0].number == "s1");     // parse_spec fills them in
+    const auto given = epure::parse_spec(
+        "[[exercise]]\nkind = \"projection\"\nnumber = \"A.1\"\n[[exercise]]\nkind = \"segments\"\nnumber = 7\n", "n.toml");
+    CHECK(given.exercises[0].number == "A.1");
+    CHECK(given.exercises[1].number == "7");
+    const auto clash = error_of("[[exercise]]\nkind = \"projection\"\n[[exercise]]\nkind = \"segments\"\nnumber = \"1\"\n");
+    CHECK(clash.find("exercise[2]") != std::string::npos);
+    CHECK(clash.find("number 1 is exercise[1]'s too") != std::string::npos);
+    for (const char* bad : {"\"\"", "\"3..3\"", "\".3\"", "\"3.\"", "\"3 3\"", "\"é\"", "\"1234567890123\"", "1.5"}) {
+      CAPTURE(bad);
+      const auto e = error_of(std::string("[[exercise]]\nkind = \"projection\"\nnumber = ") + bad + "\n");
+      CHECK(e.find("'exercise[1].number'") != std::string::npos);
+    }
   }
   SUBCASE("a heading of another language or type is an error naming the key") {
     const auto e = error_of("[[exercise]]\nkind = \"projection\"\nheading = { de = \"x\" }\n");

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "grading/answer_source.h"
 #include "grading/session.h"
 #include "grading/sheet_lookup.h"
@@ -37,13 +39,39 @@ struct Run {
   Outcome outcome;
 };
 
-Run grade(const std::string& csv, bool follow_through = true, const std::string& language = "") {
+// The small key numbered as sets are since exercises have numbers of their own: the preamble
+// "P", then 1 to 4 (ids P.dot, 1.t, …), where key_small.json numbers them by place (1.dot, 2.t).
+const AnswerKey& numbered_key() {
+  static const AnswerKey k = [] {
+    std::ifstream in(EPURE_SOURCE_DIR "/tests/grading/data/key_small.json");
+    auto j = nlohmann::json::parse(in);
+    for (auto& sheet : j["sheets"])
+      for (auto& e : sheet["exercises"]) {
+        const int n = e["n"].get<int>();
+        const std::string number = n == 1 ? "P" : std::to_string(n - 1);
+        e["number"] = number;
+        for (auto& q : e["questions"]) {
+          const std::string id = q["id"].get<std::string>();
+          q["id"] = number + id.substr(id.find('.'));
+          if (q.contains("point")) {
+            const std::string point = q["point"].get<std::string>();
+            q["point"] = number + point.substr(point.find('.'));
+          }
+        }
+      }
+    return read_key_json(j.dump(), "numbered.json");
+  }();
+  return k;
+}
+
+Run grade(const std::string& csv, bool follow_through = true, const std::string& language = "",
+          const AnswerKey& with = key()) {
   SessionOptions o;
   o.answers_name = "a.csv";
   o.language = language;
   o.log = nullptr;
   o.follow_through = follow_through;
-  GradingSession session(key(), std::move(o));
+  GradingSession session(with, std::move(o));
   Run run;
   session.add_sink(run.rows);
   const SourceInfo info = read_answers_text(csv, "a.csv", session);
@@ -67,6 +95,40 @@ TEST_CASE("totals: right answers earn the sheet's points, blanks nothing") {
   CHECK(run.rows.rows[1].first == doctest::Approx(0).epsilon(1e-12));
   CHECK(run.outcome.rows == 2);
   CHECK(run.outcome.exit_status() == 0);
+}
+
+TEST_CASE("exercise numbers: a key's own ids, and the ids by place of answers collected before") {
+  const AnswerKey& k = numbered_key();
+  CHECK(k.question_ids().front() == "P.dot");
+  CHECK(k.has_number("P"));
+  CHECK(!k.has_number("5"));
+  REQUIRE(k.id_of_place_name("2.t") != nullptr);
+  CHECK(*k.id_of_place_name("2.t") == "1.t");
+  CHECK(k.id_of_place_name("1.t") == nullptr);  // place 1 is the preamble: 1.dot, …
+  // "4.t" was the circle's t (place 4) and is now the square's (number 4): a header is read by
+  // place only when it has a name that is no id of the key
+  CHECK(*k.id_of_place_name("4.t") == "3.t");
+  CHECK(!k.only_by_place("4.t"));
+  CHECK(k.only_by_place("1.dot"));
+  CHECK(key().id_of_place_name("2.t") == nullptr);  // a key numbered by place: nothing to alias
+  const std::string circle = "1000-0005-002N,A,1,99\n";
+  const auto by_place = grade("sheet,student,1.dot,4.t\n" + circle, true, "", k);
+  const auto by_number = grade("sheet,student,P.dot,4.t\n" + circle, true, "", k);
+  REQUIRE(by_place.rows.rows.size() == 1);
+  REQUIRE(by_number.rows.rows.size() == 1);
+  CHECK(has_problem(by_place.outcome, 1, "place"));
+  CHECK(!has_problem(by_number.outcome, 1, "place"));
+  const std::string row = "1000-0005-002N,A,-0.48,9.41,3.97,before\n";
+  const auto now = grade("sheet,student,1.t,1.P.x,1.P.y,1.position\n" + row, true, "", k);
+  const auto before = grade("sheet,student,2.t,2.P.x,2.P.y,2.position\n" + row, true, "", k);
+  REQUIRE(now.rows.rows.size() == 1);
+  REQUIRE(before.rows.rows.size() == 1);
+  CHECK(now.rows.rows[0].first == doctest::Approx(5).epsilon(1e-12));
+  CHECK(before.rows.rows[0].first == doctest::Approx(5).epsilon(1e-12));
+  CHECK(before.outcome.exit_status() == 0);
+  // a column named with a number of the key but no question of it is an error, not a warning
+  const auto typo = grade("sheet,student,P.dto\n1000-0005-002N,A,1\n", true, "", k);
+  CHECK(typo.outcome.exit_status() != 0);
 }
 
 TEST_CASE("bad input, each case said with its line, every row reported") {

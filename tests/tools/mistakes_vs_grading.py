@@ -33,8 +33,8 @@ def main(argv):
     by_name = {}
     for q in root.findall('question'):
         if q.get('type') == 'multianswer':
-            m = re.match(r'^(\d+)\. .+ \u2014 (\S+)$', q.findtext('name/text'))
-            by_name[(int(m.group(1)), m.group(2))] = q
+            m = re.match(r'^(\S+)-(\d+)$', q.findtext('idnumber'))
+            by_name[(int(m.group(2)), m.group(1))] = q
     ids = []
     for s in key['sheets']:
         for e in s['exercises']:

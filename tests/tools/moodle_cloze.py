@@ -9,7 +9,9 @@ qtype_multianswer_extract_question), with its regular expressions:
 
 (Python's look-behind needs a fixed width: (?<!\\\\|&|&amp;) is written as three look-behinds.)
 Then, for every sheet of the key and every exercise:
-  - the question `<n>. <title> — <sheet id>` is there, once, in the category `…/<n>. <title>`;
+  - the question `<heading> — <sheet id>` (idnumber `<sheet id>-<n>`) is there, once, in the
+    category `…/<heading>`, the heading the same on every sheet and naming the number its
+    question ids start with (one numbering: "Exercise 3, question 3" for 3.3.t);
   - its parts are the key's questions in order (a point: x then y), each weighted by its points;
   - a number's first answer is `=` the key's value, exactly, with a tolerance that Moodle's own
     widening (question/type/numerical/question.php: + 10^-14·max(tol, |value|)) keeps within the
@@ -164,6 +166,32 @@ def shape(part):
     return (part['type'], tuple(a['text'] for a in part['alternatives']))
 
 
+def shown(x, decimals, comma):
+    """A number as the key prints it: rounded to the set's decimals, no trailing zeros, the
+    language's decimal mark, a real minus sign."""
+    t = f'{round(x, decimals):.{decimals}f}'.rstrip('0').rstrip('.')
+    if t in ('-0', ''):
+        t = '0'
+    if comma:
+        t = t.replace('.', ',')
+    return t.replace('-', '\u2212')
+
+
+def names_number(heading, number):
+    """Whether a heading names the exercise its ids' number stands for: each part of the number
+    ("3.3": 3 then 3; "P") is, in order, a word of the heading or a word's first letter(s)
+    ("Exercise 3, question 3"; "Preamble")."""
+    words = re.findall(r'\w+', heading)
+    i = 0
+    for part in number.split('.'):
+        while i < len(words) and not (words[i] == part or (part.isalpha() and words[i].startswith(part))):
+            i += 1
+        if i == len(words):
+            return False
+        i += 1
+    return True
+
+
 def face_set(text, none_word):
     """The set of faces a list option names ("+x, \u2212y"), with the contract's '-'."""
     if text == none_word:
@@ -195,14 +223,16 @@ def main(argv):
             category = q.findtext('category/text')
             continue
         name = q.findtext('name/text')
-        m = re.match(r'^(\d+)\. (.+) \u2014 (\S+)$', name or '')
-        if not m:
-            fail(moodle_path, f'a question named {name!r} does not read "<n>. <title> — <sheet id>"')
+        m = re.match(r'^(.+) \u2014 (\S+)$', name or '')
+        idm = re.match(r'^(\S+)-(\d+)$', q.findtext('idnumber') or '')
+        if not m or not idm or idm.group(1) != m.group(2):
+            fail(moodle_path, f'a question named {name!r} does not read "<heading> — <sheet id>" with the idnumber '
+                              '"<sheet id>-<n>"')
             continue
-        k = (int(m.group(1)), m.group(3))
+        k = (int(idm.group(2)), m.group(2))
         if k in questions:
             fail(name, 'twice')
-        questions[k] = (category, q, m.group(2))
+        questions[k] = (category, q, m.group(1))
         if q.get('type') != 'multianswer':
             fail(name, f'type {q.get("type")}, not multianswer')
 
@@ -235,16 +265,6 @@ def main(argv):
     decimals = key['spec'].get('decimals', 2)
     comma = os.path.basename(os.path.dirname(os.path.abspath(grading_path))) == 'fr'  # the texts' language
 
-    def shown(x):
-        """A number as the key prints it: rounded to the set's decimals, no trailing zeros, the
-        language's decimal mark, a real minus sign."""
-        t = f'{round(x, decimals):.{decimals}f}'.rstrip('0').rstrip('.')
-        if t in ('-0', ''):
-            t = '0'
-        if comma:
-            t = t.replace('.', ',')
-        return t.replace('-', '\u2212')
-
     def check_feedback(q, ex, where, fail):
         gf = q.find('generalfeedback')
         if gf is None or gf.get('format') != 'html':
@@ -272,11 +292,12 @@ def main(argv):
             fail(where, 'the general feedback has no answers')
         for kq in ex['questions']:
             e = kq['expected']
-            if isinstance(e, (int, float)) and not isinstance(e, bool) and shown(e) not in plain:
-                fail(f'{where} {kq["id"]}', f'the general feedback does not show the key\'s {shown(e)}')
+            if isinstance(e, (int, float)) and not isinstance(e, bool) and shown(e, decimals, comma) not in plain:
+                fail(f'{where} {kq["id"]}', f'the general feedback does not show the key\'s {shown(e, decimals, comma)}')
         counts['feedbacks'] += 1
 
     codes_seen = set()
+    headings = {}  # n → the name the first sheet gives it
     title = key['spec']['title']
     for sheet in key['sheets']:
         for ex in sheet['exercises']:
@@ -286,9 +307,17 @@ def main(argv):
                 continue
             cat, q, ex_title = questions.pop((ex['n'], sheet['id']))
             counts['questions'] += 1
-            expected_cat = f'$course$/top/{title.replace("/", "//")}/{ex["n"]}. {ex_title.replace("/", "//")}'
+            expected_cat = f'$course$/top/{title.replace("/", "//")}/{ex_title.replace("/", "//")}'
             if cat != expected_cat:
                 fail(where, f'in category {cat!r}, not {expected_cat!r}')
+            # one numbering: the name is the sheet's heading, the one its ids' number stands for
+            number = ex.get('number', str(ex['n']))
+            if not names_number(ex_title, number):
+                fail(where, f'named {ex_title!r}, which does not say {number}, the number of its ids')
+            if headings.setdefault(ex['n'], ex_title) != ex_title:
+                fail(where, f'named {ex_title!r}, another sheet {headings[ex["n"]]!r}')
+            if any(not kq['id'].startswith(number + '.') for kq in ex['questions']):
+                fail(where, f'a question id does not start with its number {number}')
             text = q.findtext('questiontext/text') or ''
             # images: every <file> referenced, every reference a <file>
             files = {f.get('name'): f for f in q.findall('questiontext/file')}

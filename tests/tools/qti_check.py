@@ -4,7 +4,8 @@
   - every file the manifest names is in the zip, and every file of the zip is named by it;
   - every entry has the fixed timestamp (1980-01-01 00:00), so that reruns are byte-identical;
   - the test has one section per exercise, each with <selection select="1"/> and one item per sheet;
-  - every item is titled `<n>. <title> — <sheet id>`; every declared response is used by an
+  - every item is titled `<heading> — <sheet id>`, its section `<heading>`, the heading naming
+    the number its question ids start with (one numbering); every declared response is used by an
     interaction and by the response processing, and every interaction's response is declared;
   - a float response's correct value is the key's, matched by <equal toleranceMode="absolute">
     with <correct> first and a tolerance no looser than the key's rule; a point marked as a whole
@@ -27,6 +28,9 @@ import sys
 import zipfile
 import xml.etree.ElementTree as ET
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from moodle_cloze import names_number, shown  # noqa: E402  (one reading of both exports)
+
 QTI = '{http://www.imsglobal.org/xsd/imsqti_v2p1}'
 CP = '{http://www.imsglobal.org/xsd/imscp_v1p1}'
 
@@ -37,17 +41,6 @@ def rule_width(tol, at):
     if tol['rule'] == 'distance':
         return tol['abs'] / math.sqrt(2)
     return 0.0
-
-
-def shown(x, decimals, comma):
-    """A number as the key prints it: rounded to the set's decimals, no trailing zeros, the
-    language's decimal mark, a real minus sign."""
-    t = f'{round(x, decimals):.{decimals}f}'.rstrip('0').rstrip('.')
-    if t in ('-0', ''):
-        t = '0'
-    if comma:
-        t = t.replace('.', ',')
-    return t.replace('-', '\u2212')
 
 
 def check_solution(item, processing, ex, where, names, decimals, fail):
@@ -119,7 +112,9 @@ def main(argv):
     if len(sections) != len(slots):
         fail('test', f'{len(sections)} sections for {len(slots)} exercises')
     hrefs = {}
+    section_title = {}  # n → the section's title, the exercise's heading
     for sec, n in zip(sections, slots):
+        section_title[n] = sec.get('title')
         sel = sec.find(QTI + 'selection')
         if sel is None or sel.get('select') != '1':
             fail(sec.get('identifier'), 'no <selection select="1"/>')
@@ -143,8 +138,12 @@ def main(argv):
                 fail(where, 'not in its exercise\'s section')
             items += 1
             item = ET.fromstring(z.read(href))
-            if not re.match(rf'^{ex["n"]}\. .+ \u2014 {re.escape(sheet["id"])}$', item.get('title', '')):
-                fail(where, f'title {item.get("title")!r}')
+            tm = re.match(rf'^(.+) \u2014 {re.escape(sheet["id"])}$', item.get('title', ''))
+            number = ex.get('number', str(ex['n']))
+            if not tm or not names_number(tm.group(1), number):
+                fail(where, f'title {item.get("title")!r}: not "<heading> — <sheet id>" naming {number}')
+            elif section_title.get(ex['n']) != tm.group(1):
+                fail(where, f'title {item.get("title")!r}, its section {section_title.get(ex["n"])!r}')
             declared = {d.get('identifier'): d for d in item.findall(QTI + 'responseDeclaration')}
             body = item.find(QTI + 'itemBody')
             interactions = [e for e in body.iter() if e.get('responseIdentifier')]
