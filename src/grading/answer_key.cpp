@@ -204,7 +204,7 @@ void AnswerKey::add(SheetKey sheet) {
   // before it on this sheet (or first among its exercise's), so every exercise keeps the
   // order its sheets ask in, whatever branch each sheet drew.
   for (const auto& e : sheet.exercises) {
-    numbers_.emplace(e.number, e.n);
+    numbers_.try_emplace(e.number, e.n);
     std::string previous;
     for (const auto& q : e.questions) {
       auto it = std::find(question_ids_.begin(), question_ids_.end(), q.id);
@@ -220,13 +220,16 @@ void AnswerKey::add(SheetKey sheet) {
         }
         question_places_.insert(question_places_.begin() + (at - question_ids_.begin()), e.n);
         question_ids_.insert(at, q.id);
+        // its name by place, once a key has an exercise numbered otherwise than by its place
+        // (first seen here, a question's id is new: a sheet adds nothing after the first few)
+        if (e.number != std::to_string(e.n) || !place_names_.empty()) {
+          if (place_names_.empty())  // the questions seen before: their ids are their places
+            for (const auto& id : question_ids_)
+              if (id != q.id) place_names_.emplace(id, id);
+          place_names_.emplace(fmt::format("{}.{}", e.n, q.field), q.id);
+        }
       }
       previous = q.id;
-      if (e.number != std::to_string(e.n) || !place_names_.empty()) {
-        if (place_names_.empty())  // the exercises before the first numbered one: by place too
-          for (const auto& id : question_ids_) place_names_.emplace(id, id);
-        place_names_.emplace(fmt::format("{}.{}", e.n, q.field), q.id);
-      }
     }
   }
   if (find(sheet.id)) throw KeyError(fmt::format("{}: sheet {} appears twice", info.source, sheet.id));
