@@ -31,7 +31,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fuzz::check(e.hot.size() == e.questions.size(), "packed questions lost", s.id);
       for (std::size_t i = 0; i < e.questions.size(); ++i) {
         const QuestionKey& q = e.questions[i];
-        fuzz::check(fuzz::starts_with(q.id, std::to_string(e.n) + "."), "a question id without its exercise's number", q.id);
+        fuzz::check(!e.number.empty() && fuzz::starts_with(q.id, e.number + "."),
+                    "a question id without its exercise's number", q.id);
+        fuzz::check(q.id.size() == e.number.size() + 1 + q.field.size(), "a question's field is not its id's rest", q.id);
         fuzz::check(e.find(q.field) >= 0, "a question is not found by its field", q.id);
         fuzz::check(q.rule.rel >= 0 && q.rule.abs >= 0 && q.points >= 0, "a negative tolerance or points", q.id);
       }
