@@ -34,7 +34,7 @@ void solve_line(benchmark::State& state) {
     i = (i + 1) & (kBatch - 1);
   }
   if (failed) state.SkipWithError("a benchmark line failed: solve_lines.h draws valid lines only");
-  state.SetLabel(kind >= 0 ? std::string(epure::solve::kKinds[kind]) : "mixed");
+  state.SetLabel(kind >= 0 ? std::string(epure::bench::SolveLines::kNames[kind]) : "mixed");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 

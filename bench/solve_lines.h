@@ -21,6 +21,10 @@ class SolveLines {
   explicit SolveLines(std::uint64_t seed) : rng_(seed, 3) {}
 
   static constexpr int kKinds = 9;
+  // The kind line(k) writes, for a benchmark's label.
+  static constexpr std::string_view kNames[kKinds] = {"vectors",       "projection", "segments",
+                                                      "ray_circle",    "ray_square", "ray_ellipse",
+                                                      "ray_rectangle", "ray_sphere", "ray_cube"};
 
   // The next line of kind `kind` (0..8, in the contract's order), without its newline.
   std::string line(int kind) {
