@@ -103,10 +103,9 @@ render::Scene marks_plot(const ClassStatistics& stats, const MarkScale& scale, c
 render::Scene questions_plot(const ItemAnalysis& items, std::size_t exercise, const FeedbackText& text) {
   const Texts& T = text.texts();
   const ExerciseItem& ex = items.exercises[exercise];
-  const std::string prefix = fmt::format("{}.", ex.n);
   std::vector<const QuestionItem*> qs;
   for (const auto& q : items.questions)
-    if (q.id.starts_with(prefix)) qs.push_back(&q);
+    if (q.exercise == ex.index) qs.push_back(&q);
   const int rows = std::max<int>(1, static_cast<int>(qs.size()));
   double label = 0;
   for (const auto* q : qs) label = std::max(label, width_of(q->id));

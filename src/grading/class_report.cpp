@@ -168,13 +168,12 @@ void ClassReport::build(const ClassStatistics& stats, const Outcome& outcome) {
     figure(sec, questions_plot(items, e, text_));
     if (auto scene = branches_plot(items, e, words_, text_)) figure(sec, std::move(*scene));
     // the full tables, in the page only
-    const std::string prefix = fmt::format("{}.", ex.n);
     html += fmt::format("<table><tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>\n",
                         escaped(T.get("grading.report.col_question")), escaped(T.get("grading.report.col_answers")),
                         escaped(T.get("grading.report.col_facility")), escaped(T.get("grading.report.col_discrimination")),
                         escaped(T.get("grading.report.col_follow")), escaped(T.get("grading.report.col_to_check")));
     for (const auto& q : items.questions) {
-      if (!q.id.starts_with(prefix)) continue;
+      if (q.exercise != ex.index) continue;
       html += fmt::format(
           "<tr{}><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
           q.discrimination && *q.discrimination < 0.2 ? " class=\"flag\"" : "", escaped(q.id), q.answers, escaped(pct(q.facility)),

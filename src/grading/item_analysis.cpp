@@ -63,6 +63,7 @@ void ItemAccumulator::add(const Submission& s) {
       earned += m.points;
       worth += full;
       Question& Q = questions_[static_cast<std::size_t>(index[q])];
+      Q.exercise = e;
       if (m.verdict == Verdict::to_check) {
         ++Q.to_check;
         continue;
@@ -83,6 +84,7 @@ void ItemAccumulator::add(const Submission& s) {
     if (X->kind.empty()) {
       X->kind = ex.kind;
       X->n = ex.n;
+      X->number = ex.number;
     }
     X->y.add(earned);
     X->max_points = std::max(X->max_points, worth);
@@ -107,6 +109,7 @@ ItemAnalysis ItemAccumulator::result() const {
     if (Q.xr.n == 0 && Q.to_check == 0) continue;
     QuestionItem item;
     item.id = ids_[i];
+    item.exercise = Q.exercise;
     item.answers = static_cast<int>(Q.xr.n);
     item.facility = Q.xr.mean_x;
     item.discrimination = Q.xr.correlation();
@@ -124,6 +127,7 @@ ItemAnalysis ItemAccumulator::result() const {
     ExerciseItem item;
     item.index = e;
     item.n = X.n;
+    item.number = X.number;
     item.kind = X.kind;
     item.submissions = static_cast<int>(X.y.n);
     item.max_points = X.max_points;

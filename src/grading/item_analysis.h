@@ -54,6 +54,9 @@ inline constexpr double kBranchAlpha = 0.05;
 
 struct QuestionItem {
   std::string id;
+  // its exercise's place on the sheet (0-based, ExerciseItem::index): an id starts with the
+  // exercise's number ("3.3.t", "P.dot"), which says nothing of its place
+  std::size_t exercise = 0;
   int answers = 0;          // settled answers (to check ones left out)
   double facility = 0;      // 0..1
   std::optional<double> discrimination;
@@ -76,7 +79,8 @@ struct BranchItem {
 
 struct ExerciseItem {
   std::size_t index = 0;     // 0-based place on the sheet
-  int n = 0;                 // its number on the sheet
+  int n = 0;                 // its place on the sheet, 1-based (key.json's "n")
+  std::string number;        // what its question ids start with ("3.3", "P")
   std::string kind;
   int submissions = 0;
   double max_points = 0;     // the most it is worth on a sheet
@@ -116,11 +120,13 @@ class ItemAccumulator {
  private:
   struct Question {
     Moments xr;  // x and the rest score
+    std::size_t exercise = 0;  // the place of the exercise that asks it
     int follow_through = 0, to_check = 0;
     double follow_through_points = 0;
   };
   struct Exercise {
     int n = 0;
+    std::string number;
     std::string kind;
     Moments y;  // its points
     double max_points = 0;

@@ -53,6 +53,8 @@ void write_items(JsonWriter& w, const ItemAnalysis& a, const ClassWords& words) 
   for (const auto& q : a.questions) {
     w.begin_object();
     w.field("id", std::string_view(q.id));
+    // its exercise's place (exercises[].n): an id's number ("3.3") is not a place
+    w.key("exercise").integer(static_cast<long long>(q.exercise) + 1);
     w.key("answers").integer(q.answers);
     w.field("facility", q.facility);
     optional_number(w, "discrimination", q.discrimination);
@@ -66,6 +68,7 @@ void write_items(JsonWriter& w, const ItemAnalysis& a, const ClassWords& words) 
   for (const auto& e : a.exercises) {
     w.begin_object();
     w.key("n").integer(e.n);
+    w.field("number", std::string_view(e.number));
     w.field("kind", std::string_view(e.kind));
     w.field("label", std::string_view(words.exercise(e.n)));
     w.key("submissions").integer(e.submissions);
@@ -199,6 +202,7 @@ void JsonReport::submission(const Submission& s) {
       }
       w.begin_object();
       w.key("n").integer(ex.n);
+      w.field("number", std::string_view(ex.number));
       w.field("kind", std::string_view(ex.kind));
       w.field("branch", std::string_view(ex.branch));
       w.field("points", earned);

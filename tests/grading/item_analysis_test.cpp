@@ -166,6 +166,43 @@ TEST_CASE("answers to check: left out of their question, the statistics provisio
   CHECK(stats.to_check_rows() == 1);
 }
 
+TEST_CASE("questions belong to their exercise by place, whatever the exercises' numbers") {
+  // the course numbers its exercises "3" and "3.3": 3.3.t starts with "3." and is still not
+  // exercise 3's (the class report's tables and plots group questions by this place)
+  SheetKey A = sheet("a");
+  const std::vector<std::string> numbers = {"3", "3.3"};
+  std::vector<std::string> ids;
+  for (std::size_t e = 0; e < 2; ++e) {
+    A.exercises[e].number = numbers[e];
+    for (auto& q : A.exercises[e].questions) {
+      q.id = numbers[e] + q.id.substr(q.id.find('.'));
+      ids.push_back(q.id);
+    }
+  }
+  // the report's order as the key gives it: 3.3's questions first, as a key may sort them
+  ClassStatistics stats({ids[2], ids[3], ids[0], ids[1]});
+  const std::vector<std::vector<int>> index = {{2, 3}, {0, 1}};
+  const std::vector<ExerciseMarks> marks(2, ExerciseMarks(2));
+  Submission s;
+  s.sheet = &A;
+  s.marks = marks;
+  s.report_index = index;
+  s.max = 4;
+  stats.add(s);
+  const ItemAnalysis a = stats.items();
+  REQUIRE(a.questions.size() == 4);
+  CHECK(a.questions[0].id == "3.3.a");
+  CHECK(a.questions[0].exercise == 1);
+  CHECK(a.questions[1].exercise == 1);
+  CHECK(a.questions[2].id == "3.a");
+  CHECK(a.questions[2].exercise == 0);
+  CHECK(a.questions[3].exercise == 0);
+  REQUIRE(a.exercises.size() == 2);
+  CHECK(a.exercises[0].number == "3");
+  CHECK(a.exercises[1].number == "3.3");
+  CHECK(a.exercises[1].n == 2);
+}
+
 TEST_CASE("running moments: merged halves equal the whole") {
   Moments all, left, right;
   const double xs[] = {0.1, 2.5, -3, 4, 4, 0.25, 7.75};
