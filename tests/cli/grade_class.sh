@@ -9,6 +9,8 @@
 #      (tests/tools/item_analysis.py), and in the French summary with no internal code;
 #   4. the class report: HTML that parses, a PDF that qpdf accepts, with the plots, in French;
 #   5. marks out of 20 by default for a French set, the gradebook for Moodle from a roster.
+# Question ids are taken from key.json (an exercise's "number", else its place), never written
+# here: the course names its exercises P, 1, 2, …, 3.3, and a renumbering must not break this.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failed=0
@@ -18,10 +20,25 @@ tools="$EPURE_SOURCE_DIR/tests/tools"
 "$EPURE" generate --lang fr --sheets 10 --seed 5 --format svg --out "$tmp/set" -q >/dev/null 2>"$tmp/gen.err" \
   || fail "generate: $(cat "$tmp/gen.err")"
 python3 "$tools/make_class.py" "$tmp/set/key.json" "$tmp/class.csv" --seed 3 --lang fr || fail "make_class"
+# the ids this test names, from the key: an exercise by its place on sheet 000S, then the field
+python3 - "$tmp/set/key.json" >"$tmp/ids.env" <<'PY' || fail "the question ids from key.json"
+import json, sys
+s = next(s for s in json.load(open(sys.argv[1], encoding="utf-8"))["sheets"] if s["id"] == "1000-0005-000S")
+ids = {q["id"] for e in s["exercises"] for q in e["questions"]}
+number = {e["n"]: e.get("number", str(e["n"])) for e in s["exercises"]}
+names = {"NORM_U": (1, "norm_u"), "PX": (2, "P.x"), "PY": (2, "P.y"), "REASON": (3, "reason"), "T4": (4, "t"),
+         "T_PROJ": (4, "t_proj"), "D2": (4, "d2"), "REASON4": (4, "reason"), "T5": (5, "t")}
+for name, (n, field) in names.items():
+    id = f"{number[n]}.{field}"
+    assert name == "REASON4" or id in ids, (name, id, sorted(ids))   # a hit asks no reason
+    print(f"ID_{name}={id}")
+PY
+. "$tmp/ids.env"
+export ID_NORM_U ID_PX ID_PY ID_REASON ID_T4 ID_T_PROJ ID_D2 ID_REASON4 ID_T5
 
 # 1 and 2: sheet 1000-0005-000S answered right, typed the ways students type
 python3 - "$tmp/set/key.json" "$tmp/harmless.csv" "$tmp/corrections.json" <<'PY' || fail "building the harmless answers"
-import csv, json, sys
+import csv, json, os, sys
 key = json.load(open(sys.argv[1], encoding="utf-8"))
 s = next(s for s in key["sheets"] if s["id"] == "1000-0005-000S")
 kinds = {e["n"]: (e["kind"], e["branch"]) for e in s["exercises"]}
@@ -33,37 +50,39 @@ def right(q):
     if isinstance(e, str): return {"outside": "à l’extérieur", "between": "entre A et B"}.get(e, e)
     return f"{round(e, 2):.2f}".replace(".", ",")
 cells = {q["id"]: right(q) for e in s["exercises"] for q in e["questions"]}
-cells["1.norm_u"] += " cm"                          # a unit after a number
-cells["4.t"] += " u"
-cells["2.P.x"], cells["2.P.y"] = f"({cells['2.P.x']} ; {cells['2.P.y']})", ""   # a point in one cell
-cells["3.reason"] = "hors segment"                  # a wording of the course
-cells["4.t_proj"], cells["4.d2"] = cells["4.d2"], cells["4.t_proj"]            # swapped neighbours
-right_t = cells["5.t"]
-cells["5.t"] = right_t.replace(",", ",?")           # a blot: to check
+I = {k[3:]: v for k, v in os.environ.items() if k.startswith("ID_")}
+cells[I["NORM_U"]] += " cm"                         # a unit after a number
+cells[I["T4"]] += " u"
+cells[I["PX"]], cells[I["PY"]] = f"({cells[I['PX']]} ; {cells[I['PY']]})", ""   # a point in one cell
+cells[I["REASON"]] = "hors segment"                 # a wording of the course
+cells[I["T_PROJ"]], cells[I["D2"]] = cells[I["D2"]], cells[I["T_PROJ"]]        # swapped neighbours
+right_t = cells[I["T5"]]
+cells[I["T5"]] = right_t.replace(",", ",?")         # a blot: to check
 ids = list(cells)
 with open(sys.argv[2], "w", encoding="utf-8", newline="") as f:
     w = csv.writer(f, delimiter=";")
     w.writerow(["Feuille", "Étudiant", "Numéro d’étudiant"] + ids)
     w.writerow([s["id"], "Lefèvre, Zoé", "21800001"] + [cells[i] for i in ids])
 json.dump({"format": "epure-corrections", "version": 1,
-           "corrections": [{"sheet": s["id"], "question": "5.t", "value": right_t, "note": "lu sur la copie"}]},
+           "corrections": [{"sheet": s["id"], "question": I["T5"], "value": right_t, "note": "lu sur la copie"}]},
           open(sys.argv[3], "w", encoding="utf-8"), ensure_ascii=False)
 PY
 
 "$EPURE" grade --key "$tmp/set/key.json" --answers "$tmp/harmless.csv" --json "$tmp/h.json" >"$tmp/h.out" 2>"$tmp/h.err"
 st=$?
 [ "$st" -eq 1 ] || fail "answers to check: exit $st, expected 1"
-grep -q "5.t" "$tmp/h.err" || fail "the answer to check is not listed on stderr: $(cat "$tmp/h.err")"
+grep -qF "$ID_T5" "$tmp/h.err" || fail "the answer to check is not listed on stderr: $(cat "$tmp/h.err")"
 python3 - "$tmp/h.json" <<'PY' || fail "harmless input and the answer to check"
-import json, sys
+import json, os, sys
+I = {k[3:]: v for k, v in os.environ.items() if k.startswith("ID_")}
 s = json.load(open(sys.argv[1], encoding="utf-8"))["submissions"][0]
 q = {x["id"]: x for x in s["questions"]}
-for id in ("1.norm_u", "4.t", "2.P.x", "2.P.y", "3.reason", "4.t_proj", "4.d2"):
+for id in (I["NORM_U"], I["T4"], I["PX"], I["PY"], I["REASON"], I["T_PROJ"], I["D2"]):
     assert q[id]["verdict"] == "right", (id, q[id])
-assert q["2.P.x"]["read"] == "point_in_one_cell", q["2.P.x"]
-assert q["4.t_proj"]["read"] == "swapped_cells" and q["4.t_proj"]["read_from"] == "4.d2", q["4.t_proj"]
-assert q["5.t"]["verdict"] == "to_check" and q["5.t"]["points"] == 0, q["5.t"]
-assert s["held"] == q["5.t"]["max_points"] and s["to_check"] == 1, s
+assert q[I["PX"]]["read"] == "point_in_one_cell", q[I["PX"]]
+assert q[I["T_PROJ"]]["read"] == "swapped_cells" and q[I["T_PROJ"]]["read_from"] == I["D2"], q[I["T_PROJ"]]
+assert q[I["T5"]]["verdict"] == "to_check" and q[I["T5"]]["points"] == 0, q[I["T5"]]
+assert s["held"] == q[I["T5"]]["max_points"] and s["to_check"] == 1, s
 assert s["score"] + s["held"] == s["max"], (s["score"], s["held"], s["max"])   # nothing else lost
 assert [f["code"] for f in s["flags"]] == ["to_check", "swapped_cells"], s["flags"]
 assert s["student_number"] == "21800001"
@@ -74,26 +93,28 @@ PY
 st=$?
 [ "$st" -eq 0 ] || fail "settled by the corrections file: exit $st, expected 0 ($(cat "$tmp/h2.err"))"
 python3 - "$tmp/h2.json" <<'PY' || fail "settled by the corrections file"
-import json, sys
+import json, os, sys
+t5 = os.environ["ID_T5"]
 r = json.load(open(sys.argv[1], encoding="utf-8"))
 s = r["submissions"][0]
 assert s["score"] == s["max"] and s["held"] == 0 and s["to_check"] == 0, (s["score"], s["max"], s["held"])
 assert s["mark"] == 20
 q = {x["id"]: x for x in s["questions"]}
-assert q["5.t"]["verdict"] == "right" and q["5.t"]["corrected"] is True, q["5.t"]
+assert q[t5]["verdict"] == "right" and q[t5]["corrected"] is True, q[t5]
 PY
 
 # 3, 4, 5: the class, with a row of an unknown sheet and an answer not asked
 cp "$tmp/class.csv" "$tmp/class2.csv"
 python3 - "$tmp/class2.csv" "$tmp/roster.csv" <<'PY'
-import csv, sys
+import csv, os, sys
 rows = list(csv.reader(open(sys.argv[1], encoding="utf-8"), delimiter=";"))
 h = rows[0]
 extra = [""] * len(h)
 extra[0], extra[1] = "1000-0005-00ZZ", "Inconnu"
 rows.append(extra)
-# 4.reason is not asked of a hit (sheet 000S)
-rows[1][h.index("4.reason")] = "manqué"
+# the circle's reason is not asked of a hit (sheet 000S)
+assert rows[1][0] == "1000-0005-000S", rows[1][0]
+rows[1][h.index(os.environ["ID_REASON4"])] = "manqué"
 csv.writer(open(sys.argv[1], "w", encoding="utf-8", newline=""), delimiter=";").writerows(rows)
 with open(sys.argv[2], "w", encoding="utf-8", newline="") as f:
     f.write("Nom;Prénom;N° étudiant;Courriel\n")
