@@ -4,7 +4,7 @@
 // `epure grade --corrections FILE` (and `epure scan --corrections FILE`) apply before marking:
 //
 //   {"format": "epure-corrections", "version": 1,
-//    "corrections": [{"sheet": "1000-0005-001Q", "question": "4.t_proj", "value": "−17",
+//    "corrections": [{"sheet": "1000-0005-001Q", "question": "3.t_proj", "value": "−17",
 //                     "note": "read from the scan"},
 //                    {"sheet": "1000-0005-002N", "question": "student_number", "value": "21804512"}]}
 //

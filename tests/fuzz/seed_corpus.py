@@ -101,7 +101,8 @@ for i, t in enumerate(["4,75 cm", "1,04 u", "1,8 u\u00b2", "3 unit\u00e9s", "t =
 
 # answers CSV: the French export of the tests, and realistic exports of each spreadsheet
 put("answers_csv", "export_fr.csv", b"\x00" + read(root, "tests/grading/data/export_fr.csv"))
-header = ["sheet", "student", "1.dot", "1.cross", "2.t", "2.P.x", "2.P.y", "5.faces"]
+# the course's ids (templates/course.toml numbers its exercises P, 1, 2, 3, 4, 3.3, 4.3)
+header = ["sheet", "student", "P.dot", "P.cross", "1.t", "1.P.x", "1.P.y", "4.faces"]
 rows = [[sorted(ids)[0] if ids else "1000-0001-000X", "Lef\u00e8vre, Zo\u00e9", "0", "30", "-0,48", "9,41", "3,97", "-y;+x"],
         [sorted(ids)[1] if len(ids) > 1 else "1000-0002-000Y", "N'Diaye, A\u00efssatou", "13", "-16", "2,77", "", "", "none"]]
 def csv(rows, d, q=lambda c: c, nl="\r\n"):
@@ -119,7 +120,7 @@ gs = [["Timestamp"] + header] + [["2026/11/30 10:1%d:00 AM" % i] + [c.replace(",
 put("answers_csv", "google-sheets.csv", b"\x00" + csv(gs, ",", rfc(","), "\r\n").rstrip(b"\r\n".decode()).encode())
 # a tab-separated copy and a cell with a line break inside quotes
 put("answers_csv", "tabs.tsv", b"\x00" + csv([header] + rows, "\t").encode())
-put("answers_csv", "multiline.csv", b"\x02" + 'sheet;student;1.dot\n1000-0001-000X;"two\nlines";"1;5"\n\n"x""y";"";3\n'.encode())
+put("answers_csv", "multiline.csv", b"\x02" + 'sheet;student;P.dot\n1000-0001-000X;"two\nlines";"1;5"\n\n"x""y";"";3\n'.encode())
 # Moodle's responses report: one row per attempt, "Response n" columns, "-" for no answer
 moodle = [["Surname", "First name", "Email address", "State", "Started on", "Completed", "Time taken",
            "Grade/10.00", "Response 1", "Response 2", "Response 3"],
@@ -129,16 +130,16 @@ moodle = [["Surname", "First name", "Email address", "State", "Started on", "Com
 put("answers_csv", "moodle-responses.csv", b"\x00\xef\xbb\xbf" + csv(moodle, ",", rfc(",")).encode())
 
 # answers JSON: an array, JSON Lines, answers under "answers", points as [x, y], faces as lists
-objs = [{"sheet": r[0], "student": r[1], "1.dot": 0, "2.t": "-0,48", "2.P": [9.41, 3.97], "5.faces": ["-y", "+x"]} for r in rows]
+objs = [{"sheet": r[0], "student": r[1], "P.dot": 0, "1.t": "-0,48", "1.P": [9.41, 3.97], "4.faces": ["-y", "+x"]} for r in rows]
 put("answers_json", "array.json", json.dumps(objs, ensure_ascii=False, indent=2))
 put("answers_json", "lines.jsonl", "\n".join(json.dumps(o, ensure_ascii=False) for o in objs) + "\n\n")
-put("answers_json", "nested.jsonl", "\ufeff" + json.dumps({"sheet": "1000-0001-000X", "answers": {"1.dot": 3, "1.cross": None, "2.inside": True}}) + "\r\nnot json\r\n[1,2]\n")
-put("answers_json", "moodle-like.json", json.dumps([{"sheet": "1000-0001-000X", "student": "Zo\u00e9", "answers": {"1.t": "1/6", "3.faces": []}}, 5, "x", [[[]]]]))
+put("answers_json", "nested.jsonl", "\ufeff" + json.dumps({"sheet": "1000-0001-000X", "answers": {"P.dot": 3, "P.cross": None, "3.inside": True}}) + "\r\nnot json\r\n[1,2]\n")
+put("answers_json", "moodle-like.json", json.dumps([{"sheet": "1000-0001-000X", "student": "Zo\u00e9", "answers": {"1.t": "1/6", "4.faces": [], "3.3.t": "0,5"}}, 5, "x", [[[]]]]))
 # the teacher's corrections: as epure scan's review page writes them, by hand, and broken ones
 put("corrections", "review.json", json.dumps({"format": "epure-corrections", "version": 1, "corrections": [
-    {"sheet": "1000-0005-002N", "question": "2.t", "value": "\u22120,48", "note": "a blot over the 8"},
+    {"sheet": "1000-0005-002N", "question": "1.t", "value": "\u22120,48", "note": "a blot over the 8"},
     {"sheet": "1000-0005-002N", "question": "student_number", "value": "21804512"},
-    {"sheet": "10000005002n", "question": "5.faces", "value": "+x \u2212y", "crop": "pages/3.png"}]}, ensure_ascii=False, indent=1))
+    {"sheet": "10000005002n", "question": "4.faces", "value": "+x \u2212y", "crop": "pages/3.png"}]}, ensure_ascii=False, indent=1))
 put("corrections", "bom-empty.json", "\ufeff" + json.dumps({"format": "epure-corrections", "version": 1, "corrections": []}))
 put("corrections", "bad-entries.json", json.dumps({"format": "epure-corrections", "version": 1, "corrections": [
     {"sheet": "A", "value": 3}, "x", {"sheet": "", "question": "1.t", "value": ""}, {"sheet": "A", "question": "1.t", "value": "1", "note": []}]}))
