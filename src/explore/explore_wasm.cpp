@@ -22,8 +22,9 @@ ex::ViewParts last_view;
 emscripten::val bytes_of(const std::string& s) {
   return emscripten::val(emscripten::typed_memory_view(s.size(), reinterpret_cast<const unsigned char*>(s.data())));
 }
-emscripten::val view_parts(const std::string& instance, const std::string& language, int n, const std::string& frozen) {
-  last_view = ex::view_parts(instance, language, n, frozen);
+emscripten::val view_parts(const std::string& instance, const std::string& language, int n, const std::string& frozen,
+                           const std::string& label) {
+  last_view = ex::view_parts(instance, language, n, frozen, label);
   emscripten::val out = emscripten::val::object();
   out.set("head", bytes_of(last_view.head));
   out.set("svg", bytes_of(last_view.svg));

@@ -156,7 +156,8 @@ std::string starting_instance(std::string_view kind_name) {
   return kind->make(rng, ctx).instance;
 }
 
-ViewParts view_parts(std::string_view instance_text, std::string_view language, int n, std::string_view frozen) {
+ViewParts view_parts(std::string_view instance_text, std::string_view language, int n, std::string_view frozen,
+                     std::string_view label) {
   try {
     json fresh;
     const json* dragged = as_dragged(instance_text);
@@ -167,6 +168,7 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
     ExerciseContext ctx{n, spec, texts, NumberStyle::for_language(language), 2, ""};
     ctx.sheet = false;        // the view shows the key only,
     ctx.tolerances = false;   // and marks nothing
+    ctx.label = std::string(label);
     ExerciseInstance key = kind.key_of(instance, ctx);
     KeyView kv = key_view(key.key);
     if (kv.figure == nullptr || kv.figure->panels.empty()) throw std::logic_error("explore: the key has no figure");
@@ -202,8 +204,9 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
   }
 }
 
-std::string view(std::string_view instance, std::string_view language, int n, std::string_view frozen) {
-  ViewParts parts = view_parts(instance, language, n, frozen);
+std::string view(std::string_view instance, std::string_view language, int n, std::string_view frozen,
+                 std::string_view label) {
+  ViewParts parts = view_parts(instance, language, n, frozen, label);
   if (parts.svg.empty()) return std::move(parts.head);
   // the two long texts go through a plain escaper (nlohmann's validating one was a quarter of
   // the view's time)

@@ -46,8 +46,10 @@ std::string starting_instance(std::string_view kind);
 //    when the data cannot be solved: then no svg nor steps)}.
 // With `frozen` (a frame this function returned), the first panel keeps that view, so that
 // the figure stays still under a dragging pointer; the kind's own framing comes back on release.
+// `label`: what the sheet calls exercise n ("Exercise 3", "Preamble"), so that the heading is
+// the paper's; empty: "Exercise n".
 std::string view(std::string_view instance, std::string_view language, int n = 0,
-                 std::string_view frozen = {});
+                 std::string_view frozen = {}, std::string_view label = {});
 
 // The same view in three parts, for the page: `head` is view's JSON object without "svg" and
 // "steps" (with "error" alone when the data cannot be solved: then svg and steps are empty),
@@ -57,7 +59,7 @@ struct ViewParts {
   std::string head, svg, steps;
 };
 ViewParts view_parts(std::string_view instance, std::string_view language, int n = 0,
-                     std::string_view frozen = {});
+                     std::string_view frozen = {}, std::string_view label = {});
 
 // The instance with handle `handle` moved to the figure point (x, y) (SVG user units of the
 // view's figure, `frame` as view returned it). With `snap`, points land on the integer grid,

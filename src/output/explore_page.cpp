@@ -45,7 +45,8 @@ std::string explore_unavailable_message() {
          "see README, \"epure explore\")";
 }
 
-ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write) : write_(std::move(write)) {
+ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write, const ExerciseLabels& labels)
+    : write_(std::move(write)) {
   const auto page = explore_page();
   if (!page) throw std::runtime_error(explore_unavailable_message());
   page_ = *page;
@@ -53,9 +54,12 @@ ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write) : w
   if (config_at_ == std::string_view::npos) throw std::logic_error("explore page: no configuration element");
   write_(head_in(page_.substr(0, config_at_), language));
   write_("<script id=\"epure-config\" type=\"application/json\">");
-  // {"lang":…,"set":{"<id>":[…],…}}, as nlohmann::json's dump() writes the object: no spaces,
-  // keys in order ("lang" < "set"; the ids added in increasing order)
-  put("{\"lang\":" + nlohmann::json(language).dump() + ",\"set\":{");
+  // {"labels":{…},"lang":…,"set":{"<id>":[…],…}}, as nlohmann::json's dump() writes the object:
+  // no spaces, keys in order ("labels" < "lang" < "set"; the ids added in increasing order);
+  // without labels, no "labels"
+  std::string head = "{";
+  if (!labels.empty()) head += "\"labels\":" + nlohmann::json(labels).dump() + ",";
+  put(head + "\"lang\":" + nlohmann::json(language).dump() + ",\"set\":{");
 }
 
 void ExplorePageWriter::add(const ExploreSheet& sheet) {
@@ -84,9 +88,10 @@ void ExplorePageWriter::put(std::string text) {
   write_(text);
 }
 
-std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets) {
+std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets,
+                         const ExerciseLabels& labels) {
   std::string html;
-  ExplorePageWriter page(language, [&](std::string_view bytes) { html.append(bytes); });
+  ExplorePageWriter page(language, [&](std::string_view bytes) { html.append(bytes); }, labels);
   for (const auto& s : sheets) page.add(s);
   page.finish();
   return html;

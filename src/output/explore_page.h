@@ -4,6 +4,7 @@
 // set wrote it, every sheet's instances, so that explore.html#<sheet id>.<n> opens that
 // student's exercise n.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,9 +24,15 @@ bool explore_available();
 // Why it does not, for the user.
 std::string explore_unavailable_message();
 
+// What a set's sheets call their exercises, by place, in each language the page can switch to
+// ({"en": ["Preamble", "Exercise 1", …], "fr": […]}): a sheet's exercise opened from its link
+// is titled as on the paper. Empty for the page of `epure explore` alone.
+using ExerciseLabels = std::map<std::string, std::vector<std::string>, std::less<>>;
+
 // The page, opening in `language`, with `sheets` (in increasing id order) reachable by their ids.
 // Throws std::runtime_error when the page is not available (explore_unavailable_message()).
-std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets = {});
+std::string explore_html(std::string_view language, const std::vector<ExploreSheet>& sheets = {},
+                         const ExerciseLabels& labels = {});
 
 // The same page written as a set's sheets come, into `write`: the page up to its configuration
 // first, each sheet's instances as they are added, the rest at finish(). Nothing of the sheets
@@ -36,7 +43,7 @@ class ExplorePageWriter {
  public:
   using Write = std::function<void(std::string_view)>;
   // Throws std::runtime_error when the page is not available.
-  ExplorePageWriter(std::string_view language, Write write);
+  ExplorePageWriter(std::string_view language, Write write, const ExerciseLabels& labels = {});
   void add(const ExploreSheet& sheet);
   void finish();
 

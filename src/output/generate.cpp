@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "exercises/key_json.h"
+#include "exercises/texts.h"
+#include "exercises/worksheet.h"
 #include "output/atomic_file.h"
 #include "output/explore_page.h"
 #include "output/index_html.h"
@@ -182,7 +184,11 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   std::optional<ExplorePageWriter> explore_page;
   if (explore) {
     explore_file.emplace(options.out / "explore.html");
-    explore_page.emplace(set.language(), [&](std::string_view bytes) { explore_file->write(bytes); });
+    ExerciseLabels labels;
+    for (const char* language : {"en", "fr"})
+      for (std::size_t slot = 0; slot < set.spec().exercises.size(); ++slot)
+        labels[language].push_back(exercise_label(set.spec(), slot, Texts::builtin(language)));
+    explore_page.emplace(set.language(), [&](std::string_view bytes) { explore_file->write(bytes); }, labels);
   }
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;

@@ -288,12 +288,17 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
       const cur = await page.evaluate(() => window.epure.current());
       const want = typeof ex.instance === "string" ? JSON.parse(ex.instance) : ex.instance;
       const same = JSON.stringify(cur) === JSON.stringify(want);
-      if (same && !refused.length && !errors.length) good++;
-      else console.log(`     ${hash}: ${JSON.stringify(cur)} vs ${JSON.stringify(want)} ${JSON.stringify({ refused, errors })}`);
+      // titled as on the sheet: the course's own headings, else "Exercise <its number>"
+      const h2 = await page.$eval("#steps h2", e => e.textContent);
+      const course = { P: "Preamble", "3.3": "Exercise 3, question 3", "4.3": "Exercise 4, question 3" };
+      const title = course[ex.number] || `Exercise ${ex.number}`;
+      const titled = typeof ex.number === "string" && h2.startsWith(title + " — ");
+      if (same && titled && !refused.length && !errors.length) good++;
+      else console.log(`     ${hash}: ${JSON.stringify(cur)} vs ${JSON.stringify(want)}, "${h2}" (number ${ex.number}) ${JSON.stringify({ refused, errors })}`);
       await page.close();
     }
   }
-  check(total > 0 && good === total, `links: explore.html#<sheet id>.<n> opens that exercise (${good}/${total}), linked from index.html`);
+  check(total > 0 && good === total, `links: explore.html#<sheet id>.<n> opens that exercise, titled as on the sheet (${good}/${total}), linked from index.html`);
 }
 
 // ---- 4b. the patches by lines: the DOM after every move equals the markup parsed afresh ----------

@@ -40,6 +40,10 @@ grep -q '^<title>epure — corrigés à manipuler</title>$' "$page" || fail "exp
 id=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheets"][1]["id"])' "$tmp/set/key.json")
 grep -q "href=\"explore.html#$id.1\"" "$tmp/set/index.html" || fail "index.html has no link to explore.html#$id.1"
 grep -q "\"$id\":\[{\"kind\"" "$tmp/set/explore.html" || fail "explore.html does not hold sheet $id"
+# and what the sheets call their exercises, in both languages, so that a linked one is titled
+# as on its paper
+grep -q '"labels":{"en":\["Preamble","Exercise 1",' "$tmp/set/explore.html" || fail "explore.html has no exercise labels"
+grep -q '"fr":\["Préambule","Exercice 1",' "$tmp/set/explore.html" || fail "explore.html has no French exercise labels"
 # the keys' PDFs link each exercise's heading to explore.html#<sheet id>.<n> (tests/cli/pdf.sh
 # checks every link, --duplex and --split, and qpdf --check); here: a PDF reader (poppler) sees it
 "$EPURE" generate --sheets 2 --seed 5 --quiet --out "$tmp/pdf" || fail "generate (svg,pdf) failed"

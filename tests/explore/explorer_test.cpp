@@ -274,6 +274,9 @@ TEST_CASE("explore: tabs named as the course names the exercises; a view outside
   CHECK(alone.rfind("<h2>Intersection d’un rayon et d’un cercle</h2>", 0) == 0);
   const std::string third = json::parse(ex::view(start, "fr", 3))["steps"];
   CHECK(third.rfind("<h2>Exercice 3 — Intersection d’un rayon et d’un cercle</h2>", 0) == 0);
+  // the fourth exercise of the course's sheet is its "Exercice 3": the sheet's label wins
+  const std::string labelled = json::parse(ex::view(start, "fr", 4, {}, "Exercice 3"))["steps"];
+  CHECK(labelled.rfind("<h2>Exercice 3 — Intersection d’un rayon et d’un cercle</h2>", 0) == 0);
 }
 
 TEST_CASE("explore: the view in parts is the view; without tolerances the key reads the same") {
