@@ -53,6 +53,27 @@ inline grading::ExerciseKey exercise(const std::string& instance, std::vector<st
   return grading::read_sheet_json(sheet, "test").exercises.at(0);
 }
 
+// A kind in space whose kind is not the contract's ("vectors_3d" is the contract's vectors with
+// three components): its points asked as three numbers, as its keys ask them.
+inline grading::ExerciseKey exercise_in_space(const std::string& kind, const std::string& instance,
+                                              const std::vector<std::string>& fields) {
+  nlohmann::json sheet = nlohmann::json::parse(instance);
+  const nlohmann::json sol = nlohmann::json::parse(kinds::solve_instance(instance));
+  nlohmann::json questions = nlohmann::json::array();
+  for (const auto& f : fields) {
+    const nlohmann::json expected = solution_value(sol, f);
+    nlohmann::json q = {{"id", "1." + f}, {"expected", expected}, {"points", 1}};
+    if (expected.is_number()) q["tolerance"] = {{"rule", "isclose"}, {"rel", 0.001}, {"abs", 0.02}, {"why", "test"}};
+    else q["tolerance"] = {{"rule", "exact"}, {"why", "test"}};
+    questions.push_back(q);
+  }
+  const nlohmann::json key = {
+      {"id", "1000-0001-000X"},
+      {"index", 0},
+      {"exercises", {{{"n", 1}, {"kind", kind}, {"branch", ""}, {"instance", sheet}, {"solution", sol}, {"questions", questions}}}}};
+  return grading::read_sheet_json(key, "test").exercises.at(0);
+}
+
 struct Marked {
   const grading::ExerciseKey* key;
   grading::ExerciseMarks marks;

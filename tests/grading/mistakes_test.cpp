@@ -15,6 +15,7 @@
 
 using epure::grading::FeedbackText;
 using epure::test::exercise;
+using epure::test::exercise_in_space;
 using epure::test::mark;
 
 namespace {
@@ -31,29 +32,6 @@ struct Case {
 std::string fixed_part(const std::string& language, const std::string& code) {
   const auto& text = epure::Texts::builtin(language).get("grading.mistake." + code);
   return epure::grading::plain_text(text.substr(0, text.find("${")));
-}
-
-// A kind in space, whose points are asked as three numbers (no point groups) and whose kind is
-// not the contract's ("vectors_3d" is the contract's vectors with three components).
-epure::grading::ExerciseKey exercise_in_space(const std::string& kind, const std::string& instance,
-                                              const std::vector<std::string>& fields) {
-  const nlohmann::json inst = nlohmann::json::parse(instance);
-  const nlohmann::json sol = nlohmann::json::parse(epure::kinds::solve_instance(instance));
-  nlohmann::json questions = nlohmann::json::array();
-  for (const auto& f : fields) {
-    const auto dot = f.find('.');
-    const nlohmann::json expected =
-        dot == std::string::npos ? sol.at(f) : sol.at(f.substr(0, dot)).at(f[dot + 1] - 'x');
-    nlohmann::json q = {{"id", "1." + f}, {"expected", expected}, {"points", 1}};
-    if (expected.is_number()) q["tolerance"] = {{"rule", "isclose"}, {"rel", 0.001}, {"abs", 0.02}, {"why", "test"}};
-    else q["tolerance"] = {{"rule", "exact"}, {"why", "test"}};
-    questions.push_back(q);
-  }
-  const nlohmann::json sheet = {
-      {"id", "1000-0001-000X"},
-      {"index", 0},
-      {"exercises", {{{"n", 1}, {"kind", kind}, {"branch", ""}, {"instance", inst}, {"solution", sol}, {"questions", questions}}}}};
-  return epure::grading::read_sheet_json(sheet, "test").exercises.at(0);
 }
 
 std::vector<Case> cases() {
