@@ -383,6 +383,9 @@ template <class Num>
 struct Recorded {
   Recorded(std::string_view id_, AnswerType type_, Num x_ = {}, Num y_ = {}) : id(id_), type(type_), x(x_), y(y_) {}
   std::string_view id;  // the field, or the step's name
+  // A coordinate of a point in space (asked as three numbers, "I.x", "I.y", "I.z"): its point,
+  // "I", of which it is one part (a slip that moves the point is one mistake, not three).
+  std::string_view group;
   AnswerType type = AnswerType::number;
   Num x{}, y{};          // number: x; point: x and y
   bool boolean = false;
@@ -529,7 +532,10 @@ class Run {
   }
   // a point in space: three numeric answers
   V3<Num> point(const Names3& fields, V3<Num> p) {
-    return {number(fields[0], p.x), number(fields[1], p.y), number(fields[2], p.z)};
+    const V3<Num> given{number(fields[0], p.x), number(fields[1], p.y), number(fields[2], p.z)};
+    const std::string_view group = fields[0].substr(0, fields[0].rfind('.'));
+    for (std::size_t k = answers_.size() - 3; k < answers_.size(); ++k) answers_[k].group = group;
+    return given;
   }
   Cond boolean(std::string_view field, Cond c) {
     Recorded<Num> r(field, AnswerType::boolean);

@@ -245,6 +245,29 @@ void AnswerKey::add(SheetKey sheet) {
   }
 }
 
+namespace {
+
+// A point in space is asked as three numbers, "I.x", "I.y", "I.z", which keys do not group: they
+// are grouped here, as the plane's points are by their key ("point"), so that a point in space
+// gets the plane's rules (marked as a whole by distance when its rule says so, two coordinates
+// typed in each other's cells, a point typed in one cell).
+void group_points_in_space(ExerciseKey& ex) {
+  for (auto& q : ex.questions) {
+    if (!q.point.empty() || q.type != AnswerType::number || !q.field.ends_with(".x")) continue;
+    const std::string base = q.field.substr(0, q.field.size() - 2);
+    const int y = ex.find(base + ".y"), z = ex.find(base + ".z");
+    if (y < 0 || z < 0) continue;
+    auto& qy = ex.questions[static_cast<std::size_t>(y)];
+    auto& qz = ex.questions[static_cast<std::size_t>(z)];
+    if (!qy.point.empty() || !qz.point.empty() || qy.type != AnswerType::number || qz.type != AnswerType::number)
+      continue;
+    const std::string group = fmt::format("{}.{}", ex.n, base);
+    q.point = qy.point = qz.point = group;
+  }
+}
+
+}  // namespace
+
 SheetKey read_sheet_json(const json& s, std::string_view source) {
   Where where{source, {}, {}};
   SheetKey sheet;
@@ -282,12 +305,20 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
         where.fail(fmt::format("instance: {}", err.what()));
       }
     }
+    group_points_in_space(ex);
     for (std::size_t i = 0; i < ex.questions.size(); ++i) {
       auto& q = ex.questions[i];
       sheet.max_points += q.points;
       if (q.point.empty() || q.rule.kind != ToleranceRule::Kind::distance) continue;
-      for (std::size_t j = 0; j < ex.questions.size(); ++j)
-        if (j != i && ex.questions[j].point == q.point) q.partner = static_cast<int>(j);
+      // the point's coordinates in a ring (x → y → x, or x → y → z → x): marking walks it to
+      // decide them together
+      for (std::size_t step = 1; step < ex.questions.size(); ++step) {
+        const std::size_t j = (i + step) % ex.questions.size();
+        if (ex.questions[j].point == q.point) {
+          q.partner = static_cast<int>(j);
+          break;
+        }
+      }
     }
     sheet.exercises.push_back(std::move(ex));
   }

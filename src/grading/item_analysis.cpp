@@ -78,7 +78,7 @@ void ItemAccumulator::add(const Submission& s) {
           X->follow_through_points += m.points;
         }
       }
-      if (X && !m.mistake.empty()) ++X->mistakes[m.mistake];
+      if (X && first_naming(marks, q)) ++X->mistakes[m.mistake];
     }
     if (!X) continue;
     if (X->kind.empty()) {

@@ -20,7 +20,7 @@
 //   branches of the exercise tested (Bonferroni: a class's many branches would otherwise flag
 //   one by chance now and then); only branches with 2 submissions or more, and others with 2 or
 //   more, are tested;
-// - named mistakes counted per code and per exercise, follow-through credit counted in answers
+// - named mistakes counted per code and per exercise, each once per exercise of a submission, follow-through credit counted in answers
 //   and in points, per question and per exercise.
 //
 // Scores with answers still to check count their held points as not earned (the statistics are

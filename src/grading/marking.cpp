@@ -2,7 +2,9 @@
 
 #include "support/agrees.h"
 
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "grading/answer_reading.h"
 #include "grading/kind_grader.h"
@@ -36,36 +38,62 @@ bool within_rule_of(const HotQuestion& q, double given, double target) {
   return agrees(given, target);
 }
 
-// The generic mistake of every point answer, named before any kind looks: x and y typed the
-// wrong way round. A coordinate pair is swapped when (given x, given y) is the expected (y, x),
-// each within the key's tolerance of the value it stands for, and it is not the expected
-// (x, y) (a point on the diagonal, x = y, is simply right).
-void name_swapped_coordinates(const ExerciseKey& key, ExerciseMarks& out) {
-  static constexpr std::string_view kSwapped = "swapped_coordinates";
+// The coordinates of each point the key groups (in the plane x, y; in space x, y, z), in the
+// order asked: the questions of one `point`, at most three.
+template <class Fn>
+void each_point(const ExerciseKey& key, Fn&& fn) {
   const std::size_t n = key.questions.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const QuestionKey& qx = key.questions[i];
-    if (qx.point.empty() || qx.type != AnswerType::number || !qx.field.ends_with(".x")) continue;
-    const std::string y_field = qx.field.substr(0, qx.field.size() - 1) + "y";
-    const int j = key.find(y_field);
-    if (j < 0) continue;
-    QuestionMark &mx = out[i], &my = out[static_cast<std::size_t>(j)];
-    if (!mx.given.readable() || !my.given.readable()) continue;
-    if (mx.verdict != Verdict::wrong && my.verdict != Verdict::wrong) continue;
-    const HotQuestion& hx = key.hot[i];
-    const HotQuestion& hy = key.hot[static_cast<std::size_t>(j)];
-    bool swapped = false;
-    if (hx.rule == ToleranceRule::Kind::distance) {
-      const double abs = std::max(hx.abs, hy.abs);
-      swapped = std::hypot(mx.given.number - hy.number, my.given.number - hx.number) <= abs;
-    } else {
-      // the x given stands for the expected y: the y question's tolerance, and the other way
-      swapped = within_rule_of(hy, mx.given.number, hy.number) && within_rule_of(hx, my.given.number, hx.number);
-    }
-    if (!swapped) continue;
-    for (QuestionMark* m : {&mx, &my})
-      if (m->verdict == Verdict::wrong && m->mistake.empty()) m->mistake = kSwapped;
+    const QuestionKey& first = key.questions[i];
+    if (first.point.empty() || first.type != AnswerType::number) continue;
+    bool seen = false;  // an earlier question of the same point began it
+    for (std::size_t j = 0; j < i && !seen; ++j) seen = key.questions[j].point == first.point;
+    if (seen) continue;
+    std::array<std::size_t, 3> at{i};
+    std::size_t size = 1;
+    for (std::size_t j = i + 1; j < n && size < 3; ++j)
+      if (key.questions[j].point == first.point && key.questions[j].type == AnswerType::number) at[size++] = j;
+    if (size >= 2) fn(std::span<const std::size_t>(at.data(), size));
   }
+}
+
+// The generic mistake of every point answer, named before any kind looks: two coordinates typed
+// the wrong way round (x and y; in space any two). Two coordinates are swapped when each given
+// value is the other's expected one, within the key's tolerance of the value it stands for (the
+// point as a whole, for a point marked by distance), and one of them is wrong (a point on the
+// diagonal, x = y, is simply right).
+void name_swapped_coordinates(const ExerciseKey& key, ExerciseMarks& out) {
+  static constexpr std::string_view kSwapped = "swapped_coordinates";
+  each_point(key, [&](std::span<const std::size_t> at) {
+    for (std::size_t a = 0; a < at.size(); ++a)
+      for (std::size_t b = a + 1; b < at.size(); ++b) {
+        QuestionMark &ma = out[at[a]], &mb = out[at[b]];
+        if (!ma.given.readable() || !mb.given.readable()) continue;
+        if (ma.verdict != Verdict::wrong && mb.verdict != Verdict::wrong) continue;
+        const HotQuestion& ha = key.hot[at[a]];
+        const HotQuestion& hb = key.hot[at[b]];
+        bool swapped = false;
+        if (ha.rule == ToleranceRule::Kind::distance) {
+          double abs = 0, sum = 0;
+          bool readable = true;
+          for (std::size_t k = 0; k < at.size(); ++k) {
+            const QuestionMark& m = out[at[k]];
+            readable = readable && m.given.readable();
+            abs = std::max(abs, key.hot[at[k]].abs);
+            const double stands_for = k == a ? hb.number : k == b ? ha.number : key.hot[at[k]].number;
+            const double d = m.given.number - stands_for;
+            sum += d * d;
+          }
+          swapped = readable && std::sqrt(sum) <= abs;
+        } else {
+          // the given a stands for the expected b: b's tolerance, and the other way
+          swapped = within_rule_of(hb, ma.given.number, hb.number) && within_rule_of(ha, mb.given.number, ha.number);
+        }
+        if (!swapped) continue;
+        for (QuestionMark* m : {&ma, &mb})
+          if (m->verdict == Verdict::wrong && m->mistake.empty()) m->mistake = kSwapped;
+      }
+  });
 }
 
 }  // namespace
@@ -112,20 +140,33 @@ void mark_exercise(const ExerciseKey& key, std::span<const std::string_view> cel
   }
   // answers typed where or as not asked (typed_cells.h): a point in one cell
   if (any_blank && any_open) read_points_in_one_cell(key, cells, options.numbers.decimal_comma, out);
-  // Points marked as a whole: right when the given point is within the distance.
+  // Points marked as a whole: right when the given point is within the distance (its
+  // coordinates in a ring of partners, answer_key.cpp, walked once from the first).
   for (std::size_t i = 0; i < n; ++i) {
-    const int j = key.hot[i].partner;
-    if (j < 0 || static_cast<std::size_t>(j) < i) continue;
-    QuestionMark &a = out[i], &b = out[static_cast<std::size_t>(j)];
-    if (a.verdict != Verdict::wrong && b.verdict != Verdict::wrong) continue;  // neither readable
-    const HotQuestion& qa = key.hot[i];
-    const HotQuestion& qb = key.hot[static_cast<std::size_t>(j)];
-    const bool both = a.given.readable() && b.given.readable();
-    const double abs = std::max(qa.abs, qb.abs);
-    if (both && std::hypot(a.given.number - qa.number, b.given.number - qb.number) <= abs) {
-      a.verdict = b.verdict = Verdict::right;
-      a.points = qa.points;
-      b.points = qb.points;
+    if (key.hot[i].partner < 0) continue;
+    std::array<std::size_t, 3> at{i};
+    std::size_t size = 1;
+    bool first = true;
+    for (int j = key.hot[i].partner; j >= 0 && static_cast<std::size_t>(j) != i && size < 3; j = key.hot[static_cast<std::size_t>(j)].partner) {
+      if (static_cast<std::size_t>(j) < i) first = false;
+      at[size++] = static_cast<std::size_t>(j);
+    }
+    if (!first) continue;
+    bool any_wrong = false, readable = true;
+    double abs = 0, sum = 0;
+    for (std::size_t k = 0; k < size; ++k) {
+      const QuestionMark& m = out[at[k]];
+      const HotQuestion& q = key.hot[at[k]];
+      any_wrong = any_wrong || m.verdict == Verdict::wrong;
+      readable = readable && m.given.readable();
+      abs = std::max(abs, q.abs);
+      const double d = m.given.number - q.number;
+      sum += d * d;
+    }
+    if (!any_wrong || !readable || !(std::sqrt(sum) <= abs)) continue;  // none readable, or off
+    for (std::size_t k = 0; k < size; ++k) {
+      out[at[k]].verdict = Verdict::right;
+      out[at[k]].points = key.hot[at[k]].points;
     }
   }
   if (!any_open) return;

@@ -57,4 +57,14 @@ struct QuestionMark {
 // The marks of one exercise, in the order of its key's questions.
 using ExerciseMarks = std::vector<QuestionMark>;
 
+// Whether the q-th mark names a mistake no earlier mark of its exercise names: a mistake is
+// counted once per exercise (a slip that moves a point's three coordinates, or that the later
+// answers carry on, is one mistake, made once).
+inline bool first_naming(const ExerciseMarks& marks, std::size_t q) {
+  if (marks[q].mistake.empty()) return false;
+  for (std::size_t p = 0; p < q; ++p)
+    if (marks[p].mistake == marks[q].mistake) return false;
+  return true;
+}
+
 }  // namespace epure::grading

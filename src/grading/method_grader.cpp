@@ -1,5 +1,6 @@
 #include "grading/method_grader.h"
 
+#include <array>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -65,30 +66,6 @@ bool same_answer(const Recorded<Traced>& a, const Recorded<Traced>& b) {
   return true;
 }
 
-// Follow-through: the answer is what the student's own earlier answers give.
-bool follow(ExerciseReview& r, const Recorded<Traced>& a, std::string_view from, std::string_view code = {}) {
-  switch (a.type) {
-    case AnswerType::number: return r.follow(a.id, a.x.v, from, code);
-    case AnswerType::point: return r.follow_point(a.id, {a.x.v, a.y.v}, from, code);
-    case AnswerType::boolean: return r.follow_boolean(a.id, a.boolean, from, code);
-    case AnswerType::choice: return r.follow_word(a.id, a.word, from, code);
-    case AnswerType::faces: return r.follow_faces(a.id, a.faces, from, code);
-  }
-  return false;
-}
-
-// A named mistake: the answer is what the mistake gives.
-bool name_mistake(ExerciseReview& r, const Recorded<Traced>& a, std::string_view code) {
-  switch (a.type) {
-    case AnswerType::number: return r.mistake(a.id, a.x.v, code);
-    case AnswerType::point: return r.mistake_point(a.id, {a.x.v, a.y.v}, code);
-    case AnswerType::boolean: return false;  // a yes/no answer is wrong, not diagnosed
-    case AnswerType::choice: return r.mistake_word(a.id, a.word, code);
-    case AnswerType::faces: return r.mistake_faces(a.id, a.faces, code);
-  }
-  return false;
-}
-
 const Recorded<Traced>* find(const std::vector<Recorded<Traced>>& run, std::string_view field) {
   for (const auto& a : run)
     if (a.id == field) return &a;
@@ -101,6 +78,122 @@ method::Deps deps_of(const Recorded<Traced>& a) {
     case AnswerType::point: return a.x.deps | a.y.deps;
     default: return a.deps;
   }
+}
+
+// One answer as the sheet asks it: a number, a decision, a word, a set of faces, a point in the
+// plane (one recorded answer), or a point in space (three recorded numbers of one group, which a
+// slip moves as a whole: v∧u for u∧v changes all three components, and is one mistake).
+struct Unit {
+  std::array<const Recorded<Traced>*, 3> part{};
+  std::size_t size = 0;
+
+  explicit operator bool() const { return size > 0; }
+  const Recorded<Traced>& first() const { return *part[0]; }
+  bool in_space() const { return !first().group.empty(); }
+  // the name the review knows it by: the field, or the point's group
+  std::string_view name() const { return in_space() ? first().group : first().id; }
+  method::Deps deps() const {
+    method::Deps d = 0;
+    for (std::size_t k = 0; k < size; ++k) d |= deps_of(*part[k]);
+    return d;
+  }
+  std::array<double, 3> values() const {
+    std::array<double, 3> v{};
+    for (std::size_t k = 0; k < size; ++k) v[k] = part[k]->x.v;
+    return v;
+  }
+  bool same(const Unit& o) const {
+    if (o.size != size) return false;
+    for (std::size_t k = 0; k < size; ++k)
+      if (!same_answer(*part[k], *o.part[k])) return false;
+    return true;
+  }
+};
+
+// The run's answers as units, in the method's order.
+std::vector<Unit> units_of(const std::vector<Recorded<Traced>>& run) {
+  std::vector<Unit> out;
+  for (std::size_t i = 0; i < run.size();) {
+    Unit u;
+    u.part[u.size++] = &run[i];
+    while (!run[i].group.empty() && i + u.size < run.size() && u.size < 3 && run[i + u.size].group == run[i].group)
+      u.part[u.size] = &run[i + u.size], ++u.size;
+    i += u.size;
+    out.push_back(u);
+  }
+  return out;
+}
+
+// The unit of `run` that answers what `like` answers, or an empty one when the run did not reach
+// it (a mistake can change the branch).
+Unit same_unit(const std::vector<Recorded<Traced>>& run, const Unit& like) {
+  Unit u;
+  for (std::size_t k = 0; k < like.size; ++k) {
+    const auto* a = find(run, like.part[k]->id);
+    if (!a) return {};
+    u.part[u.size++] = a;
+  }
+  return u;
+}
+
+// Follow-through: the answer is what the student's own earlier answers give.
+bool follow(ExerciseReview& r, const Unit& u, std::string_view from, std::string_view code = {}) {
+  if (u.in_space()) {
+    const auto v = u.values();
+    return r.follow_point(u.name(), std::span<const double>(v.data(), u.size), from, code);
+  }
+  const auto& a = u.first();
+  switch (a.type) {
+    case AnswerType::number: return r.follow(a.id, a.x.v, from, code);
+    case AnswerType::point: return r.follow_point(a.id, {a.x.v, a.y.v}, from, code);
+    case AnswerType::boolean: return r.follow_boolean(a.id, a.boolean, from, code);
+    case AnswerType::choice: return r.follow_word(a.id, a.word, from, code);
+    case AnswerType::faces: return r.follow_faces(a.id, a.faces, from, code);
+  }
+  return false;
+}
+
+// A named mistake: the answer is what the mistake gives (a point: every coordinate of it).
+bool name_mistake(ExerciseReview& r, const Unit& u, std::string_view code) {
+  if (u.in_space()) {
+    const auto v = u.values();
+    return r.mistake_point(u.name(), std::span<const double>(v.data(), u.size), code);
+  }
+  const auto& a = u.first();
+  switch (a.type) {
+    case AnswerType::number: return r.mistake(a.id, a.x.v, code);
+    case AnswerType::point: return r.mistake_point(a.id, {a.x.v, a.y.v}, code);
+    case AnswerType::boolean: return false;  // a yes/no answer is wrong, not diagnosed
+    case AnswerType::choice: return r.mistake_word(a.id, a.word, code);
+    case AnswerType::faces: return r.mistake_faces(a.id, a.faces, code);
+  }
+  return false;
+}
+
+// Whether what the student gave for `u` fits the value `theirs` records (blank fits anything).
+bool student_fits(const ExerciseReview& r, const Unit& u, const Unit& theirs) {
+  if (u.in_space()) {
+    const auto v = theirs.values();
+    return r.fits_point(u.name(), std::span<const double>(v.data(), theirs.size));
+  }
+  const auto& a = theirs.first();
+  switch (a.type) {
+    case AnswerType::number: return r.fits(a.id, a.x.v);
+    case AnswerType::point: {
+      const double xy[2] = {a.x.v, a.y.v};
+      return r.fits_point(a.id, xy);
+    }
+    case AnswerType::boolean: return true;
+    case AnswerType::choice: {
+      const auto w = r.word(a.id);
+      return !w || *w == a.word;
+    }
+    case AnswerType::faces: {
+      const auto f = r.faces(a.id);
+      return !f || *f == a.faces;
+    }
+  }
+  return true;
 }
 
 class MethodGrader final : public KindGrader {
@@ -117,8 +210,10 @@ class MethodGrader final : public KindGrader {
 
   // In the order of the method, for each answer still wrong: first, is it what the student's
   // own earlier answers give (follow-through)? Then, is it what a named mistake gives? A mistake
-  // is counted once: named on the first answer it explains, it credits the later answers that
-  // carry it on as follow-through.
+  // is named on an answer only where the student's own earlier answers that answer was computed
+  // from agree with it (never against their own right answers: u_c given right, t is not "u_c
+  // renormalised"). A mistake is counted once: named on the first answer it explains (a point as
+  // a whole), it credits the later answers that carry it on as follow-through.
   void review(const std::any& prepared, ExerciseReview& r) const override {
     const auto decls = kind_.questions();
     const auto codes = kind_.mistakes();
@@ -129,42 +224,78 @@ class MethodGrader final : public KindGrader {
     std::vector<std::vector<Recorded<Traced>>> road_runs, theirs, pure;
     for (auto road : roads) road_runs.push_back(kind_.evaluate(prepared, &given, road, decimals));
     // each mistake on the student's own earlier answers, and on the key's data alone (a wrong
-    // answer next to right earlier ones: J given as I with a right t)
+    // answer next to blank earlier ones: J given as I, t not given)
     for (auto code : codes) {
       theirs.push_back(kind_.evaluate(prepared, &given, code, decimals));
       pure.push_back(kind_.evaluate(prepared, nullptr, code, decimals));
     }
     const auto key_values = kind_.evaluate(prepared, nullptr, {}, decimals);
-    std::map<std::string_view, std::string_view> named;  // mistake code → the answer it was named on
+    const std::vector<Unit> units = units_of(base);
+    struct Named {
+      method::Deps bits;        // the answers it was named on
+      std::string_view names;   // the same, by name
+    };
+    std::map<std::string_view, Named> named;  // mistake code → where it was named
 
-    auto is_open = [&](std::string_view id) {
-      return r.open(id) || r.open(method::coordinate_name(id, 'x')) || r.open(method::coordinate_name(id, 'y'));
+    auto bits_of = [&](const Unit& u) {
+      method::Deps b = 0;
+      for (std::size_t k = 0; k < u.size; ++k) b |= bit_of(u.part[k]->id, decls);
+      return b;
+    };
+    auto is_open = [&](const Unit& u) {
+      for (std::size_t k = 0; k < u.size; ++k) {
+        const auto id = u.part[k]->id;
+        if (r.open(id) || r.open(method::coordinate_name(id, 'x')) || r.open(method::coordinate_name(id, 'y')))
+          return true;
+      }
+      return false;
     };
     // follow-through, by the usual road or another right one
-    auto follows = [&](const Recorded<Traced>* a) {
-      if (!a) return false;
-      const auto deps = deps_of(*a);
-      return deps && follow(r, *a, names_of(deps, decls));
+    auto follows = [&](const Unit& u) {
+      if (!u) return false;
+      const auto deps = u.deps();
+      return deps && follow(r, u, names_of(deps, decls));
     };
-    // the named mistake `k` explains the answer as `b` gives it
-    // (counted once: an answer computed from the one the mistake was named on follows from it)
-    auto explains = [&](std::size_t k, const Recorded<Traced>* b, const Recorded<Traced>* right) {
-      if (!b || (right && same_answer(*b, *right))) return false;
-      if (auto it = named.find(codes[k]); it != named.end() && (deps_of(*b) & bit_of(it->second, decls)))
-        return follow(r, *b, it->second, codes[k]);
-      if (!name_mistake(r, *b, codes[k])) return false;
-      named.emplace(codes[k], b->id);
+    // whether the student's own earlier answers that `at` (the i-th unit) is computed from agree
+    // with the mistake's run: each one the mistake moves (from where `right` has it) was either
+    // left blank or given as the mistake gives it
+    auto consistent = [&](std::size_t at, const std::vector<Recorded<Traced>>& run,
+                          const std::vector<Recorded<Traced>>& right) {
+      const method::Deps from = units[at].deps();
+      for (std::size_t e = 0; e < at; ++e) {
+        const Unit& earlier = units[e];
+        if (earlier.first().type == AnswerType::boolean || !(bits_of(earlier) & from)) continue;
+        const Unit wrong = same_unit(run, earlier), usual = same_unit(right, earlier);
+        if (!wrong || !usual || wrong.same(usual)) continue;
+        if (!student_fits(r, earlier, wrong)) return false;
+      }
+      return true;
+    };
+    // the named mistake `k` explains the `at`-th answer as `run` gives it, where `right` gives
+    // the answer without the mistake (counted once: an answer computed from the one the mistake
+    // was named on follows from it)
+    auto explains = [&](std::size_t k, std::size_t at, const std::vector<Recorded<Traced>>& run,
+                        const std::vector<Recorded<Traced>>& right) {
+      const Unit b = same_unit(run, units[at]), usual = same_unit(right, units[at]);
+      if (!b || (usual && b.same(usual))) return false;
+      if (auto it = named.find(codes[k]); it != named.end() && (b.deps() & it->second.bits))
+        return follow(r, b, it->second.names, codes[k]);
+      // (the student's answer fitting the mistake first: the cheap test, which most fail)
+      if (!student_fits(r, units[at], b) || !consistent(at, run, right) || !name_mistake(r, b, codes[k]))
+        return false;
+      const method::Deps bits = bits_of(units[at]);
+      named.emplace(codes[k], Named{bits, names_of(bits, decls)});
       return true;
     };
 
-    for (const auto& a : base) {
-      if (!is_open(a.id)) continue;
-      if (follows(&a)) continue;
+    for (std::size_t i = 0; i < units.size(); ++i) {
+      const Unit& a = units[i];
+      if (!is_open(a)) continue;
+      if (follows(a)) continue;
       bool done = false;
-      for (std::size_t k = 0; k < road_runs.size() && !done; ++k) done = follows(find(road_runs[k], a.id));
-      for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, find(theirs[k], a.id), &a);
-      for (std::size_t k = 0; k < codes.size() && !done; ++k)
-        done = explains(k, find(pure[k], a.id), find(key_values, a.id));
+      for (std::size_t k = 0; k < road_runs.size() && !done; ++k) done = follows(same_unit(road_runs[k], a));
+      for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, i, theirs[k], base);
+      for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, i, pure[k], key_values);
     }
   }
 

@@ -199,29 +199,55 @@ bool ExerciseReview::follow(std::string_view field, double value, std::string_vi
   return true;
 }
 
-bool ExerciseReview::follow_point(std::string_view group, geo::Point2 value, std::string_view from,
-                                  std::string_view code) {
-  const int ix = key_.find(coordinate(group, 'x')), iy = key_.find(coordinate(group, 'y'));
-  const bool ox = open_at(ix), oy = open_at(iy);
-  if (!(ox || oy) || ix < 0 || iy < 0) return false;
-  const auto& qx = key_.hot[ix];
-  const auto& qy = key_.hot[iy];
-  const QuestionMark &mx = marks_[ix], &my = marks_[iy];
-  if (qx.rule == ToleranceRule::Kind::distance) {
-    // the point as a whole
-    if (!mx.given.readable() || !my.given.readable()) return false;
-    const double abs = std::max(qx.abs, qy.abs);
-    if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
-    if (!some_wrong(from)) return false;
-    if (ox) credit(ix, from, code, value.x);
-    if (oy) credit(iy, from, code, value.y);
-    return true;
+bool ExerciseReview::coordinates_of(std::string_view group, std::size_t count, int* at) const {
+  static constexpr char kAxes[] = {'x', 'y', 'z'};
+  if (count < 2 || count > 3) return false;
+  for (std::size_t k = 0; k < count; ++k)
+    if ((at[k] = key_.find(coordinate(group, kAxes[k]))) < 0) return false;
+  return true;
+}
+
+namespace {
+// The distance from the given coordinates to `value`, or NaN when one is not readable.
+double distance_to(std::span<const QuestionMark> marks, const int* at, std::span<const double> value) {
+  double sum = 0;
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    const QuestionMark& m = marks[static_cast<std::size_t>(at[k])];
+    if (!m.given.readable()) return NAN;
+    const double d = m.given.number - value[k];
+    sum += d * d;
   }
-  const bool fit_x = ox && within(qx, mx.given.number, value.x, kMatchFactor);
-  const bool fit_y = oy && within(qy, my.given.number, value.y, kMatchFactor);
-  if (!(fit_x || fit_y) || !some_wrong(from)) return false;
-  if (fit_x) credit(ix, from, code, value.x);
-  if (fit_y) credit(iy, from, code, value.y);
+  return std::sqrt(sum);
+}
+}  // namespace
+
+bool ExerciseReview::follow_point(std::string_view group, std::span<const double> value, std::string_view from,
+                                  std::string_view code) {
+  int at[3];
+  if (!coordinates_of(group, value.size(), at)) return false;
+  bool any_open = false;
+  for (std::size_t k = 0; k < value.size(); ++k) any_open = any_open || open_at(at[k]);
+  if (!any_open) return false;
+  const HotQuestion& first = key_.hot[static_cast<std::size_t>(at[0])];
+  bool fit[3] = {};
+  if (first.rule == ToleranceRule::Kind::distance) {
+    // the point as a whole
+    double abs = 0;
+    for (std::size_t k = 0; k < value.size(); ++k) abs = std::max(abs, key_.hot[static_cast<std::size_t>(at[k])].abs);
+    if (!(distance_to(marks_, at, value) <= kMatchFactor * abs)) return false;
+    for (std::size_t k = 0; k < value.size(); ++k) fit[k] = open_at(at[k]);
+  } else {
+    bool any = false;
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::size_t i = static_cast<std::size_t>(at[k]);
+      fit[k] = open_at(at[k]) && within(key_.hot[i], marks_[i].given.number, value[k], kMatchFactor);
+      any = any || fit[k];
+    }
+    if (!any) return false;
+  }
+  if (!some_wrong(from)) return false;
+  for (std::size_t k = 0; k < value.size(); ++k)
+    if (fit[k]) credit(at[k], from, code, value[k]);
   return true;
 }
 
@@ -263,28 +289,51 @@ bool ExerciseReview::mistake(std::string_view field, double value, std::string_v
   return true;
 }
 
-bool ExerciseReview::mistake_point(std::string_view group, geo::Point2 value, std::string_view code) {
-  const int ix = key_.find(coordinate(group, 'x')), iy = key_.find(coordinate(group, 'y'));
-  const bool ox = open_at(ix), oy = open_at(iy);
-  if (!(ox || oy) || ix < 0 || iy < 0) return false;
-  const QuestionMark &mx = marks_[ix], &my = marks_[iy];
-  const auto& qx = key_.hot[ix];
-  const auto& qy = key_.hot[iy];
-  if (!mx.given.readable() || !my.given.readable() || qx.type != AnswerType::number || qy.type != AnswerType::number)
-    return false;
-  if (qx.rule == ToleranceRule::Kind::distance) {
-    const double abs = std::max(qx.abs, qy.abs);
-    if (!(std::hypot(mx.given.number - value.x, my.given.number - value.y) <= kMatchFactor * abs)) return false;
-  } else if (!within(qx, mx.given.number, value.x, kMatchFactor) || !within(qy, my.given.number, value.y, kMatchFactor)) {
-    // both coordinates must fit the mistake, right ones included: one coordinate alone
-    // matching is a coincidence, not a diagnosis
-    return false;
+bool ExerciseReview::mistake_point(std::string_view group, std::span<const double> value, std::string_view code) {
+  int at[3];
+  if (!coordinates_of(group, value.size(), at)) return false;
+  // the coordinates given: all of them in the plane, two at least in space (one coordinate
+  // fitting a mistake is a coincidence, not a diagnosis)
+  bool any_open = false;
+  std::size_t given = 0;
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(at[k]);
+    if (key_.hot[i].type != AnswerType::number) return false;
+    if (marks_[i].given.readable()) ++given;
+    any_open = any_open || open_at(at[k]);
   }
-  for (auto [i, open] : {std::pair{ix, ox}, std::pair{iy, oy}}) {
-    if (!open) continue;
-    marks_[i].mistake = code;
-    marks_[i].value = i == ix ? value.x : value.y;
+  if (!any_open || given < 2) return false;
+  const HotQuestion& first = key_.hot[static_cast<std::size_t>(at[0])];
+  if (first.rule == ToleranceRule::Kind::distance) {
+    double abs = 0;
+    for (std::size_t k = 0; k < value.size(); ++k) abs = std::max(abs, key_.hot[static_cast<std::size_t>(at[k])].abs);
+    if (!(distance_to(marks_, at, value) <= kMatchFactor * abs)) return false;
+  } else {
+    // every coordinate given must fit the mistake, right ones included
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::size_t i = static_cast<std::size_t>(at[k]);
+      if (marks_[i].given.readable() && !within(key_.hot[i], marks_[i].given.number, value[k], kMatchFactor))
+        return false;
+    }
   }
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    if (!open_at(at[k])) continue;
+    marks_[static_cast<std::size_t>(at[k])].mistake = code;
+    marks_[static_cast<std::size_t>(at[k])].value = value[k];
+  }
+  return true;
+}
+
+bool ExerciseReview::fits(std::string_view field, double value) const {
+  const int i = key_.find(field);
+  const auto* m = readable_at(i, AnswerType::number);
+  return !m || within(key_.hot[static_cast<std::size_t>(i)], m->given.number, value, kMatchFactor);
+}
+
+bool ExerciseReview::fits_point(std::string_view group, std::span<const double> value) const {
+  static constexpr char kAxes[] = {'x', 'y', 'z'};
+  for (std::size_t k = 0; k < value.size() && k < 3; ++k)
+    if (!fits(coordinate(group, kAxes[k]), value[k])) return false;
   return true;
 }
 

@@ -52,8 +52,14 @@ class ExerciseReview {
   // answer next to right earlier ones is never excused.
   bool follow(std::string_view field, double value, std::string_view from,
               std::string_view mistake = {});
-  bool follow_point(std::string_view group, geo::Point2 value, std::string_view from,
+  // A point (in the plane "I" with I.x and I.y; in space "I" with I.x, I.y and I.z), as a whole
+  // when its key marks it by distance, else coordinate by coordinate.
+  bool follow_point(std::string_view group, std::span<const double> value, std::string_view from,
                     std::string_view mistake = {});
+  bool follow_point(std::string_view group, geo::Point2 value, std::string_view from, std::string_view mistake = {}) {
+    const double xy[2] = {value.x, value.y};
+    return follow_point(group, xy, from, mistake);
+  }
   bool follow_boolean(std::string_view field, bool value, std::string_view from,
                       std::string_view mistake = {});
   bool follow_word(std::string_view field, std::string_view word, std::string_view from,
@@ -62,12 +68,23 @@ class ExerciseReview {
 
   // ---- named mistakes: the wrong answer is what `value` gives.
   bool mistake(std::string_view field, double value, std::string_view code);
-  bool mistake_point(std::string_view group, geo::Point2 value, std::string_view code);
+  // Named on the whole point: every coordinate fits the mistake, the right ones included.
+  bool mistake_point(std::string_view group, std::span<const double> value, std::string_view code);
+  bool mistake_point(std::string_view group, geo::Point2 value, std::string_view code) {
+    const double xy[2] = {value.x, value.y};
+    return mistake_point(group, xy, code);
+  }
+  // Whether what the student gave for the point fits `value` (coordinates left blank fit).
+  bool fits_point(std::string_view group, std::span<const double> value) const;
+  // Whether what the student gave for `field` fits `value`, or was left blank or unreadable.
+  bool fits(std::string_view field, double value) const;
   bool mistake_faces(std::string_view field, FaceBits value, std::string_view code);
   bool mistake_word(std::string_view field, std::string_view word, std::string_view code);
 
  private:
   bool open_at(int i) const;
+  // The questions of a point's coordinates, in axis order; false when one is not asked.
+  bool coordinates_of(std::string_view group, std::size_t count, int* at) const;
   const QuestionMark* readable_at(int i, AnswerType type) const;
   QuestionMark* mark(std::string_view field);
   const QuestionMark* mark(std::string_view field) const;

@@ -60,7 +60,7 @@ void ClassStatistics::add(const Submission& s) {
       if (m.points >= full && (m.verdict == Verdict::right || m.verdict == Verdict::follow_through)) ++r.credited;
       if (m.verdict == Verdict::follow_through) ++r.follow_through;
       if (m.verdict == Verdict::unanswered) ++r.unanswered;
-      if (!m.mistake.empty()) ++mistakes_[{index[q], m.mistake}];
+      if (first_naming(marks, q)) ++mistakes_[{index[q], m.mistake}];  // where it was first named
     }
   }
 }

@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
 """The named mistakes of a Moodle export against the paper grading's. For every mistake answer
-of every exported number and choice, one submission gives exactly that answer (every other
-answer of the exercise right; for a point, its other coordinate as the same mistake gives it);
+of every exported number and choice, one submission gives exactly that answer (the other
+answers of the exercise left blank: grading names a mistake only where the student's own earlier
+answers agree with it, and a right earlier answer where the mistake gives another says the
+student did not make it, which a Cloze part, decided alone, cannot see; for a point, its other
+coordinate as the same mistake gives it);
 `epure grade` marks it, and Moodle's grading is simulated on the exported question (answers tried
 in order, the first whose interval holds the value wins, as question/type/numerical does). The
-two must agree: right for both, or wrong with the same named mistake (same sentence).
+two must agree: right for both, or wrong with the same named mistake (same sentence), or with
+another mistake whose own interval in the part holds the value too (two mistakes that give the
+same number within its tolerance: nothing in a lone answer tells them apart; counted apart).
 A point's coordinates are separate Cloze parts, so Moodle decides each coordinate alone where
 grading decides the point as a whole (both coordinates must fit one mistake): there they may name
 different mistakes; those are counted and printed, and fail only when grading marks the answer
@@ -21,7 +26,7 @@ import sys
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(__file__))
-from moodle_cloze import extract, moodle_grade, sentence_patterns, strip_tags  # noqa: E402
+from moodle_cloze import extract, moodle_grade, moodle_interval, sentence_patterns, strip_tags  # noqa: E402
 
 
 def main(argv):
@@ -42,14 +47,6 @@ def main(argv):
                 if q['id'] not in ids:
                     ids.append(q['id'])
 
-    def shown(q):
-        e = q['expected']
-        if isinstance(e, bool):
-            return 'yes' if e else 'no'
-        if isinstance(e, list):
-            return ' '.join(e) if e else 'none'
-        return repr(e) if isinstance(e, float) else str(e)
-
     rows, expect = [], []
     for s in key['sheets']:
         for e in s['exercises']:
@@ -57,8 +54,9 @@ def main(argv):
             parts, _ = extract(q.findtext('questiontext/text'))
             parts = [p for p in parts if p['weight'] != '0']  # fields this case does not ask
             part_of = {kq['id']: p for p, kq in zip(parts, e['questions'])}
-            right = {kq['id']: shown(kq) for kq in e['questions']}
-            mistakes = {}  # question id → code → (the answer as typed, Moodle's verdict on it)
+            # question id → code → (the answer as typed, Moodle's verdict on it, the codes whose
+            # intervals hold it too)
+            mistakes = {}
             for kq in e['questions']:
                 part = part_of[kq['id']]
                 mistakes[kq['id']] = {}
@@ -66,22 +64,23 @@ def main(argv):
                     for alt in part['alternatives'][1:-1]:
                         won = moodle_grade(part, alt['value'])
                         verdict = 'right' if won is part['alternatives'][0] else code_of(won['feedback'])
-                        mistakes[kq['id']].setdefault(code_of(alt['feedback']), (repr(alt['value']), verdict))
+                        also = {code_of(a['feedback']) for a in part['alternatives'][1:-1]
+                                if 'value' in a and moodle_interval(a)[0] <= alt['value'] <= moodle_interval(a)[1]}
+                        mistakes[kq['id']].setdefault(code_of(alt['feedback']), (repr(alt['value']), verdict, also))
                 elif part['type'] == 'multichoice':
                     for alt in part['alternatives']:
                         if alt['feedback']:
                             mistakes[kq['id']].setdefault(code_of(alt['feedback']),
-                                                          (strip_tags(alt['text']), code_of(alt['feedback'])))
+                                                          (strip_tags(alt['text']), code_of(alt['feedback']), set()))
             for kq in e['questions']:
-                for code, (value, verdict) in mistakes[kq['id']].items():
-                    answers = dict(right)
-                    answers[kq['id']] = value
+                for code, (value, verdict, also) in mistakes[kq['id']].items():
+                    answers = {kq['id']: value}
                     if kq.get('point'):  # the other coordinate as the same mistake gives it
                         for other in e['questions']:
                             if other.get('point') == kq['point'] and other['id'] != kq['id'] and code in mistakes[other['id']]:
                                 answers[other['id']] = mistakes[other['id']][code][0]
                     rows.append({'sheet': s['id'], 'student': f'row{len(rows)}', **answers})
-                    expect.append((kq['id'], verdict, bool(kq.get('point'))))
+                    expect.append((kq['id'], verdict, bool(kq.get('point')), also))
     answers_csv = os.path.join(work, 'mistakes.csv')
     with open(answers_csv, 'w', newline='', encoding='utf-8') as f:
         w = csv.DictWriter(f, fieldnames=['sheet', 'student'] + ids, delimiter=';')
@@ -93,8 +92,8 @@ def main(argv):
     marks = json.load(open(marks_json, encoding='utf-8'))
     failures, point_differences = [], []
     subs = {s['student']: s for s in marks['submissions']}
-    agree = 0
-    for i, (qid, moodle_verdict, point) in enumerate(expect):
+    agree = ambiguous = 0
+    for i, (qid, moodle_verdict, point, also) in enumerate(expect):
         sub = subs.get(f'row{i}')
         if sub is None:
             failures.append(f'row{i}: not marked')
@@ -103,6 +102,9 @@ def main(argv):
         paper = 'right' if mark['verdict'] in ('right', 'follow_through') else mark['mistake']
         if paper == moodle_verdict:
             agree += 1
+            continue
+        if moodle_verdict != 'right' and paper in also:
+            ambiguous += 1
             continue
         line = f'{sub["sheet"]} {qid} = {mark["given"]}: Moodle says {moodle_verdict}, paper grading says {paper}'
         if point and 'right' not in (paper, moodle_verdict):
@@ -114,6 +116,7 @@ def main(argv):
     for f in point_differences[:10]:
         print('point coordinate decided alone:', f)
     print(f'{moodle}: {len(expect)} mistake answers marked by epure grade and by Moodle\'s rules: {agree} agree, '
+          f'{ambiguous} name another mistake that gives the same value, '
           f'{len(point_differences)} point coordinates name another mistake, {len(failures)} disagree')
     return 1 if failures else 0
 

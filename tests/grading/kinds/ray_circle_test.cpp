@@ -25,10 +25,15 @@ TEST_CASE("ray_circle: the far intersection J instead of I; I follows from it") 
   CHECK(m["I.x"].from == "t");
 }
 
-TEST_CASE("ray_circle: J given directly as I") {
+TEST_CASE("ray_circle: J given directly as I is the far root only when t does not say otherwise") {
   const auto key = exercise(kInstance, kFields);
+  // t left blank: nothing the student wrote contradicts the far root
+  CHECK(mark(key, {{"I.x", "6.73"}, {"I.y", "0"}})["I.x"].mistake == "far_intersection");
+  // t right (the near root): the student did not take the far one; I is wrong, unexplained
   const auto m = mark(key, {{"t", "3.27"}, {"I.x", "6.73"}, {"I.y", "0"}});
-  CHECK(m["I.x"].mistake == "far_intersection");
+  CHECK(m["t"].verdict == Verdict::right);
+  CHECK(m["I.x"].verdict == Verdict::wrong);
+  CHECK(m["I.x"].mistake.empty());
 }
 
 TEST_CASE("ray_circle: a normal not normalised, or pointing inward") {

@@ -45,3 +45,41 @@ TEST_CASE("ray_sphere: u not normalised is named on t_proj; d² = AC² − t_pro
   // t_proj = 4.5 (wrong), d² by Pythagoras in A–P–C: 26 − 20.25 = 5.75, follows
   CHECK(mark(key, {{"t_proj", "4.5"}, {"d2", "5.75"}})["d2"].verdict == Verdict::follow_through);
 }
+
+TEST_CASE("ray_sphere: a point in space gets the plane's rules") {
+  SUBCASE("two coordinates typed in each other's cells") {
+    const auto key = exercise(kInstance, kFields);
+    const auto m = mark(key, {{"I.x", "3.27"}, {"I.y", "1"}, {"I.z", "0"}});
+    CHECK(m["I.x"].verdict == Verdict::right);
+    CHECK(m["I.y"].mistake == "swapped_coordinates");
+    CHECK(m["I.z"].mistake == "swapped_coordinates");
+  }
+  SUBCASE("typed whole in one cell") {
+    const auto key = exercise(kInstance, kFields);
+    const auto m = mark(key, {{"I.x", "(3.27, 0, 1)"}});
+    for (const char* c : {"I.x", "I.y", "I.z"}) CHECK(m[c].verdict == Verdict::right);
+    CHECK(m["I.x"].note == "point_in_one_cell");
+  }
+  SUBCASE("a mistake names the whole point, never one coordinate that happens to fit") {
+    const auto key = exercise(kInstance, kFields);
+    // N inward is (0.87, 0.5, 0): N.z = 0 fits it and the right N alike; N.x and N.y are inward
+    const auto inward = mark(key, {{"N.x", "0.87"}, {"N.y", "0.5"}, {"N.z", "0"}});
+    CHECK(inward["N.x"].mistake == "normal_inward");
+    CHECK(inward["N.y"].mistake == "normal_inward");
+    CHECK(inward["N.z"].verdict == Verdict::right);
+    // (0.87, −0.5, 0) is the normal at the far point J: that mistake, on the whole point
+    CHECK(mark(key, {{"N.x", "0.87"}, {"N.y", "-0.5"}, {"N.z", "0"}})["N.x"].mistake == "far_intersection");
+    // only N.x fits a mistake (inward, or at J): its N.y says neither
+    const auto half = mark(key, {{"N.x", "0.87"}, {"N.y", "0.2"}, {"N.z", "0"}});
+    CHECK(half["N.x"].verdict == Verdict::wrong);
+    CHECK(half["N.x"].mistake.empty());
+  }
+  SUBCASE("marked as a whole, by its distance, when the key says so") {
+    // every coordinate within 0.02, the point 0.021 away: wrong as a whole, as in the plane
+    const auto key = exercise(kInstance, kFields, {}, "distance");
+    const auto off = mark(key, {{"I.x", "3.283"}, {"I.y", "0.015"}, {"I.z", "1"}});
+    for (const char* c : {"I.x", "I.y", "I.z"}) CHECK(off[c].verdict == Verdict::wrong);
+    const auto near = mark(key, {{"I.x", "3.278"}, {"I.y", "0.01"}, {"I.z", "1.005"}});
+    for (const char* c : {"I.x", "I.y", "I.z"}) CHECK(near[c].verdict == Verdict::right);
+  }
+}

@@ -39,6 +39,14 @@ TEST_CASE("ray_ellipse: right answers, then the frame change's mistakes") {
     CHECK(m["t"].verdict == Verdict::follow_through);
     CHECK(m["t"].from == "Ac uc");
   }
+  SUBCASE("u_c renormalised is never named against the student's own right u_c (sheet 0097)") {
+    // u_c renormalised (1, 0): |−2.5 + t| = 1 at t = 1.5
+    CHECK(mark(key, {{"t", "1.5"}})["t"].mistake == "uc_renormalised");
+    const auto m = mark(key, {{"Ac.x", "-2.5"}, {"Ac.y", "0"}, {"uc.x", "0.5"}, {"uc.y", "0"}, {"t", "1.5"}});
+    CHECK(m["uc.x"].verdict == Verdict::right);
+    CHECK(m["t"].verdict == Verdict::wrong);
+    CHECK(m["t"].mistake.empty());
+  }
   SUBCASE("the far root") { CHECK(mark(key, {{"t", "7"}})["t"].mistake == "far_intersection"); }
   SUBCASE("the normal not normalised") {
     CHECK(mark(key, {{"N.x", "-0.5"}, {"N.y", "0"}})["N.x"].mistake == "normal_not_unit");
