@@ -26,12 +26,14 @@ key = json.load(open(sys.argv[1]))
 rows = int(sys.argv[3])
 rng = random.Random(20261123)
 ids = []
+place = {}  # a question's exercise by its place on the sheet (ids start with the course's number: "P.dot", "3.3.t")
 for s in key["sheets"]:
     for e in s["exercises"]:
         for q in e["questions"]:
             if q["id"] not in ids: ids.append(q["id"])
+            place.setdefault(q["id"], e["n"])
 order = {q: i for i, q in enumerate(ids)}
-ids.sort(key=lambda q: (int(q.split(".")[0]), order[q]))
+ids.sort(key=lambda q: (place[q], order[q]))
 def num(x): return f"{x:.2f}".replace(".", ",")
 def answer(q):
     e, r = q["expected"], rng.random()
