@@ -88,6 +88,11 @@ void name_swapped_coordinates(const ExerciseKey& key, ExerciseMarks& out) {
         } else {
           // the given a stands for the expected b: b's tolerance, and the other way
           swapped = within_rule_of(hb, ma.given.number, hb.number) && within_rule_of(ha, mb.given.number, ha.number);
+          // Two expected values that are each other's opposites: the pair given is then also
+          // both signs changed (v∧u for u∧v, −N for N), a slip of the whole point that the
+          // kind's method names; a swap would count it twice.
+          if (swapped && within_rule_of(ha, ma.given.number, -ha.number) && within_rule_of(hb, mb.given.number, -hb.number))
+            swapped = false;
         }
         if (!swapped) continue;
         for (QuestionMark* m : {&ma, &mb})

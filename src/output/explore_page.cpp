@@ -79,12 +79,12 @@ void ExplorePageWriter::finish() {
   write_(page_.substr(config_at_ + kConfig.size()));
 }
 
-// Inside <script>, no "</" may close it early. A piece never ends with '<' nor starts with '/'
-// (pieces end with '{', ']' or '}' and start with '{', ',', '"' or '}'), so escaping each piece
-// escapes the whole.
+// Inside <script>, no "</" may close it early, and no "<!--" may open the script's escaped
+// state (where the page's real </script> would no longer close it): every '<' is written as
+// \u003c, which JSON reads back as the same character (a spec's heading can hold anything).
 void ExplorePageWriter::put(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
-    text.replace(at, 2, "<\\/");
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 6))
+    text.replace(at, 1, "\\u003c");
   write_(text);
 }
 

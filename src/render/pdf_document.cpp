@@ -155,8 +155,8 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
     stream_->writer.add_run({std::string(label), static_cast<int>(pages.size()), true, outline});
   } else {
     for (std::size_t i = 0; i < pages.size(); ++i)
-      stream_->writer.add_run(
-          {fmt::format("{} {}/{}", label, pages[i].number, pages[i].count), 1, false, outline && i == 0});
+      stream_->writer.add_run({fmt::format("{} {}/{}", label, pages[i].number, pages[i].count), 1, false,
+                               outline && i == 0, std::string(label)});
   }
   std::vector<PageLink> on_page;
   for (std::size_t i = 0; i < pages.size(); ++i) {

@@ -31,7 +31,7 @@ constexpr std::size_t kLargestCatalog = 64 * 1024;
 constexpr std::uint64_t kLargestOffset = 9'999'999'999;
 
 [[noreturn]] void fail(std::string_view why) {
-  throw std::runtime_error(fmt::format("cannot add the PDF's links: {}", why));
+  throw std::runtime_error(fmt::format("cannot add the PDF's links, bookmarks and labels: {}", why));
 }
 
 // A PDF number with at most two decimals and no trailing zeros ("595.28", "60", "-3.5").
@@ -386,7 +386,8 @@ void PdfStreamWriter::write_catalog_and_objects() {
     for (const Run& run : runs_) {
       if (!run.names.outline) continue;
       ++k;
-      std::string body = fmt::format("<< /Title {}\n   /Parent {} 0 R\n", text_string(run.names.label), root);
+      const std::string& title = run.names.title.empty() ? run.names.label : run.names.title;
+      std::string body = fmt::format("<< /Title {}\n   /Parent {} 0 R\n", text_string(title), root);
       if (k > 1) body += fmt::format("   /Prev {} 0 R\n", root + k - 1);
       if (k < bookmarks_) body += fmt::format("   /Next {} 0 R\n", root + k + 1);
       body += fmt::format("   /Dest [{} 0 R /XYZ null null 0]\n>>\n", run.page_object);

@@ -56,18 +56,20 @@ struct PdfSink {
 PdfSink string_sink(std::string& bytes);
 
 // Pages named in a viewer's page list: `label` alone, or, when `numbered`, "<label> 1/n" to
-// "<label> n/n" for the n pages. With `outline`, also a bookmark named `label`, opening the first.
+// "<label> n/n" for the n pages. With `outline`, also a bookmark opening the first, named
+// `title` (`label` when empty).
 struct PageRun {
   std::string label;
   int pages = 1;
   bool numbered = true;
   bool outline = false;
+  std::string title{};
 };
 
 // Between cairo's output stream and a sink. For each page: begin_page, cairo_show_page, then
 // end_page; before cairo_surface_finish, begin_trailer; after it, finish. Every step that finds
 // cairo's output other than described above throws std::runtime_error ("cannot add the PDF's
-// links: …"): a file without its links, or a damaged one, is never taken for a whole one.
+// links, bookmarks and labels: …"): a file without its links, or a damaged one, is never taken for a whole one.
 class PdfStreamWriter {
  public:
   explicit PdfStreamWriter(PdfSink sink);
@@ -75,8 +77,8 @@ class PdfStreamWriter {
   // cairo's bytes, in order.
   void write(std::string_view bytes);
 
-  // The pages cairo writes next (after those of earlier runs) are named by `run`. Pages before
-  // the first run, or after the last one's, keep their number as their name.
+  // The next `run.pages` pages, after those of the earlier runs, are named by `run`. Pages past
+  // the last run's (written without one) keep their number as their name.
   void add_run(PageRun run);
 
   // The next page cairo writes is page `number` (from 1) of the PDF, `height_pt` high (the

@@ -268,7 +268,8 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   await page.click("#copy");
   await page.waitForFunction(() => window.epureCopied !== undefined, { timeout: 5000 }).catch(() => {});
   const copied = await page.evaluate(() => ({ line: window.epureCopied, current: window.epure.current(), status: document.getElementById("copied").textContent }));
-  check(typeof copied.line === "string" && JSON.stringify(JSON.parse(copied.line)) === JSON.stringify(copied.current),
+  check(typeof copied.line === "string" && JSON.stringify(JSON.parse(copied.line)) === JSON.stringify(copied.current) &&
+        copied.status === (await words(await page.evaluate(() => document.documentElement.lang))).copied,
         "page: “copy as a solve line” copies the data shown", `${copied.line} (${copied.status})`);
   check(refused.length === 0 && errors.length === 0, "page: no request outside the file, no console error", JSON.stringify({ refused, errors }));
   await page.close();

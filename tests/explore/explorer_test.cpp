@@ -9,6 +9,7 @@
 #include <string>
 
 #include "explore/explorer.h"
+#include "output/explore_page.h"
 #include "exercises/exercise.h"
 #include "render/svg_page.h"
 #include "solve/solve.h"
@@ -318,4 +319,19 @@ TEST_CASE("explore: the view in parts is the view; without tolerances the key re
       CHECK(epure::render::document_to_svg(da) == epure::render::document_to_svg(db));
     }
   }
+}
+
+TEST_CASE("explore page: a label may hold anything; the configuration still parses and ends where it should") {
+  if (!epure::output::explore_available()) return;  // a build without the page (the ASan one)
+  const epure::output::ExerciseLabels labels{{"en", {"<!--<script>", "</script><b>"}}};
+  const std::string html = epure::output::explore_html("en", {}, labels);
+  const std::string open = "<script id=\"epure-config\" type=\"application/json\">";
+  const std::size_t at = html.find(open);
+  REQUIRE(at != std::string::npos);
+  const std::size_t end = html.find("</script>", at);
+  REQUIRE(end != std::string::npos);
+  const std::string config = html.substr(at + open.size(), end - at - open.size());
+  CHECK(config.find('<') == std::string::npos);  // neither "</" nor "<!--" inside the element
+  CHECK(json::parse(config)["labels"]["en"] == json({"<!--<script>", "</script><b>"}));
+  CHECK(html.find("<!--<script>") == std::string::npos);
 }

@@ -58,6 +58,18 @@ TEST_CASE("vectors_3d: v∧u for u∧v is one mistake, named on the whole vector
   CHECK(by_question[0].count == 1);
 }
 
+TEST_CASE("vectors_3d: v∧u where two components of u∧v are opposites is still one sign slip, not a swap") {
+  // u = (0, 0, 1), v = (1, 1, 2): u∧v = (−1, 1, 0); as v∧u (1, −1, 0), which also reads as x and y
+  // typed in each other's cells
+  const auto k = exercise_in_space("vectors_3d", R"({"kind":"vectors","u":[0,0,1],"v":[1,1,2]})", kFields);
+  const auto m = mark(k, {{"cross.x", "1"}, {"cross.y", "-1"}, {"cross.z", "0"}});
+  for (const char* c : {"cross.x", "cross.y"}) {
+    CAPTURE(c);
+    CHECK(m[c].verdict == Verdict::wrong);
+    CHECK(m[c].mistake == "cross_sign");
+  }
+}
+
 TEST_CASE("vectors_3d: the middle component's sign alone is that mistake, on that component") {
   const auto k = key();
   const auto m = mark(k, {{"cross.x", "2"}, {"cross.y", "7"}, {"cross.z", "4"}});
