@@ -215,17 +215,22 @@ void PdfStreamWriter::begin_trailer() {
   if (!annotations_.empty() || adds_catalog_entries()) trailer_ = Trailer::seeking;
 }
 
+std::size_t PdfStreamWriter::find_or_pass(std::string_view mark) {
+  const std::size_t at = pending_.find(mark);
+  if (at != std::string::npos) return at;
+  // all but a possible start of the mark, which the next bytes may complete
+  const std::size_t keep = std::min(pending_.size(), mark.size() - 1);
+  emit(std::string_view(pending_).substr(0, pending_.size() - keep));
+  pending_.erase(0, pending_.size() - keep);
+  return std::string::npos;
+}
+
 void PdfStreamWriter::trailer_bytes(std::string_view bytes) {
   pending_.append(bytes);
   if (trailer_ == Trailer::seeking && adds_catalog_entries()) {
     // up to the catalog's first line, which is where its new entries go
-    const std::size_t at = pending_.find(kCatalog);
-    if (at == std::string::npos) {
-      const std::size_t keep = std::min(pending_.size(), kCatalog.size() - 1);
-      emit(std::string_view(pending_).substr(0, pending_.size() - keep));
-      pending_.erase(0, pending_.size() - keep);
-      return;
-    }
+    const std::size_t at = find_or_pass(kCatalog);
+    if (at == std::string::npos) return;
     emit(std::string_view(pending_).substr(0, at + kCatalog.size()));
     pending_.erase(0, at + kCatalog.size());
     trailer_ = Trailer::catalog;
@@ -249,14 +254,8 @@ void PdfStreamWriter::trailer_bytes(std::string_view bytes) {
     trailer_ = Trailer::table;
   }
   if (trailer_ == Trailer::seeking) {
-    const std::size_t at = pending_.find(kTableStart);
-    if (at == std::string::npos) {
-      // all but a possible start of kTableStart
-      const std::size_t keep = std::min(pending_.size(), kTableStart.size() - 1);
-      emit(std::string_view(pending_).substr(0, pending_.size() - keep));
-      pending_.erase(0, pending_.size() - keep);
-      return;
-    }
+    const std::size_t at = find_or_pass(kTableStart);
+    if (at == std::string::npos) return;
     const std::size_t table = at + std::string_view("endobj\n").size();
     emit(std::string_view(pending_).substr(0, table));
     table_cairo_ = in_ - (pending_.size() - table);

@@ -93,6 +93,9 @@ class PdfStreamWriter {
  private:
   void emit(std::string_view bytes);
   void trailer_bytes(std::string_view bytes);
+  // Where `mark` is in the bytes pending; when it is not there yet, they are written but for
+  // what could be its start, and npos.
+  std::size_t find_or_pass(std::string_view mark);
   void trailer_line(std::string_view line);
   bool adds_catalog_entries() const;
   std::size_t document_objects() const;  // the outline's and the labels' objects
