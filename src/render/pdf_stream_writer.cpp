@@ -18,8 +18,9 @@ namespace {
 // take ten digits too); the number is right-aligned, so the object starts at its first digit.
 constexpr std::size_t kField = 10;
 const std::string kBlankField(kField, ' ');
-// A page object's end as cairo writes it; the /Annots entry goes before it.
-constexpr std::string_view kPageEnd = ">>\nendobj\n";
+// A dictionary object's end as cairo writes it (a page's, the catalog's); a page's /Annots entry
+// goes before it.
+constexpr std::string_view kDictionaryEnd = ">>\nendobj\n";
 // The last object's end and the cross-reference table's start, as cairo writes them (binary
 // stream data that happened to hold these twelve bytes would be caught by the startxref check).
 constexpr std::string_view kTableStart = "endobj\nxref\n";
@@ -170,9 +171,9 @@ void PdfStreamWriter::end_page() {
   const std::string header = fmt::format(" 0 obj\n<< /Type /Page % {}\n", page_number_);
   const std::size_t at = page_bytes_.rfind(header);
   const std::size_t size = page_bytes_.size();
-  if (at == std::string::npos || size < kPageEnd.size() + 1 ||
-      std::string_view(page_bytes_).substr(size - kPageEnd.size()) != kPageEnd ||
-      page_bytes_[size - kPageEnd.size() - 1] != '\n' || page_bytes_.find("endobj", at) != size - 7)
+  if (at == std::string::npos || size < kDictionaryEnd.size() + 1 ||
+      std::string_view(page_bytes_).substr(size - kDictionaryEnd.size()) != kDictionaryEnd ||
+      page_bytes_[size - kDictionaryEnd.size() - 1] != '\n' || page_bytes_.find("endobj", at) != size - 7)
     fail(fmt::format("page {}: cairo's page object is not the last thing it wrote for the page", page_number_));
 
   if (wants_object_) {
@@ -189,13 +190,13 @@ void PdfStreamWriter::end_page() {
     page_bytes_.clear();
     return;
   }
-  emit(std::string_view(page_bytes_).substr(0, size - kPageEnd.size()));
+  emit(std::string_view(page_bytes_).substr(0, size - kDictionaryEnd.size()));
   std::string annots = "   /Annots [";
   const std::uint64_t annots_at = out_ + annots.size() + 1;
   for (std::size_t k = 0; k < page_links_.size(); ++k) annots.append(" ").append(kBlankField).append(" 0 R");
   annots += " ]\n";
   emit(annots);
-  emit(kPageEnd);
+  emit(kDictionaryEnd);
   const auto first = static_cast<std::uint32_t>(annotations_.size());
   for (const PageLink& link : page_links_) {
     annotations_.push_back(out_);
@@ -245,7 +246,7 @@ void PdfStreamWriter::trailer_bytes(std::string_view bytes) {
     const std::size_t table = at + std::string_view("endobj\n").size();
     catalog_rest_ = pending_.substr(0, table);
     if (catalog_rest_.find("endobj") != at || catalog_rest_.find(" obj\n") != std::string::npos ||
-        catalog_rest_.size() < kPageEnd.size() || catalog_rest_.compare(catalog_rest_.size() - kPageEnd.size(), kPageEnd.size(), kPageEnd) != 0)
+        catalog_rest_.size() < kDictionaryEnd.size() || catalog_rest_.compare(catalog_rest_.size() - kDictionaryEnd.size(), kDictionaryEnd.size(), kDictionaryEnd) != 0)
       fail("cairo's catalog is not its last object");
     if (catalog_rest_.find("/Outlines") != std::string::npos || catalog_rest_.find("/PageLabels") != std::string::npos)
       fail("cairo's catalog has an outline or page labels of its own");
