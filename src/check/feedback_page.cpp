@@ -275,7 +275,11 @@ render::Document feedback_document(const FileReport& file, const CheckOptions& o
       s.add(render::Paragraph{grading::rich_escape(fmt::format("{} — {} {}. {} {}. {} {}.", category_text(c.category, T),
                                                                T.get("check.page.input"), c.data, T.get("check.page.expected"),
                                                                c.expected, T.get("check.page.got"), c.got))});
-      if (c.figure) s.add(render::Figure{std::move(*c.figure), c.figure->panels.size() > 1 ? 0.8 : 0.5});
+      if (c.figure) {
+        // (the width read before the scene moves: a brace list evaluates left to right)
+        const double width = c.figure->panels.size() > 1 ? 0.8 : 0.5;
+        s.add(render::Figure{std::move(*c.figure), width});
+      }
       else s.add(render::Paragraph{grading::rich_escape(T.format("check.page.figure_not_drawn", {{"why", c.not_drawn}}))});
     }
     doc.sections.push_back(std::move(s));

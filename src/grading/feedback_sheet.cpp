@@ -128,9 +128,10 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
                                   : T.format("common.exercise_label", {{"n", ex.number}});
     section.add(render::Heading{T.format("common.exercise_heading", {{"label", label}, {"title", title}}), 1});
     if (diagrams) {
-      if (auto scene = diagrams->scene(*s.sheet, e)) {
-        overlay_answers(*scene, ex, marks, text);
-        section.add(render::Figure{std::move(*scene), scene->panels.size() > 1 ? 0.8 : 0.45});
+      // As large as the key draws it: the student's wrong points are read against the key's.
+      if (auto figure = diagrams->figure(*s.sheet, e)) {
+        overlay_answers(figure->scene, ex, marks, text);
+        section.add(std::move(*figure));
       }
     }
     for (std::size_t q = 0; q < marks.size(); ++q) {

@@ -48,11 +48,11 @@ std::optional<ExerciseInstance> KeyDiagrams::try_set(WorksheetSet& set, const Sh
   return std::nullopt;
 }
 
-std::optional<render::Scene> KeyDiagrams::scene(const SheetKey& sheet, std::size_t e) {
+std::optional<render::Figure> KeyDiagrams::figure(const SheetKey& sheet, std::size_t e) {
   auto inst = instance(sheet, e);
   if (!inst) return std::nullopt;
   for (auto& block : inst->key.blocks)
-    if (auto* figure = std::get_if<render::Figure>(&block)) return std::move(figure->scene);
+    if (auto* figure = std::get_if<render::Figure>(&block)) return std::move(*figure);
   return std::nullopt;
 }
 

@@ -12,7 +12,7 @@
 
 #include "exercises/worksheet.h"
 #include "grading/answer_key.h"
-#include "render/scene.h"
+#include "render/document.h"
 
 namespace epure::grading {
 
@@ -25,8 +25,9 @@ class KeyDiagrams {
   // The spec the set was drawn from, when the key carries one that reads (headings come from it).
   const WorksheetSpec* spec() const { return spec_ ? &*spec_ : nullptr; }
 
-  // The key's figure of exercise `e` of `sheet`, or nothing when it cannot be redrawn.
-  std::optional<render::Scene> scene(const SheetKey& sheet, std::size_t e);
+  // The key's figure of exercise `e` of `sheet` (its scene and the width the key gives it: a
+  // feedback sheet shows it as large as the key does), or nothing when it cannot be redrawn.
+  std::optional<render::Figure> figure(const SheetKey& sheet, std::size_t e);
   // The whole exercise drawn again (the student's section, the key's, its questions), in this
   // object's language, or nothing when it cannot be redrawn (platform exports read the sheet's
   // statement and diagrams from it).

@@ -100,9 +100,11 @@ class Placer {
     // The strokes' bounding boxes once: every candidate of every label is tested against all of
     // them (hundreds in a sphere's figure), and most are rejected on these alone.
     stroke_bounds_.reserve(obstacles.segments.size());
+    // (grown by the pen's half width, as the box is for each segment when it is tested)
     for (const auto& s : obstacles.segments)
-      stroke_bounds_.push_back({std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x),
-                                std::max(s.a.y, s.b.y)});
+      stroke_bounds_.push_back(inflate({std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x),
+                                        std::max(s.a.y, s.b.y)},
+                                       s.half_width));
   }
 
   Placement place(const LabelRequest& r) {
@@ -222,8 +224,12 @@ class Placer {
     for (std::size_t i = 0; i < stroke_bounds_.size(); ++i) {  // segment_hits_box, its bounds made
       const Box& sb = stroke_bounds_[i];
       if (sb.x_max < c.x_min || sb.x_min > c.x_max || sb.y_max < c.y_min || sb.y_min > c.y_max) continue;
+      const auto& s = obstacles_.segments[i];
       double t0 = 0, t1 = 0;
-      if (clip_segment(obstacles_.segments[i].a, obstacles_.segments[i].b, c, t0, t1)) return false;
+      // the box grown by the pen's half width: the segment's centre line then keeps the
+      // clearance from the ink's edge (a box's corner is held a little farther than a round
+      // pen needs, never nearer)
+      if (clip_segment(s.a, s.b, s.half_width > 0 ? inflate(c, s.half_width) : c, t0, t1)) return false;
     }
     return true;
   }
@@ -240,7 +246,7 @@ class Placer {
     }
     for (const auto& s : obstacles_.segments) {
       double t0 = 0, t1 = 0;
-      if (clip_segment(s.a, s.b, c, t0, t1)) {
+      if (clip_segment(s.a, s.b, inflate(c, s.half_width), t0, t1)) {
         p += kCrossWeight * (t1 - t0) * portable::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
       }
     }
@@ -257,9 +263,9 @@ class Placer {
 
 }  // namespace
 
-void Obstacles::add_polyline(const std::vector<P2>& pts, bool closed) {
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) segments.push_back({pts[i], pts[i + 1]});
-  if (closed && pts.size() > 2) segments.push_back({pts.back(), pts.front()});
+void Obstacles::add_polyline(const std::vector<P2>& pts, bool closed, double half_width) {
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) segments.push_back({pts[i], pts[i + 1], half_width});
+  if (closed && pts.size() > 2) segments.push_back({pts.back(), pts.front(), half_width});
 }
 
 bool boxes_overlap(const Box& a, const Box& b) {

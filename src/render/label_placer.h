@@ -16,6 +16,7 @@ namespace epure::render {
 struct Obstacles {
   struct Seg {
     P2 a, b;
+    double half_width = 0;  // half the pen's width: a label keeps its clearance from the ink
   };
   struct Disc {
     P2 c;
@@ -25,7 +26,7 @@ struct Obstacles {
   std::vector<Disc> discs;    // point marks
   std::vector<Box> boxes;     // texts already set (axis numbers are not here: they give way)
 
-  void add_polyline(const std::vector<P2>& pts, bool closed);
+  void add_polyline(const std::vector<P2>& pts, bool closed, double half_width = 0);
 };
 
 struct LabelRequest {
@@ -56,8 +57,10 @@ struct Placement {
   bool leader = false;  // placed far from its anchor: a leader line joins them
 };
 
-// Clearance kept between a label's box and anything else, points.
-inline constexpr double kLabelClearance = 1.2;
+// Clearance kept between a label's box and anything else (the ink of a stroke, a point's rim,
+// another label's box), points: 1.5 pt measured on the printed figure (figure_gaps_test), and
+// a little more, for the curves, which are polygons of kCurveSides here and Béziers on paper.
+inline constexpr double kLabelClearance = 1.8;
 
 // Places the labels in order (earlier ones have the better spots); each placed box becomes an
 // obstacle for the next. `area` is the panel: boxes stay inside it.

@@ -282,7 +282,7 @@ class PanelPainter {
       op.paint.fill_opacity = style_.fill_opacity;
     }
     strokes_[index(p.role)].push_back(std::move(op));
-    obstacles_.add_polyline(pts, p.closed);
+    obstacles_.add_polyline(pts, p.closed, rs.width / 2);
   }
 
   void item(const RightAngle& r) {
@@ -296,7 +296,7 @@ class PanelPainter {
     Path path;
     path.move_to(p1).line_to(corner).line_to(p2);
     strokes_[index(r.role)].push_back({std::move(path), mark_paint(r.role), std::nullopt});
-    obstacles_.add_polyline({p1, corner, p2}, false);
+    obstacles_.add_polyline({p1, corner, p2}, false, mark_paint(r.role).stroke->width / 2);
   }
 
   void item(const Tick& t) {
@@ -311,7 +311,7 @@ class PanelPainter {
     Path path;
     path.move_to(a).line_to(b);
     strokes_[index(t.role)].push_back({std::move(path), mark_paint(t.role), std::nullopt});
-    obstacles_.segments.push_back({a, b});
+    obstacles_.segments.push_back({a, b, mark_paint(t.role).stroke->width / 2});
     if (t.text) {
       pending(0, *t.text, style_.small_size, style_.of(t.role).text, at, n, h + style_.label_gap,
               *u);
@@ -335,7 +335,7 @@ class PanelPainter {
         strokes_[index(d.role)].push_back(
             {std::move(path), Paint{StrokeStyle{rs.colour, kExtensionWidth, {}}, std::nullopt, 1},
              std::nullopt});
-        obstacles_.segments.push_back({from, to});
+        obstacles_.segments.push_back({from, to, kExtensionWidth / 2});
       }
     }
     // Solid, with a head at each end pointing outwards.
@@ -355,7 +355,7 @@ class PanelPainter {
       shaft.move_to(a2).line_to(b2);
       strokes_[index(d.role)].push_back({std::move(shaft), paint, std::nullopt});
     }
-    obstacles_.segments.push_back({a2, b2});
+    obstacles_.segments.push_back({a2, b2, paint.stroke->width / 2});
     pending(2, d.text, style_.small_size, rs.text, mul(0.5, add(a2, b2)), out, style_.label_gap,
             dir);
   }
@@ -449,7 +449,7 @@ class PanelPainter {
     Path path;
     path.move_to(a).line_to(b);
     strokes_[index(role)].push_back({std::move(path), stroke_paint(role, dash), std::nullopt});
-    obstacles_.segments.push_back({a, b});
+    obstacles_.segments.push_back({a, b, style_.of(role).width / 2});
   }
 
   // A filled arrowhead with its tip at `tip`, pointing along unit `u`.
@@ -501,7 +501,7 @@ class PanelPainter {
       const double t = 2 * std::numbers::pi * k / kCurveSides;
       pts.push_back(at(std::cos(t), std::sin(t)));
     }
-    obstacles_.add_polyline(pts, true);
+    obstacles_.add_polyline(pts, true, style_.of(role).width / 2);
   }
 
   void axis_line(P2 from, P2 to, const Paint& paint) {
@@ -518,7 +518,7 @@ class PanelPainter {
         .line_to(add(base, mul(-kAxisArrow * 0.36, n)))
         .close();
     grid_.push_back({std::move(head), Paint{std::nullopt, style_.axis, 1}, std::nullopt});
-    obstacles_.segments.push_back({from, to});
+    obstacles_.segments.push_back({from, to, paint.stroke ? paint.stroke->width / 2 : 0});
   }
 
   void number(std::string text, P2 at, Anchor anchor, double size, int axis, long index) {
@@ -573,18 +573,21 @@ class PanelPainter {
           n.box.y_max > r.y_max) {
         return false;
       }
+      // As far from a label as a label keeps from anything; from a stroke's ink, half that (a
+      // number is small and grey, and a grid's numbers are many: most stay).
       const Box b = inflate(n.box, kLabelClearance / 2);
+      const Box from_labels = inflate(n.box, kLabelClearance);
       // Its type box (the font's ascent to descent) clear of the labels' type boxes too.
       const VerticalMetrics vm = vertical_metrics();
       const Box type{n.box.x_min, n.at.y - vm.ascent * n.size, n.box.x_max, n.at.y + vm.descent * n.size};
       for (const Placement& p : placed) {
-        if (boxes_overlap(b, p.box) || boxes_overlap(type, p.type)) return false;
+        if (boxes_overlap(from_labels, p.box) || boxes_overlap(type, p.type)) return false;
       }
       for (const auto& d : obstacles_.discs) {
         if (disc_hits_box(d.c, d.r, b)) return false;
       }
       for (const auto& s : obstacles_.segments) {
-        if (segment_hits_box(s.a, s.b, b)) return false;
+        if (segment_hits_box(s.a, s.b, inflate(b, s.half_width))) return false;
       }
       return true;
     };

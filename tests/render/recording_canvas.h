@@ -15,6 +15,7 @@ struct RecordingCanvas final : render::Canvas {
   struct Stroke {
     render::P2 a, b;
     std::string group;  // innermost group's class
+    double width = 0;   // the pen's width; 0 for a filled outline (an arrowhead)
   };
   struct Disc {
     render::P2 c;
@@ -47,15 +48,16 @@ struct RecordingCanvas final : render::Canvas {
   void push_clip(const render::Box&) override { ++clips; }
   void pop_clip() override { --clips; }
 
-  void path(const render::Path& path, const render::Paint&) override {
+  void path(const render::Path& path, const render::Paint& paint) override {
     // Label backgrounds and \vec arrows belong to the labels themselves.
     if (inside("labels") || inside("grid")) return;
+    const double width = paint.stroke ? paint.stroke->width : 0;
     render::P2 start{}, at{};
     for (const auto& c : path.cmds()) {
       switch (c.op) {
         case render::Path::Op::move: start = at = c.p[0]; break;
         case render::Path::Op::line:
-          strokes.push_back({at, c.p[0], group()});
+          strokes.push_back({at, c.p[0], group(), width});
           at = c.p[0];
           break;
         case render::Path::Op::cubic: {
@@ -67,13 +69,13 @@ struct RecordingCanvas final : render::Canvas {
                                    3 * u * t * t * c.p[1].x + t * t * t * c.p[2].x,
                                u * u * u * p0.y + 3 * u * u * t * c.p[0].y +
                                    3 * u * t * t * c.p[1].y + t * t * t * c.p[2].y};
-            strokes.push_back({at, p, group()});
+            strokes.push_back({at, p, group(), width});
             at = p;
           }
           break;
         }
         case render::Path::Op::close:
-          strokes.push_back({at, start, group()});
+          strokes.push_back({at, start, group(), width});
           at = start;
           break;
       }

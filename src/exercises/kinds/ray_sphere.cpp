@@ -135,6 +135,9 @@ struct RaySphere : ball::Family<3> {
     const P2 A{0, 0}, C{rs.t_proj, dd}, P{rs.t_proj, 0};
     render::Panel plane;
     std::vector<P2> pts = {A, {1, 0}, {C.x - d.r, C.y - d.r}, {C.x + d.r, C.y + d.r}, P};
+    // With an impact, the dimension of PI is set under the ray, where the circle's lower arc
+    // leaves a narrow lens: a row under the circle is room for its label.
+    if (rs.hit) pts.push_back({P.x, C.y - d.r - 0.6});
     plane.view = view_around(pts, 1.0, 5.0);
     plane.add(render::Grid{1, false});
     auto outward = [](P2 a, P2 b, P2 c) {
