@@ -116,6 +116,7 @@ struct DrawnField {
   std::string_view group;   // "P", "I", "N", "Ac"
   int panel = 0;            // which panel of the key's scene (0: the world frame)
   std::string_view anchor;  // for a vector: the group of the point it is drawn from ("I")
+  std::string_view name;    // as the key's figure names it ("\\vec{N}", "A_{c}"); empty: the group
 };
 
 class ExerciseKind {

@@ -55,7 +55,8 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
     const auto x = given_number(ex, marks, g + ".x"), y = given_number(ex, marks, g + ".y");
     if (!x || !y) continue;
     render::Panel& panel = scene.panels[static_cast<std::size_t>(d.panel)];
-    const std::string label = fmt::format("{} ({})", g, yours);
+    // named as the key's figure names it: "N⃗ (you)", not "N (you)" beside the key's N⃗
+    const std::string label = fmt::format("{} ({})", d.name.empty() ? d.group : d.name, yours);
     if (d.anchor.empty()) {
       const render::P2 at{*x, *y};
       if (!make_room(panel, at)) continue;

@@ -18,6 +18,9 @@ constexpr double kRings[] = {0, 3, 7, 12, 18, 26};
 // these farther rings are tried before a label is set over something; a label placed there gets
 // a leader line to its anchor, so that it still names its point.
 constexpr double kFarRings[] = {36, 48, 62};
+// A label whose box is farther than this from its anchor (beyond the request's gap), and nearer
+// to another point, gets a leader: a reader takes a label to name the point nearest to it.
+constexpr double kLeaderFrom = 8;
 // Rings from this index on try 16 directions instead of 8.
 constexpr std::size_t kFineRing = 2;
 // A box must stay this far inside its panel.
@@ -61,6 +64,12 @@ double overlap_area(const Box& a, const Box& b) {
 double outside_amount(const Box& b, const Box& area) {
   return std::max(0.0, area.x_min - b.x_min) + std::max(0.0, b.x_max - area.x_max) +
          std::max(0.0, area.y_min - b.y_min) + std::max(0.0, b.y_max - area.y_max);
+}
+
+double box_distance(P2 p, const Box& b) {
+  const double dx = std::max({b.x_min - p.x, 0.0, p.x - b.x_max});
+  const double dy = std::max({b.y_min - p.y, 0.0, p.y - b.y_max});
+  return portable::hypot(dx, dy);
 }
 
 P2 unit(P2 v) {
@@ -118,7 +127,19 @@ class Placer {
           found = b;
           return true;
         })) {
-      return accept(found, true);
+      // Set away from its point (an outer ring, past the other labels near it) and nearer to
+      // another point than to its own: a leader says which point it names, where one can be
+      // drawn clear of the other labels. (A tick's or a dimension's text slides along its
+      // stroke, which says what it names.)
+      const bool along = portable::hypot(r.along.x, r.along.y) > 0;
+      const double own = box_distance(r.anchor, found);
+      bool nearer_other = false;
+      for (const auto& d : obstacles_.discs)
+        nearer_other = nearer_other || (box_distance(d.c, found) < own - 1 && portable::hypot(d.c.x - r.anchor.x, d.c.y - r.anchor.y) > 1);
+      const bool far = !along && own > r.gap + kLeaderFrom && nearer_other && leader_clear(r.anchor, found);
+      Placement p = accept(found, true);
+      p.leader = far;
+      return p;
     }
     for (double ring : kFarRings) {
       for (const P2& t : kFine) {

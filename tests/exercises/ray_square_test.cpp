@@ -278,21 +278,25 @@ TEST_CASE("ray_square: every difficulty and branch, over many seeds") {
         for (const auto* section : {&inst.sheet, &inst.key})
           for (const auto& text : texts_of(*section)) CHECK(text.find("${") == std::string::npos);
 
-        // the key diagram: four sides, those in play highlighted, the others greyed
+        // the key diagram: four sides, the candidate sides highlighted (orange means a candidate
+        // side in every square key: from inside, where there is none, the sides the exit is
+        // sought on are drawn as the square), the others greyed
         const render::Figure* figure = nullptr;
         for (const auto& block : inst.key.blocks)
           if (auto* f = std::get_if<render::Figure>(&block)) figure = f;
         REQUIRE(figure != nullptr);
-        int highlighted = 0, muted = 0, normals = 0;
+        int highlighted = 0, muted = 0, plain = 0, normals = 0;
         for (const auto& item : figure->scene.panels.at(0).items) {
           if (auto* s = std::get_if<render::Segment>(&item)) {
             highlighted += s->role == render::Role::highlight;
             muted += s->role == render::Role::muted;
+            plain += s->role == render::Role::data;
           }
           if (auto* a = std::get_if<render::Arrow>(&item); a && a->role == render::Role::normal) ++normals;
         }
-        CHECK(highlighted == in_play);
-        CHECK(highlighted + muted == 4);
+        CHECK(highlighted == (rs.inside ? 0 : in_play));
+        CHECK(plain == (rs.inside ? in_play : 0));
+        CHECK(highlighted + plain + muted == 4);
         CHECK(normals == (rs.hit ? 1 : 0));
       }
 }

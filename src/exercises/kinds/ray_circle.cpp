@@ -26,7 +26,7 @@ struct RayCircle : ball::Family<2> {
   static constexpr double kPoints = 7;
   // radii: the default largest, and the largest that fits the drawing area [-1, 11] × [-1, 9]
   static constexpr double kMaxRadius = 4, kRadiusLimit = 5;
-  static std::vector<DrawnField> kDrawn() { return {{"I", 0, {}}, {"N", 0, "I"}}; }
+  static std::vector<DrawnField> kDrawn() { return {{"I", 0, {}}, {"N", 0, "I", "\\vec{N}"}}; }
 
   static std::optional<Data> draw(Rng& rng, const ExerciseContext& ctx, double r_lo, double r_hi) {
     const Difficulty level = ctx.spec.difficulty;

@@ -29,7 +29,7 @@ struct RaySquare : box::Family<2> {
   // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
   static constexpr double kPoints = 6;
   static constexpr std::string_view kWhat = "branch, corner and side margins, t range";
-  static std::vector<DrawnField> kDrawn() { return {{"I", 0, {}}, {"N", 0, "I"}}; }
+  static std::vector<DrawnField> kDrawn() { return {{"I", 0, {}}, {"N", 0, "I", "\\vec{N}"}}; }
 
   static std::map<std::string, double> constraints() {
     return {
@@ -109,12 +109,15 @@ struct RaySquare : box::Family<2> {
         const Vec2 n = normal_of(side.face);
         panel.add(render::Line{p2(geo::to_point(n)), p2(geo::to_point(n) + geo::perp(n)), Role::construction});
       }
-    // the four sides: those in play highlighted, the others greyed
+    // the four sides: the candidate sides highlighted, the others greyed. Orange means "a
+    // candidate side" in every square and rectangle key; from inside there is none (the key says
+    // so), and the sides the exit is sought on are drawn as the square itself.
     for (Face f : box::Space<2>::kFaces) {
       const bool in_play = std::any_of(sides.begin(), sides.end(), [&](const Side& x) { return x.face == f; });
       const Vec2 n = normal_of(f), along = geo::perp(n);
       const Point2 mid = geo::to_point(n);
-      panel.add(render::Segment{p2(mid - along), p2(mid + along), in_play ? Role::highlight : Role::muted});
+      const Role role = !in_play ? Role::muted : rs.inside ? Role::data : Role::highlight;
+      panel.add(render::Segment{p2(mid - along), p2(mid + along), role});
     }
     panel.add(render::Ray{p2(d.A), p2(d.u), Role::data});
     panel.add(render::Arrow{p2(d.A), p2(d.A + uh), Role::construction});

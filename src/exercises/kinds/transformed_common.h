@@ -310,7 +310,7 @@ class TransformedKind final : public MethodKind<Kind> {
     return {{"hit", 2}, {"miss", 1}, {"inside", 1}};
   }
   std::map<std::string, double> default_constraints() const override { return common_constraints(); }
-  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I"}, {"Ac", 1, {}}, {"uc", 1, "Ac"}}; }
+  std::vector<DrawnField> drawn() const override { return {{"I", 0, {}}, {"N", 0, "I", "\\vec{N}"}, {"Ac", 1, {}, "A_{c}"}, {"uc", 1, "Ac", "\\vec{u}_{c}"}}; }
 
   ExerciseInstance make(Rng& rng, const ExerciseContext& ctx) const override {
     const Limits lim = limits(ctx, *this);
