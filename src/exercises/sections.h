@@ -18,6 +18,11 @@ inline render::P2 p2(geo::Vec2 v) { return {v.x, v.y}; }
 render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size = 4,
                         double step = 1);
 
+// Says in the scene's legend what its highlighted strokes or areas mean (`text_key`: "a
+// candidate side"), when any is drawn, and only then: orange keeps one meaning in a figure type.
+void legend_highlight(render::Scene& scene, const ExerciseContext& ctx, std::string_view text_key,
+                      render::LegendEntry::Swatch swatch);
+
 // The two sections every exercise has, begun with their headings.
 render::Section begin_sheet_section(const ExerciseContext& ctx, std::string_view title_key);
 render::Section begin_key_section(const ExerciseContext& ctx, std::string_view title_key);

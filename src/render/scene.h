@@ -143,13 +143,24 @@ struct Panel {
   }
 };
 
+// One entry of a figure's legend: what a role's colour means in this figure, where it means
+// something the reader could not guess (orange: a candidate side), shown as the role draws it.
+struct LegendEntry {
+  enum class Swatch { line, area };
+  Role role;
+  Swatch swatch = Swatch::line;
+  RichText text;
+};
+
 // A diagram: one panel, or several side by side (the world and canonical frames of an ellipse),
-// with a note between consecutive panels (the transform that maps one onto the next).
+// with a note between consecutive panels (the transform that maps one onto the next), and a
+// small legend under it all when a colour carries a meaning.
 struct Scene {
   std::string title;        // <title> of the SVG: short, plain text
   std::string description;  // <desc>: what the figure shows, for screen readers
   std::vector<Panel> panels;
   std::vector<std::string> links;  // RichText between panel i and i+1 (size panels − 1 or 0)
+  std::vector<LegendEntry> legend;
 };
 
 }  // namespace epure::render

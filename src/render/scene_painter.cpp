@@ -837,8 +837,57 @@ SceneLayout layout_scene(const Scene& scene, double x, double y, double width, c
     out.notes = {x, y + top, x + width, y + top + lines * style.small_size * kLineSpacing};
     out.height = out.notes.y_max - y;
   }
+  if (!scene.legend.empty()) {
+    const double top = out.height + kCaptionGap;
+    out.legend = {x, y + top, x + width, y + top + style.small_size * kLineSpacing};
+    out.height = out.legend.y_max - y;
+  }
   return out;
 }
+
+namespace {
+
+// The legend: its entries on one line, centred under the figure, each a swatch drawn as its
+// role draws (a stroke, or a shaded square) and its words.
+constexpr double kSwatch = 14;       // a swatch's width
+constexpr double kSwatchGap = 3;     // between a swatch and its words
+constexpr double kEntryGap = 12;     // between two entries
+
+void paint_legend(Canvas& canvas, const Scene& scene, const Box& at, const Style& style) {
+  const double size = style.small_size;
+  std::vector<std::vector<TextRun>> texts;
+  double total = 0;
+  for (const LegendEntry& e : scene.legend) {
+    texts.push_back(parse_rich_text(e.text));
+    total += kSwatch + kSwatchGap + text_extent(texts.back(), size).width;
+  }
+  total += kEntryGap * static_cast<double>(scene.legend.size() - 1);
+  const double cap = vertical_metrics().cap_height * size;
+  const double baseline = at.y_min + cap + (at.height() - cap) / 2 - 1;
+  const double mid = baseline - cap / 2;
+  double x = (at.x_min + at.x_max - total) / 2;
+  canvas.begin_group("legend");
+  for (std::size_t i = 0; i < scene.legend.size(); ++i) {
+    const LegendEntry& e = scene.legend[i];
+    const RoleStyle& rs = style.of(e.role);
+    Path swatch;
+    if (e.swatch == LegendEntry::Swatch::line) {
+      swatch.move_to({x, mid}).line_to({x + kSwatch, mid});
+      canvas.path(swatch, Paint{StrokeStyle{rs.colour, rs.width, rs.dash}, std::nullopt, 1});
+    } else {
+      const double h = cap * 1.2;
+      swatch.move_to({x, mid - h / 2}).line_to({x + kSwatch, mid - h / 2}).line_to({x + kSwatch, mid + h / 2})
+          .line_to({x, mid + h / 2}).close();
+      canvas.path(swatch, Paint{StrokeStyle{rs.colour, std::min(rs.width, 0.9), {}}, rs.colour, style.fill_opacity});
+    }
+    x += kSwatch + kSwatchGap;
+    canvas.text(TextLine{{x, baseline}, Anchor::start, size, texts[i], style.caption});
+    x += text_extent(texts[i], size).width + kEntryGap;
+  }
+  canvas.end_group();
+}
+
+}  // namespace
 
 double scene_height(const Scene& scene, double width, const Style& style) {
   return layout_scene(scene, 0, 0, width, style).height;
@@ -867,6 +916,7 @@ SceneReport paint_scene(Canvas& canvas, const Scene& scene, const SceneLayout& l
   bool any_text = false;
   for (const Panel& p : scene.panels) any_text = any_text || !p.caption.empty();
   for (const std::string& l : scene.links) any_text = any_text || !l.empty();
+  if (!scene.legend.empty()) paint_legend(canvas, scene, layout.legend, style);
   if (!any_text) return report;
 
   canvas.begin_group("captions");

@@ -44,6 +44,7 @@ struct SceneLayout {
   // under the panels' captions instead (it would not fit the gap on one line).
   std::vector<bool> link_on_arrow;
   Box notes;                  // those links' lines, across the whole scene (empty: none)
+  Box legend;                 // the legend's one line, under everything (empty: none)
   double height = 0;
 };
 

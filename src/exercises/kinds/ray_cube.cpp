@@ -180,6 +180,13 @@ struct RayCube : box::Family<3> {
           break;
         }
     }
+    // Orange means a candidate face in every cube key: from inside there is none (the key says
+    // so), and the faces the exit is sought on are shaded in the construction's colour.
+    if (rc.inside)
+      for (render::Panel& panel : s.panels)
+        for (render::Item& item : panel.items)
+          if (auto* p = std::get_if<render::Polygon>(&item); p && p->role == Role::highlight) p->role = Role::construction;
+    legend_highlight(s, ctx, "ray_cube.figure.legend.candidate", render::LegendEntry::Swatch::area);
     return s;
   }
 };

@@ -135,6 +135,7 @@ struct RaySquare : box::Family<2> {
       panel.add(render::Label{T.get("ray_square.figure.N"), p2(I + rs.hit->N), render::Side::auto_, Role::normal});
     }
     s.panels.push_back(std::move(panel));
+    legend_highlight(s, ctx, "ray_square.figure.legend.candidate", render::LegendEntry::Swatch::line);
     return s;
   }
 };

@@ -291,6 +291,8 @@ render::Scene key_scene(const ExerciseContext& ctx, const Data& d, Shape shape, 
   scene.panels.push_back(std::move(world));
   scene.panels.push_back(std::move(canonical));
   scene.links.push_back(link_text(ctx, d, shape));
+  if (const std::string legend = key(ctx, "figure.legend.candidate"); ctx.texts.has(legend))
+    legend_highlight(scene, ctx, legend, render::LegendEntry::Swatch::line);
   return scene;
 }
 
