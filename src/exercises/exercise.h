@@ -44,6 +44,10 @@ struct ToleranceRule {
   } kind = Kind::exact;
   double rel = 0;
   double abs = 0;
+  // Follow-through: how far a value computed from the student's own earlier answers may lie from
+  // what those answers give, as they are written (to `decimals` decimals) while the student went
+  // on with 4 significant digits (method.h: follow_tolerances). 0: abs.
+  double follow_abs = 0;
   std::string why;  // how the numbers were derived, for the key
 };
 
@@ -177,6 +181,13 @@ class ExerciseKind {
   virtual std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data,
                                                                  const method::GivenAnswers* given,
                                                                  std::string_view mistake, int decimals) const = 0;
+  // The method as a student works it by the sheet's instruction: each step carried to
+  // method::kCarriedDigits significant digits (the answers not yet rounded for writing), going
+  // on from the student's own carried answers where `given` has them. What the tolerances (and
+  // follow-through's) must accept; tests/exercises/tolerance_property_test.cpp and
+  // tests/grading/kind_model_test.cpp hold them to it.
+  virtual std::vector<method::Recorded<method::Traced>> evaluate_as_told(const std::any& data, int decimals,
+                                                                         const method::GivenAnswers* given = nullptr) const = 0;
 };
 
 // All kinds, in the course's order; nullptr for an unknown name.

@@ -86,6 +86,7 @@ void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first) {
       if (q.tolerance.kind != ToleranceRule::Kind::exact) {
         if (q.tolerance.kind == ToleranceRule::Kind::isclose) w.field("rel", q.tolerance.rel);
         w.field("abs", q.tolerance.abs);
+        if (q.tolerance.follow_abs > 0) w.field("follow_abs", q.tolerance.follow_abs);
       }
       w.field("why", std::string_view(q.tolerance.why));
       w.end_object();

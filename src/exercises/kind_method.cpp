@@ -233,7 +233,8 @@ Questions make_questions(const ExerciseContext& ctx, std::span<const method::Que
                          const CoreAnswers& core) {
   // the tolerance of each numeric answer coordinate, by field (zero without the dual run)
   const std::vector<double> tol = dual ? method::tolerances(*dual) : std::vector<double>{};
-  auto tolerance_of = [&](std::string_view field) -> std::pair<double, double> {
+  const std::vector<double> follow = dual ? method::tolerances(*dual, true) : std::vector<double>{};
+  auto tolerance_in = [&](const std::vector<double>& tol, std::string_view field) -> std::pair<double, double> {
     if (!dual) return {0.0, 0.0};
     std::size_t k = 0;
     for (const auto& a : dual->answers()) {
@@ -242,6 +243,7 @@ Questions make_questions(const ExerciseContext& ctx, std::span<const method::Que
     }
     throw std::logic_error(fmt::format("method: no tolerance for '{}'", field));
   };
+  auto tolerance_of = [&](std::string_view field) { return tolerance_in(tol, field); };
   Questions q(ctx);
   for (const auto& d : decls) q.default_weight(d.field, d.weight);
   // in the sheet's order: the kind's declaration, not the method's
@@ -250,10 +252,18 @@ Questions make_questions(const ExerciseContext& ctx, std::span<const method::Que
     if (!c) continue;
     const auto* mine = run.answer(d.field);
     switch (d.type) {
-      case AnswerType::number: q.number(d.field, c->x, tolerance_of(d.field).first, mine->x.e); break;
+      case AnswerType::number:
+        q.number(d.field, c->x, tolerance_of(d.field).first, mine->x.e);
+        if (dual) q.follow(d.field, tolerance_in(follow, d.field).first);
+        break;
       case AnswerType::point: {
         const auto [tx, ty] = tolerance_of(d.field);
         q.point(d.field, {c->x, c->y}, tx, ty, mine->x.e, mine->y.e);
+        if (dual) {
+          const auto [fx, fy] = tolerance_in(follow, d.field);
+          q.follow(method::coordinate_name(d.field, 'x'), fx);
+          q.follow(method::coordinate_name(d.field, 'y'), fy);
+        }
         break;
       }
       case AnswerType::boolean: q.boolean(d.field, c->boolean); break;

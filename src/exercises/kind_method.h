@@ -270,6 +270,14 @@ class MethodKind : public ExerciseKind {
     Kind::method(run, std::any_cast<const Data&>(data));
     return run.answers();
   }
+  std::vector<method::Recorded<method::Traced>> evaluate_as_told(const std::any& data, int decimals,
+                                                                 const method::GivenAnswers* given = nullptr) const override {
+    method::RunOptions options{Kind::kQuestions, decimals, {}, given};
+    options.carry_rounded = true;
+    method::Run<method::Traced> run(options);
+    Kind::method(run, std::any_cast<const Data&>(data));
+    return run.answers();
+  }
 
   // The contract's kind of the instance: the kind's own name, unless it says otherwise (the
   // preamble in space is the contract's `vectors` with three components).
@@ -287,6 +295,14 @@ class MethodKind : public ExerciseKind {
     SchemaReader r(instance);
     visit_schema(r, d);
     return d;
+  }
+
+  // Whether the student's carried steps keep every answer within its share (method.h:
+  // carried_within): the draws of the long chains reject the data where they do not.
+  static bool answers_well_conditioned(const Data& d, int decimals) {
+    method::Run<method::Dual> dual({Kind::kQuestions, decimals});
+    Kind::method(dual, d);
+    return method::carried_within(dual);
   }
 
   // The method's exact run alone (cheap enough for a draw's constraints: "r² − d² a square").

@@ -447,14 +447,56 @@ inline bool on_decimal_grid(double x, int decimals) {
   return is_whole(scaled);
 }
 
+// What the sheet tells a student: write each answer rounded to `decimals` decimals, but carry on
+// with every value (answers and intermediate results alike) to kCarriedDigits significant
+// digits. Two decimals alone would not do: û ≈ (0,12 ; 0,99) is 4 % off in its first
+// coordinate, and a long chain (the ellipse's normal) then lands anywhere within 70 % of the
+// value; four significant digits keep every carried value within 0,05 %.
+inline constexpr int kCarriedDigits = 4;
+
+// Half a unit in the last place of x carried to kCarriedDigits significant digits: how far a
+// student's rounding moves it (0 for x = 0, which is written as it is).
+inline double carried_half_step(double x) {
+  if (x == 0 || !std::isfinite(x)) return 0;
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+  return 0.5 * std::pow(10.0, e - (kCarriedDigits - 1));
+}
+
+// x as a student carries it: rounded half away from zero to kCarriedDigits significant digits.
+// The step 10^k is taken as a power of ten by division when negative, so that 0,1234 stays
+// 1234/10000 rather than 1234·0,0001 (one rounding less).
+inline double carried(double x) {
+  if (x == 0 || !std::isfinite(x)) return x;
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+  const int k = e - (kCarriedDigits - 1);
+  if (k >= 0) {
+    const double step = std::pow(10.0, k);
+    return std::round(x / step) * step;
+  }
+  const double scale = std::pow(10.0, -k);
+  return std::round(x * scale) / scale;
+}
+
+// How many decimals show x carried as the sheet says: kCarriedDigits significant digits, and
+// never fewer decimals than the answers are written with (123,46, not 123,5). The key's worked
+// steps show their values so, that a student can follow them as told.
+inline int carried_decimals(double x, int decimals) {
+  if (x == 0 || !std::isfinite(x)) return decimals;
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+  return std::clamp(kCarriedDigits - 1 - e, decimals, 12);
+}
+
 struct RunOptions {
   RunOptions(std::span<const QuestionDecl> questions_, int decimals_, std::string_view mistake_ = {},
              const GivenAnswers* given_ = nullptr)
       : questions(questions_), decimals(decimals_), mistake(mistake_), given(given_) {}
   std::span<const QuestionDecl> questions;  // the kind's declared questions (for deps bits)
-  int decimals = 2;                          // what the student rounds to (Dual)
+  int decimals = 2;                          // what the student rounds answers to
   std::string_view mistake;                  // the named mistake switched on, or none
   const GivenAnswers* given = nullptr;       // the student's answers (Traced)
+  // Traced: each rounded step carried as the sheet says (`carried`), as a student computes;
+  // what the tolerances must accept (tests/exercises/tolerance_property_test.cpp)
+  bool carry_rounded = false;
 };
 
 // One evaluation of a method. Answers and steps are recorded in the order the method meets them.
@@ -482,12 +524,13 @@ class Run {
   // ---- steps: an intermediate the student writes down rounded (the tolerances follow its
   // rounding), or one the key shows as it is
   Num round(std::string_view id, Num x) {
-    if constexpr (std::is_same_v<Num, Dual>) x = seed(x);
+    x = rounded(x, bit(id) != 0);
     note(id, x);
     return x;
   }
   Vec round(std::string_view id, Vec p) {
-    if constexpr (std::is_same_v<Num, Dual>) p = {seed(p.x), seed(p.y)};
+    const bool written = bit(id) != 0;
+    p = {rounded(p.x, written), rounded(p.y, written)};
     note(id, p);
     return p;
   }
@@ -610,6 +653,10 @@ class Run {
   // The mistakes the method met on this road.
   const std::vector<std::string_view>& mistakes_met() const { return codes_; }
   int rounded_count() const { return next_slot_; }
+  // How far the student's rounding of slot k moves it (Dual).
+  double slot_half_step(int k) const { return slot_half_step_.at(static_cast<std::size_t>(k)); }
+  // Whether slot k is also an answer the student writes (to `decimals` decimals).
+  bool slot_written(int k) const { return slot_written_.at(static_cast<std::size_t>(k)); }
   const RunOptions& options() const { return o_; }
 
   const Recorded<Num>* answer(std::string_view field) const { return find(answers_, field); }
@@ -630,11 +677,20 @@ class Run {
     return 0;
   }
   static std::optional<exact::Surd> rational(double x);
-  Dual seed(Dual x) {
-    // a value already on the decimal grid is written as it is: rounding does not move it
-    if (on_decimal_grid(x.v, o_.decimals)) return x;
-    if (next_slot_ >= kMaxRounded) throw std::logic_error("method: too many rounded intermediates");
-    x.d[next_slot_++] += 1;
+  // A step as the student carries it: under Dual a new slot (its derivative, how far its
+  // rounding moves it, and whether it is also an answer the student writes), under Traced with
+  // carry_rounded the carried value itself.
+  Num rounded(Num x, bool written) {
+    if constexpr (std::is_same_v<Num, Dual>) {
+      // a value already on the decimal grid is written as it is: rounding does not move it
+      if (on_decimal_grid(x.v, o_.decimals)) return x;
+      if (next_slot_ >= kMaxRounded) throw std::logic_error("method: too many rounded intermediates");
+      slot_half_step_[static_cast<std::size_t>(next_slot_)] = carried_half_step(x.v);
+      slot_written_[static_cast<std::size_t>(next_slot_)] = written;
+      x.d[next_slot_++] += 1;
+    } else if constexpr (std::is_same_v<Num, Traced>) {
+      if (o_.carry_rounded && !on_decimal_grid(x.v, o_.decimals)) x.v = carried(x.v);
+    }
     return x;
   }
 
@@ -643,6 +699,8 @@ class Run {
   std::vector<Told> told_;
   std::vector<std::string_view> codes_;
   int next_slot_ = 0;
+  std::array<double, kMaxRounded> slot_half_step_{};
+  std::array<bool, kMaxRounded> slot_written_{};
 };
 
 // The exact rational a datum denotes, when it has at most 6 decimals (data on a grid always do).
@@ -656,15 +714,25 @@ std::optional<exact::Surd> Run<Num>::rational(double x) {
 
 // ---------------------------------------------------------------------------------------------
 // Tolerances from a Dual run: for each numeric answer coordinate, in the order of answers(),
-// 1.5·(δ + Σ_k |∂a/∂q_k|·δ) with δ = ½·10^−decimals. The factor 1.5 leaves room for a student
-// who rounds a little differently from the key (truncates, or rounds twice).
-inline std::vector<double> tolerances(const Run<Dual>& run) {
+// δ + 1.5·Σ_k |∂a/∂q_k|·δ_k, with δ = ½·10^−decimals the answer's own rounding as written and
+// δ_k how far carrying q_k to kCarriedDigits significant digits moves it. The factor 1.5 covers
+// the second-order terms the derivatives leave out and a student who rounds a step twice; it is
+// not applied to δ (only a relative 10⁻⁹, so that 0,13 for 0,125 is not lost to binary
+// rounding), so that an answer of 0,1 written to two decimals keeps its 5 %.
+//
+// With `as_written`, the steps that are answers count at their written rounding δ instead: the
+// tolerance of follow-through, where grading goes on from the answers as the student wrote them
+// while the student went on with more digits.
+inline std::vector<double> tolerances(const Run<Dual>& run, bool as_written = false) {
   const double delta = 0.5 * std::pow(10.0, -run.options().decimals);
   std::vector<double> out;
   auto one = [&](const Dual& x) {
-    double total = delta;
-    for (int k = 0; k < run.rounded_count(); ++k) total += std::abs(x.d[k]) * delta;
-    out.push_back(1.5 * total);
+    double carried_error = 0;
+    for (int k = 0; k < run.rounded_count(); ++k) {
+      const double step = as_written && run.slot_written(k) ? std::max(delta, run.slot_half_step(k)) : run.slot_half_step(k);
+      carried_error += std::abs(x.d[k]) * step;
+    }
+    out.push_back(delta * (1 + 1e-9) + 1.5 * carried_error);
   };
   for (const auto& a : run.answers()) {
     if (a.type == AnswerType::number) one(a.x);
@@ -674,6 +742,26 @@ inline std::vector<double> tolerances(const Run<Dual>& run) {
     }
   }
   return out;
+}
+
+// Whether the steps a student carries move no answer of |v| ≥ 0.1 by more than kMaxCarriedShare
+// of it (beyond the answer's own rounding, which at 0.1 is itself 5 %). A figure where they do is
+// ill-conditioned (a ray nearly tangent, a normal from a nearly flat ellipse): its tolerance
+// would not tell a right answer from a slip, so the draws reject it.
+inline constexpr double kMaxCarriedShare = 0.05;
+inline bool carried_within(const Run<Dual>& run) {
+  const double own = 0.5 * std::pow(10.0, -run.options().decimals);
+  const std::vector<double> tol = tolerances(run);
+  std::size_t k = 0;
+  auto ok = [&](double v) {
+    const double t = tol.at(k++);
+    return std::abs(v) < 0.1 || t - own * (1 + 1e-9) <= kMaxCarriedShare * std::abs(v);
+  };
+  for (const auto& a : run.answers()) {
+    if (a.type == AnswerType::number && !ok(a.x.v)) return false;
+    if (a.type == AnswerType::point && !(ok(a.x.v) & ok(a.y.v))) return false;
+  }
+  return true;
 }
 
 }  // namespace epure::method

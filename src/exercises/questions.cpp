@@ -92,6 +92,18 @@ void Questions::number(std::string_view field, double value, double abs_toleranc
   lines_.push_back({id(field), prompt(field), answer_text(value, exact)});
 }
 
+void Questions::follow(std::string_view field, double follow_abs) {
+  for (auto& q : questions_)
+    if (q.field == field) {
+      const std::string_view group = q.point_group.empty() ? std::string_view(q.field) : std::string_view(q.point_group);
+      const QuestionSpec* spec = spec_for(group);
+      if (spec && spec->abs) return;
+      if (q.tolerance.kind == ToleranceRule::Kind::isclose && follow_abs > q.tolerance.abs)
+        q.tolerance.follow_abs = follow_abs;
+      return;
+    }
+}
+
 void Questions::point(std::string_view field, geo::Point2 value, double abs_x, double abs_y,
                       std::optional<exact::Surd> exact_x, std::optional<exact::Surd> exact_y) {
   const QuestionSpec* spec = spec_for(field);

@@ -32,6 +32,9 @@ class Questions {
               std::optional<exact::Surd> exact_y = std::nullopt) {
     point(field, {value.x, value.y}, abs_x, abs_y, exact_x, exact_y);
   }
+  // The follow-through tolerance of a numeric answer asked before ("t", "I.x"): kept where it is
+  // wider than the answer's own and the spec does not set the tolerance.
+  void follow(std::string_view field, double follow_abs);
   void boolean(std::string_view field, bool value);
   // One of `choices` (contract words: "before", "miss", …), shown localised.
   void choice(std::string_view field, std::string_view value, const std::vector<std::string>& choices);

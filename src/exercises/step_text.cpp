@@ -2,12 +2,21 @@
 
 #include <fmt/format.h>
 
+#include "exercises/method.h"
+
 #include <cmath>
 
 namespace epure::kinds {
 
+namespace {
+// A step's value as a student carries it (method.h: carried_decimals), not as an answer is written.
+std::string carried_text(const ExerciseContext& ctx, double value) {
+  return ctx.numbers.rounded(value, method::carried_decimals(value, ctx.decimals));
+}
+}  // namespace
+
 std::string step_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& e) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
+  const std::string rounded = carried_text(ctx, value);
   if (!e) return rounded;
   try {
     const std::string pretty = e->pretty();
@@ -39,7 +48,7 @@ std::string shown(const ExerciseContext& ctx, double value, const std::optional<
     } catch (const exact::ExactOverflow&) {
     }
   }
-  return ctx.numbers.rounded(value, ctx.decimals);
+  return carried_text(ctx, value);
 }
 
 std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
@@ -49,7 +58,7 @@ std::string shown_point(const ExerciseContext& ctx, geo::Point2 p,
 }
 
 std::string equals_value(const ExerciseContext& ctx, double value, const std::optional<exact::Surd>& exact) {
-  const std::string rounded = ctx.numbers.rounded(value, ctx.decimals);
+  const std::string rounded = carried_text(ctx, value);
   std::string pretty;
   if (exact) {
     try {
@@ -79,7 +88,7 @@ std::string equals_point(const ExerciseContext& ctx, geo::Point2 p, const std::o
                          const std::optional<exact::Surd>& ey) {
   if (terminates_within(ex, ctx.decimals) && terminates_within(ey, ctx.decimals))
     return fmt::format("= {}", ctx.numbers.point(p.x, p.y, ctx.decimals));
-  return fmt::format("≈ {}", ctx.numbers.rounded_point(p.x, p.y, ctx.decimals));
+  return fmt::format("≈ ({}{} {})", carried_text(ctx, p.x), ctx.numbers.decimal_comma ? "\u00a0;" : ",", carried_text(ctx, p.y));
 }
 
 }  // namespace epure::kinds

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "exercises/method.h"
+
 namespace epure {
 
 ToleranceRule isclose_rule(double abs, int decimals, const QuestionSpec* spec) {
@@ -9,9 +11,9 @@ ToleranceRule isclose_rule(double abs, int decimals, const QuestionSpec* spec) {
   r.kind = ToleranceRule::Kind::isclose;
   r.rel = kGradingRel;
   r.abs = abs;
-  r.why = fmt::format("answers rounded to {} decimals: the rounding of the result and of each "
-                      "intermediate value propagated through the method",
-                      decimals);
+  r.why = fmt::format("answer written to {} decimals, each step carried to {} significant digits: the "
+                      "answer's own rounding plus each carried step's propagated through the method",
+                      decimals, method::kCarriedDigits);
   if (spec && spec->abs) {
     r.abs = *spec->abs;
     r.why = "absolute tolerance set by the spec";

@@ -1,9 +1,10 @@
 #pragma once
-// The tolerance rules of the questions. A student rounds what the statement tells them to (the
-// intermediate results of the method, to `decimals` decimals) and the final answer; the answer
-// then moves by up to δ for its own rounding plus |∂answer/∂q|·δ for each intermediate q rounded
-// on the way, with δ = ½·10^−decimals. The method's dual-number run gives those derivatives
-// (method.h: Dual; kind_method.cpp's make_questions); this file writes the rules.
+// The tolerance rules of the questions. A student does what the statement tells them: carries
+// every step to method::kCarriedDigits significant digits and writes each answer rounded to
+// `decimals` decimals; the answer then moves by up to δ = ½·10^−decimals for its own rounding
+// plus |∂answer/∂q|·δ_q for each step q carried on the way (method.h: tolerances). The method's
+// dual-number run gives those derivatives (kind_method.cpp's make_questions); this file writes
+// the rules.
 #include <string>
 
 #include "exercises/exercise.h"

@@ -95,7 +95,8 @@ ToleranceRule read_rule(const json& q, const Where& where) {
   else where.fail(fmt::format("unknown tolerance rule '{}' (exact, isclose or distance)", rule));
   if (r.kind == ToleranceRule::Kind::isclose) r.rel = number_member(t, "rel", where);
   if (r.kind != ToleranceRule::Kind::exact) r.abs = number_member(t, "abs", where);
-  if (!(r.rel >= 0 && r.abs >= 0)) where.fail("tolerances must be ≥ 0");
+  if (r.kind != ToleranceRule::Kind::exact && t.contains("follow_abs")) r.follow_abs = number_member(t, "follow_abs", where);
+  if (!(r.rel >= 0 && r.abs >= 0 && r.follow_abs >= 0)) where.fail("tolerances must be ≥ 0");
   if (auto why = t.find("why"); why != t.end() && why->is_string()) r.why = why->get<std::string>();
   return r;
 }
@@ -332,6 +333,7 @@ SheetKey read_sheet_json(const json& s, std::string_view source) {
       h.points = q.points;
       h.rel = q.rule.rel;
       h.abs = q.rule.abs;
+      h.follow_abs = q.rule.follow_abs;
       if (q.type == AnswerType::choice) {
         const auto token = read_word(q.word);
         h.word = token && *token == q.word ? token->data() : nullptr;  // null: no answer reads as it

@@ -62,6 +62,7 @@ struct HotQuestion {
   double number = 0;
   double points = 1;
   double rel = 0, abs = 0;
+  double follow_abs = 0;  // 0: abs (key.json's tolerance.follow_abs)
   const char* word = nullptr;  // the contract word's static spelling (words.h), compared by address
   int partner = -1;
   std::uint32_t field_hash = 0;

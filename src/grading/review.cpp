@@ -61,6 +61,14 @@ bool within(const HotQuestion& q, double given, double target, double factor) {
   return within_rule(q.rule, q.rel, q.abs, given, target, factor);
 }
 
+// Follow-through: `target` is what the student's written answers give, and the student went on
+// with more digits than they wrote (method.h: the sheet's instruction); the key's follow_abs
+// covers that, where it is wider than the match.
+bool follows_within(const HotQuestion& q, double given, double target) {
+  return within(q, given, target, kMatchFactor) ||
+         (q.follow_abs > 0 && within_rule(q.rule, 0, q.follow_abs, given, target, 1.0));
+}
+
 }  // namespace
 
 bool within(const QuestionKey& q, double given, double target, double factor) {
@@ -194,7 +202,7 @@ bool ExerciseReview::follow(std::string_view field, double value, std::string_vi
   const int i = key_.find(field);
   if (!open_at(i)) return false;
   const auto* m = readable_at(i, AnswerType::number);
-  if (!m || !within(key_.hot[i], m->given.number, value, kMatchFactor) || !some_wrong(from)) return false;
+  if (!m || !follows_within(key_.hot[i], m->given.number, value) || !some_wrong(from)) return false;
   credit(i, from, code, value);
   return true;
 }
@@ -233,14 +241,17 @@ bool ExerciseReview::follow_point(std::string_view group, std::span<const double
   if (first.rule == ToleranceRule::Kind::distance) {
     // the point as a whole
     double abs = 0;
-    for (std::size_t k = 0; k < value.size(); ++k) abs = std::max(abs, key_.hot[static_cast<std::size_t>(at[k])].abs);
-    if (!(distance_to(marks_, at, value) <= kMatchFactor * abs)) return false;
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const HotQuestion& q = key_.hot[static_cast<std::size_t>(at[k])];
+      abs = std::max({abs, kMatchFactor * q.abs, q.follow_abs});
+    }
+    if (!(distance_to(marks_, at, value) <= abs)) return false;
     for (std::size_t k = 0; k < value.size(); ++k) fit[k] = open_at(at[k]);
   } else {
     bool any = false;
     for (std::size_t k = 0; k < value.size(); ++k) {
       const std::size_t i = static_cast<std::size_t>(at[k]);
-      fit[k] = open_at(at[k]) && within(key_.hot[i], marks_[i].given.number, value[k], kMatchFactor);
+      fit[k] = open_at(at[k]) && follows_within(key_.hot[i], marks_[i].given.number, value[k]);
       any = any || fit[k];
     }
     if (!any) return false;

@@ -74,6 +74,10 @@ double round_to(double x, int decimals) {
   return std::round(x * scale) / scale;
 }
 
+// x carried to 4 significant digits as the sheet says, by printf's own rounding (independent of
+// method.h's)
+double carry4(double x) { return std::stod(fmt::format("{:.3e}", x)); }
+
 bool accepts(const Question& q, double given) {
   const double expected = std::get<double>(q.expected);
   return std::abs(given - expected) <= std::max(q.tolerance.rel * std::abs(expected), q.tolerance.abs);
@@ -252,10 +256,11 @@ TEST_CASE("segments: every difficulty and branch draws a well-posed instance the
             CHECK(by_hand.at("I")[1] == doctest::Approx(s.I->y).epsilon(1e-9));
           }
 
-          // a student who rounds t_ab and t_cd to 2 decimals, then I, is accepted
-          const double t_ab = round_to(s.ac_cross_cd / s.ab_cross_cd, 2), t_cd = round_to(s.ac_cross_ab / s.ab_cross_cd, 2);
-          CHECK(accepts(question(inst, "t_ab"), t_ab));
-          CHECK(accepts(question(inst, "t_cd"), t_cd));
+          // a student who carries t_ab and t_cd to 4 significant digits, computes I from them
+          // and writes each answer to 2 decimals, as the sheet says, is accepted
+          const double t_ab = carry4(s.ac_cross_cd / s.ab_cross_cd), t_cd = carry4(s.ac_cross_ab / s.ab_cross_cd);
+          CHECK(accepts(question(inst, "t_ab"), round_to(t_ab, 2)));
+          CHECK(accepts(question(inst, "t_cd"), round_to(t_cd, 2)));
           if (s.I) {
             CHECK(accepts(question(inst, "I.x"), round_to(m.A.x + t_ab * s.AB.x, 2)));
             CHECK(accepts(question(inst, "I.y"), round_to(m.A.y + t_ab * s.AB.y, 2)));

@@ -61,7 +61,10 @@ std::string faces_cell(method::FaceMask bits) {
 
 // A run's answers as cells for the key's questions ("I" gives "I.x" and "I.y"); blank where the
 // run does not reach a question.
-std::vector<std::string> cells_of(const grading::ExerciseKey& key, const std::vector<method::Recorded<method::Traced>>& run) {
+std::vector<std::string> cells_of(const grading::ExerciseKey& key, const std::vector<method::Recorded<method::Traced>>& run,
+                                  int decimals = -1) {
+  // written as they are, or rounded to `decimals` as a student writes them
+  auto number = [decimals](double x) { return decimals < 0 ? fmt::format("{}", x) : fmt::format("{:.{}f}", x, decimals); };
   std::vector<std::string> cells(key.questions.size());
   for (const auto& a : run) {
     auto put = [&](std::string_view field, std::string text) {
@@ -69,10 +72,10 @@ std::vector<std::string> cells_of(const grading::ExerciseKey& key, const std::ve
       if (i >= 0) cells[static_cast<std::size_t>(i)] = std::move(text);
     };
     switch (a.type) {
-      case method::AnswerType::number: put(a.id, fmt::format("{}", a.x.v)); break;
+      case method::AnswerType::number: put(a.id, number(a.x.v)); break;
       case method::AnswerType::point:
-        put(method::coordinate_name(a.id, 'x'), fmt::format("{}", a.x.v));
-        put(method::coordinate_name(a.id, 'y'), fmt::format("{}", a.y.v));
+        put(method::coordinate_name(a.id, 'x'), number(a.x.v));
+        put(method::coordinate_name(a.id, 'y'), number(a.y.v));
         break;
       case method::AnswerType::boolean: put(a.id, a.boolean ? "yes" : "no"); break;
       case method::AnswerType::choice: put(a.id, std::string(a.word)); break;
@@ -178,7 +181,9 @@ TEST_CASE("every kind written as a method: exact forms, full marks, named mistak
             }
           }
 
-          // follow-through: one numeric answer wrong, the later ones computed from it
+          // follow-through: one numeric answer wrong, the later ones computed from it as the sheet
+          // says (each value carried to 4 significant digits, the wrong one too; every answer
+          // written to 2 decimals)
           const auto key_run = kind->evaluate(data, nullptr, {}, 2);
           for (std::size_t k = 0; k < key_run.size(); ++k) {
             if (key_run[k].type != method::AnswerType::number) continue;
@@ -187,19 +192,19 @@ TEST_CASE("every kind written as a method: exact forms, full marks, named mistak
             Given given;
             for (const auto& q : key.questions)
               if (q.type == grading::AnswerType::number) given.numbers[q.field] = q.number;
-            const double wrong_value = key.questions[qi].number + 4 * std::max(key.questions[qi].rule.abs, 0.01) + 0.05;
+            const double wrong_value = method::carried(key.questions[qi].number + 4 * std::max(key.questions[qi].rule.abs, 0.01) + 0.05123);
             given.numbers[std::string(key_run[k].id)] = wrong_value;
-            const auto theirs = kind->evaluate(data, &given, {}, 2);
+            const auto theirs = kind->evaluate_as_told(data, 2, &given);
             // the same questions reached: their own values stay on the key's branch
             bool same_road = theirs.size() == key_run.size();
             for (std::size_t i = 0; same_road && i < theirs.size(); ++i) same_road = theirs[i].id == key_run[i].id;
             if (!same_road) continue;
             std::vector<std::string> cells = perfect;
             // later answers as the student computes them from their wrong one
-            const auto later = cells_of(key, {theirs.begin() + static_cast<std::ptrdiff_t>(k) + 1, theirs.end()});
+            const auto later = cells_of(key, {theirs.begin() + static_cast<std::ptrdiff_t>(k) + 1, theirs.end()}, 2);
             for (std::size_t i = 0; i < cells.size(); ++i)
               if (!later[i].empty()) cells[i] = later[i];
-            cells[static_cast<std::size_t>(qi)] = fmt::format("{}", wrong_value);
+            cells[static_cast<std::size_t>(qi)] = fmt::format("{:.2f}", wrong_value);
             const auto marks = mark(key, cells);
             CHECK(marks[static_cast<std::size_t>(qi)].verdict == grading::Verdict::wrong);
             CHECK(total(marks) == doctest::Approx(key_max(key) - key.questions[qi].points).epsilon(1e-9));

@@ -270,7 +270,8 @@ class BallKind final : public MethodKind<Kind> {
       const std::optional<Data> x = Kind::draw(rng, ctx, r_lo, r_hi);
       if (!x) return std::nullopt;
       const auto rc = solve_core(*x);
-      if (!Kind::in_area(rc, ctx) || !clear(rc, x->r, branch, mg, hard) || !pythagorean<Kind>(*x, ctx))
+      if (!Kind::in_area(rc, ctx) || !clear(rc, x->r, branch, mg, hard) || !pythagorean<Kind>(*x, ctx) ||
+          !this->answers_well_conditioned(*x, ctx.decimals))
         return std::nullopt;
       return x;
     });

@@ -233,7 +233,7 @@ template <class Kind>
 bool well_conditioned(const Data& d, int decimals, const Limits& lim) {
   method::Run<method::Dual> dual({Kind::kQuestions, decimals});
   Kind::method(dual, d);
-  return well_conditioned(method::tolerances(dual), lim);
+  return well_conditioned(method::tolerances(dual), lim) && method::carried_within(dual);
 }
 
 // ---- texts -------------------------------------------------------------------------------------
