@@ -137,7 +137,7 @@ done
 # (a phrase may be broken over two lines, in a column beside a figure: the text's lines joined)
 tr '\n' ' ' < "$tmp/sheets.txt" > "$tmp/sheets-flat.txt"
 for words in "Name:" "Student number:" "Exercise 1" "Using only the dot product" "orthogonal projection" \
-              "Intersection of a ray and a circle" "Give every numerical answer rounded to 2 decimals"; do
+              "Intersection of a ray and a circle" "Round every numerical answer to 2 decimals"; do
   grep -q "$words" "$tmp/sheets-flat.txt" || fail "sheets.pdf: no '$words' in pdftotext's output"
 done
 grep -q "Worked solution\|answer key" "$tmp/keys.txt" || fail "keys.pdf: no key wording"
