@@ -22,6 +22,7 @@
 #include "exercises/kind_support.h"
 #include "exercises/method.h"
 #include "exercises/texts.h"
+#include "support/drawn_instances.h"
 
 using namespace epure;
 
@@ -72,25 +73,13 @@ struct Worst {
 }  // namespace
 
 TEST_CASE("tolerances: a student who works as told is accepted, within 5 %, slips refused") {
-  const Difficulty levels[] = {Difficulty::easy, Difficulty::standard, Difficulty::hard};
   long answers = 0, as_told = 0, slips = 0, large = 0, over_5 = 0;
   Worst carried, whole;
   for (const ExerciseKind* kind : all_kinds()) {
     if (kind->questions().empty()) continue;
     CAPTURE(kind->name());
-    for (const auto& [branch, weight] : kind->default_branches()) {
-      if (weight <= 0) continue;
-      for (Difficulty level : levels)
-        for (int seed = 1; seed <= kSeeds; ++seed) {
-          CAPTURE(branch);
-          CAPTURE(static_cast<int>(level));
-          CAPTURE(seed);
-          ExerciseSpec spec;
-          spec.kind = std::string(kind->name());
-          spec.difficulty = level;
-          const ExerciseContext ctx{1, spec, Texts::builtin("en"), NumberStyle::for_language("en"), kDecimals, branch};
-          Rng rng(static_cast<std::uint64_t>(seed) * 104729u + 17);
-          const ExerciseInstance inst = kind->make(rng, ctx);
+    test::for_each_drawn(*kind, kSeeds, kDecimals, 104729u, 17, [&](const std::string& branch, Difficulty level, int seed,
+                                                                      const ExerciseInstance& inst) {
           CAPTURE(inst.instance);
           const auto data = kind->read_instance(nlohmann::json::parse(inst.instance));
 
@@ -154,8 +143,7 @@ TEST_CASE("tolerances: a student who works as told is accepted, within 5 %, slip
               ++slips;
             }
           }
-        }
-    }
+    });
   }
   MESSAGE(fmt::format("{} numeric answers ({} with |v| ≥ 0.1), {} worked as told, {} slips refused; "
                       "tolerance beyond the answer's own rounding at most {:.2f} % ({}); whole "

@@ -19,6 +19,7 @@
 #include "grading/answer_key.h"
 #include "grading/expression.h"
 #include "grading/marking.h"
+#include "support/drawn_instances.h"
 
 using namespace epure;
 
@@ -123,7 +124,6 @@ class Given final : public method::GivenAnswers {
 }  // namespace
 
 TEST_CASE("every kind written as a method: exact forms, full marks, named mistakes, follow-through") {
-  const Difficulty levels[] = {Difficulty::easy, Difficulty::standard, Difficulty::hard};
   int kinds_checked = 0;
   for (const ExerciseKind* kind : all_kinds()) {
     if (kind->questions().empty()) continue;
@@ -131,19 +131,7 @@ TEST_CASE("every kind written as a method: exact forms, full marks, named mistak
     CAPTURE(kind->name());
     std::map<std::string_view, int> named;  // mistake code → instances where grading named it
     int chains = 0;
-    for (const auto& [branch, weight] : kind->default_branches()) {
-      if (weight <= 0) continue;
-      for (Difficulty level : levels)
-        for (int seed = 1; seed <= kSeeds; ++seed) {
-          CAPTURE(branch);
-          CAPTURE(static_cast<int>(level));
-          CAPTURE(seed);
-          ExerciseSpec spec;
-          spec.kind = std::string(kind->name());
-          spec.difficulty = level;
-          const ExerciseContext ctx{1, spec, Texts::builtin("en"), NumberStyle::for_language("en"), 2, branch};
-          Rng rng(static_cast<std::uint64_t>(seed) * 7919u);
-          const ExerciseInstance inst = kind->make(rng, ctx);
+    test::for_each_drawn(*kind, kSeeds, 2, 7919u, 0, [&](const std::string&, Difficulty, int, const ExerciseInstance& inst) {
           const auto key = key_of(inst);
 
           // exact forms evaluate to the value
@@ -211,8 +199,7 @@ TEST_CASE("every kind written as a method: exact forms, full marks, named mistak
             ++chains;
             break;
           }
-        }
-    }
+    });
     // every named mistake the kind declares is recognised somewhere, and explained in both
     // languages
     for (auto code : kind->mistakes()) {
