@@ -37,6 +37,8 @@ void add_kinds_command(CLI::App& app, int& status);
 void add_explore_command(CLI::App& app, int& status);
 // Registers `epure grade`.
 void add_grade_command(CLI::App& app, int& status);
+// Registers `epure scan`.
+void add_scan_command(CLI::App& app, int& status);
 // Registers `epure export moodle|qti`.
 void add_export_command(CLI::App& app, int& status);
 // Registers `epure starter`.

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   epure::cli::add_grade_command(app, status);
   epure::cli::add_export_command(app, status);
   epure::cli::add_kinds_command(app, status);
+  epure::cli::add_scan_command(app, status);
   epure::cli::add_preview_command(app, status);
   epure::cli::add_solve_command(app, status);
   epure::cli::add_starter_command(app, status);

@@ -15,4 +15,8 @@ std::vector<std::string_view> embedded_files();
 // when this binary was built without emscripten.
 std::optional<std::string_view> explore_page();
 
+// The data files `epure scan` carries (src/scan/CMakeLists: the digit classifier's weights
+// "classifier/digits.weights", the review page "review.html"), by their path under src/scan/.
+std::optional<std::string_view> embedded_data(std::string_view name);
+
 }  // namespace epure

@@ -1,0 +1,88 @@
+#pragma once
+// Reading a registered page's answer fields (layout_file.h's FieldLayout) through its map.
+//
+// Ink is measured against the page's own print, not a fixed grey level: the darkness of the
+// corner marks (solid squares of the printer's ink, as scanned) is full ink, the paper around
+// the field's boxes none; a pixel's ink is where it lies between the two. So a pale copy, a dark
+// scan and a bilevel one read the same. (The boxes' own thin borders are no measure of full ink:
+// at 150 dpi a 0.7 pt line is scanned grey.) The borders tell whether the boxes are where the
+// map puts them: a field whose borders are not found is sent to review.
+//
+// A tick box: the share of its inside (away from the border, by more than a registration
+// error) that is inked. Empty below kTickEmpty, ticked (a cross, a check mark) from kTickMarked;
+// cancelled (filled, as the first page asks to correct a tick) when it is inked from kTickFilled
+// and so are the middles of its four sides, which a cross or a check mark leaves white. Between
+// those, or a faint mark under the ink threshold, the box is uncertain and the field goes to
+// review: never guessed.
+//
+// A comb cell: its crop (digit_classifier.h) read by the network; the field's value is
+// assembled from its cells (a sign cell, the integer digits, the decimals after the printed
+// separator; empty decimal cells read as zeros) with a confidence, the product of its cells'.
+#include <opencv2/core.hpp>
+
+#include <string>
+#include <vector>
+
+#include "scan/digit_classifier.h"
+#include "scan/layout_file.h"
+#include "scan/registration.h"
+
+namespace epure::scan {
+
+enum class TickState { empty, ticked, cancelled, uncertain };
+const char* tick_state_name(TickState s);
+
+inline constexpr double kTickEmpty = 0.03;   // at most this share inked: empty
+inline constexpr double kTickMarked = 0.07;  // from this share: a tick
+inline constexpr double kTickFilled = 0.7;   // from this share, the sides' middles inked too: filled
+inline constexpr double kSidesFilled = 0.6;  // the least inked side's middle of a filled box
+inline constexpr double kSidesOpen = 0.3;    // below this, a heavily inked box is still a tick
+inline constexpr double kTickFaint = 0.06;   // this share of faint ink (a quarter of the way) with no tick: uncertain
+
+struct TickReading {
+  TickState state = TickState::empty;
+  double filled = 0;  // share of the inside darker than halfway to the border's ink
+  double faint = 0;   // share darker than a quarter of the way
+  double sides = 0;   // the least inked of the four sides' middles
+};
+
+// A cell read by the network below this confidence sends its field to review.
+inline constexpr float kCellConfidence = 0.75f;
+
+struct FieldReading {
+  std::string question;
+  std::string value;        // as a student types it in the answers spreadsheet; empty: blank
+  bool blank = false;       // nothing written (or ticked)
+  bool uncertain = false;   // goes to review
+  double confidence = 1;    // the product of its cells' confidences
+  std::string why;          // what made it uncertain ("cell 3: 0.62", "two boxes ticked")
+  std::vector<TickReading> ticks;
+  std::vector<CellReading> cells;
+  std::string chars;        // comb: each cell's character as read ('?' below confidence)
+};
+
+// Paper and ink levels around a field: the paper around its boxes, and full ink (the marks').
+struct InkLevels {
+  double paper = 255;
+  double ink = 0;
+  double border = 0;  // the boxes' printed borders, as scanned
+  double to_ink(double grey) const;  // 0 (paper) .. 1 (ink), not clamped
+};
+
+// Samples the crop the network reads for a cell: the cell with a margin of 0.15 of its height,
+// centred in a square of side 1.3 × its height, 28 × 28 (each value the mean of 3 × 3 samples).
+CellCrop crop_cell(const cv::Mat& grey, const PageMap& map, const Rect& cell, const InkLevels& levels);
+
+// Reads one field of a registered page. `decimal_separator`: how a comb's value is written.
+// `paper`: the page's paper level; `ink`: the marks' ink level (-1: take the boxes' borders').
+FieldReading read_field(const cv::Mat& grey, const PageMap& map, const FieldLayout& field, double paper, double ink,
+                        const std::string& decimal_separator, const DigitClassifier& net);
+
+// The page's paper level: the 90th percentile of a reduced copy's grey levels.
+double paper_level(const cv::Mat& grey);
+
+// A field's crop for review.html and feedback: the field's cells with a margin, upright, at
+// `scale` pixels per point.
+cv::Mat field_image(const cv::Mat& grey, const PageMap& map, const FieldLayout& field, double scale);
+
+}  // namespace epure::scan

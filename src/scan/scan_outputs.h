@@ -1,0 +1,32 @@
+#pragma once
+// What `epure scan` writes into its output directory (every file atomically):
+//   answers.json, answers.csv  the read values, one row per sheet, as `epure grade` reads them
+//                              (a field sent to review is left out until a correction settles it)
+//   pages.csv                  every input page: file, page, sheet, sheet page, status, detail
+//   sheets.csv                 every sheet: pages read and missing, student number read and the
+//                              roster's, fields read, fields to review
+//   fields.csv                 every field: its status (read, blank, review, corrected), value,
+//                              confidence, each cell's character or each box's state, and why
+//   review.html                every field to review, with its crop (one offline page)
+#include <filesystem>
+#include <string>
+
+#include "scan/layout_file.h"
+#include "scan/scan_session.h"
+
+namespace epure::scan {
+
+std::string answers_json(const ScanResult& result);
+std::string answers_csv(const ScanResult& result, const SetLayout& layout);
+std::string pages_csv(const ScanResult& result);
+std::string sheets_csv(const ScanResult& result);
+std::string fields_csv(const ScanResult& result);
+std::string review_html(const ScanResult& result, const SetLayout& layout);
+
+// Every file above into `dir` (created if needed).
+void write_scan_outputs(const std::filesystem::path& dir, const ScanResult& result, const SetLayout& layout);
+
+// Fields sent to review and not settled by a correction.
+std::size_t fields_to_review(const ScanResult& result);
+
+}  // namespace epure::scan

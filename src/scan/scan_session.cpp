@@ -1,0 +1,244 @@
+#include "scan/scan_session.h"
+
+#include <fmt/format.h>
+#include <opencv2/core/utility.hpp>
+
+#include <algorithm>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "exercises/sheet_id.h"
+#include "scan/page_input.h"
+#include "scan/registration.h"
+
+namespace epure::scan {
+
+namespace {
+
+// What reading one page gives, before the pages are gathered by sheet.
+struct PageOutcome {
+  PageRecord record;
+  std::vector<FieldResult> fields;
+};
+
+constexpr double kCropScale = 3.0;  // review crops: 3 pixels per point (216 dpi)
+
+PageOutcome read_page(InputPage in, const SetLayout& layout, const PageFrame& frame, const ScanOptions& options,
+                      const DigitClassifier& net) {
+  PageOutcome out;
+  PageRecord& r = out.record;
+  r.file = in.file;
+  r.page = in.page;
+  if (!in.error.empty()) {
+    r.status = PageStatus::unreadable;
+    r.detail = in.error;
+    return out;
+  }
+  const PageFinding found = find_page(in.image, frame);
+  r.marks = found.marks;
+  r.residual = found.residual;
+  if (found.blank) {
+    r.status = PageStatus::blank;
+    return out;
+  }
+  if (!found.code) {
+    r.status = PageStatus::unknown;
+    r.detail = found.code_text.empty() ? found.problem : fmt::format("a code that is not an epure page code: \"{}\"", found.code_text);
+    return out;
+  }
+  r.sheet = found.code->sheet;
+  r.sheet_page = found.code->page;
+  const SheetLayout* sheet = layout.find(r.sheet);
+  if (!sheet) {
+    const auto id = parse_sheet_id(r.sheet);
+    if (id.id && (id.id->seed != layout.seed || id.id->version != layout.draw_version)) {
+      r.status = PageStatus::another_set;
+      r.detail = fmt::format("sheet {} is of another set (seed {}, this set's is {})", r.sheet, id.id->seed, layout.seed);
+    } else {
+      r.status = PageStatus::unknown;
+      r.detail = fmt::format("sheet {} is not in this set's layout.json", r.sheet);
+    }
+    return out;
+  }
+  if (found.code->page > static_cast<int>(sheet->pages.size()) || found.code->pages != static_cast<int>(sheet->pages.size())) {
+    r.status = PageStatus::unknown;
+    r.detail = fmt::format("page {}/{} of sheet {}, which has {} pages", found.code->page, found.code->pages, r.sheet, sheet->pages.size());
+    return out;
+  }
+  if (!found.map) {
+    r.status = PageStatus::unreadable;
+    r.detail = found.problem;
+    return out;
+  }
+  const PageLayout& page = sheet->pages[static_cast<std::size_t>(found.code->page - 1)];
+  // The page's own marks and code, when they differ from the set's first page (another paper size)
+  PageMap map = *found.map;
+  double ink = found.ink;
+  const PageFrame own = frame_of(page);
+  if (own.marks[0].x != frame.marks[0].x || own.marks[0].y != frame.marks[0].y || own.width != frame.width) {
+    const PageFinding again = find_page(in.image, own);
+    if (!again.map) {
+      r.status = PageStatus::unreadable;
+      r.detail = again.problem;
+      return out;
+    }
+    map = *again.map;
+    ink = again.ink;
+  }
+  r.status = PageStatus::identified;
+  const double paper = paper_level(in.image);
+  for (const auto& f : page.fields) {
+    FieldResult fr;
+    fr.page = page.page;
+    fr.reading = read_field(in.image, map, f, paper, ink, layout.decimal_separator, net);
+    if (fr.reading.uncertain || options.all_crops) fr.crop_png = encode_png(field_image(in.image, map, f, kCropScale));
+    out.fields.push_back(std::move(fr));
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* page_status_name(PageStatus s) {
+  switch (s) {
+    case PageStatus::identified: return "identified";
+    case PageStatus::duplicate: return "duplicate";
+    case PageStatus::unknown: return "unknown";
+    case PageStatus::blank: return "blank";
+    case PageStatus::another_set: return "another set";
+    case PageStatus::unreadable: return "unreadable";
+  }
+  return "?";
+}
+
+ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& layout, const ScanOptions& options,
+                       const DigitClassifier& net) {
+  if (layout.sheets.empty()) throw std::runtime_error("layout.json holds no sheet");
+  const PageFrame frame = frame_of(layout.sheets.begin()->second.pages.front());
+  // OpenCV's own threads would only compete with ours
+  cv::setNumThreads(1);
+  const int jobs = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+
+  // One thread decodes pages in input order into a short queue; `jobs` workers read them.
+  std::mutex mu;
+  std::condition_variable cv_space, cv_work;
+  std::deque<std::pair<std::size_t, InputPage>> queue;
+  bool done = false;
+  std::vector<std::optional<PageOutcome>> outcomes;
+  const std::size_t capacity = static_cast<std::size_t>(2 * jobs);
+
+  auto worker = [&] {
+    for (;;) {
+      std::pair<std::size_t, InputPage> item;
+      {
+        std::unique_lock lock(mu);
+        cv_work.wait(lock, [&] { return !queue.empty() || done; });
+        if (queue.empty()) return;
+        item = std::move(queue.front());
+        queue.pop_front();
+        cv_space.notify_one();
+      }
+      PageOutcome o;
+      try {
+        o = read_page(std::move(item.second), layout, frame, options, net);
+      } catch (const std::exception& e) {
+        o.record.status = PageStatus::unreadable;
+        o.record.detail = e.what();
+      }
+      std::lock_guard lock(mu);
+      outcomes[item.first] = std::move(o);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int i = 0; i < jobs; ++i) threads.emplace_back(worker);
+  std::size_t index = 0;
+  for (const auto& path : inputs) {
+    auto stream = open_pages(path, options.render_dpi);
+    for (;;) {
+      std::optional<InputPage> page;
+      try {
+        page = stream->next();
+      } catch (const std::exception& e) {
+        page = InputPage{path, 0, {}, e.what(), 0};
+      }
+      if (!page) break;
+      const bool failed = page->page == 0;  // the stream failed: on to the next file
+      std::unique_lock lock(mu);
+      cv_space.wait(lock, [&] { return queue.size() < capacity; });
+      outcomes.emplace_back();
+      queue.emplace_back(index++, std::move(*page));
+      cv_work.notify_one();
+      if (failed) break;
+    }
+  }
+  {
+    std::lock_guard lock(mu);
+    done = true;
+  }
+  cv_work.notify_all();
+  for (auto& t : threads) t.join();
+
+  // Gathered by sheet, in input order: the first registered copy of a page counts.
+  ScanResult result;
+  for (auto& slot : outcomes) {
+    PageOutcome& o = *slot;
+    PageRecord& r = o.record;
+    if (r.status == PageStatus::identified) {
+      const SheetLayout& layout_sheet = *layout.find(r.sheet);
+      auto [it, fresh] = result.sheets.try_emplace(r.sheet);
+      SheetResult& s = it->second;
+      if (fresh) {
+        s.sheet = r.sheet;
+        s.pages = static_cast<int>(layout_sheet.pages.size());
+        s.seen.assign(static_cast<std::size_t>(s.pages), false);
+        if (layout_sheet.student) {
+          s.student_name = layout_sheet.student->name;
+          s.roster_number = layout_sheet.student->number;
+        }
+      }
+      if (s.seen[static_cast<std::size_t>(r.sheet_page - 1)]) {
+        r.status = PageStatus::duplicate;
+        r.detail = fmt::format("page {} of sheet {} was read from an earlier page", r.sheet_page, r.sheet);
+      } else {
+        s.seen[static_cast<std::size_t>(r.sheet_page - 1)] = true;
+        for (auto& f : o.fields) {
+          if (f.reading.question == "student_number" && !f.reading.uncertain) s.student_number = f.reading.value;
+          s.fields.emplace(f.reading.question, std::move(f));
+        }
+      }
+    }
+    result.pages.push_back(std::move(r));
+  }
+  return result;
+}
+
+void apply_corrections(ScanResult& result, const std::vector<grading::Correction>& corrections, const std::string& source) {
+  std::size_t n = 0;
+  for (const auto& c : corrections) {
+    ++n;
+    auto canonical = parse_sheet_id(c.sheet);
+    const std::string id = canonical.id ? canonical.id->str() : c.sheet;
+    auto s = result.sheets.find(id);
+    if (s == result.sheets.end()) {
+      result.problems.push_back(fmt::format("{}: correction {}: sheet {} was not scanned", source, n, c.sheet));
+      continue;
+    }
+    auto f = s->second.fields.find(c.question);
+    if (f == s->second.fields.end()) {
+      result.problems.push_back(fmt::format("{}: correction {}: sheet {} has no field {} on its scanned pages", source, n, id, c.question));
+      continue;
+    }
+    FieldReading& r = f->second.reading;
+    r.value = c.value;
+    r.blank = c.value.empty();
+    r.uncertain = false;
+    f->second.corrected = true;
+    f->second.note = c.note;
+    if (c.question == "student_number") s->second.student_number = c.value;
+  }
+}
+
+}  // namespace epure::scan

@@ -1,0 +1,68 @@
+#pragma once
+// `epure scan`: every page of every input read, identified, registered and its fields read;
+// then the pages gathered by sheet (a page seen twice is a duplicate; a page missing is said).
+// Pages are decoded one at a time by one thread and read by `jobs` others through a short queue,
+// so memory stays flat over any number of pages; the results are put back in input order, so the
+// outputs do not depend on the number of jobs.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "grading/corrections.h"
+#include "scan/digit_classifier.h"
+#include "scan/field_reading.h"
+#include "scan/layout_file.h"
+
+namespace epure::scan {
+
+enum class PageStatus { identified, duplicate, unknown, blank, another_set, unreadable };
+const char* page_status_name(PageStatus s);
+
+struct PageRecord {
+  std::string file;
+  int page = 1;            // in its file
+  std::string sheet;       // from its code, when read
+  int sheet_page = 0;      // the page of that sheet, 0 when unknown
+  PageStatus status = PageStatus::unreadable;
+  std::string detail;      // why, for every status but identified
+  int marks = 0;
+  double residual = 0;     // points
+};
+
+struct FieldResult {
+  FieldReading reading;
+  int page = 0;                 // the sheet's page it is on
+  std::string crop_png;         // the field as scanned (uncertain fields, and every field with --crops)
+  bool corrected = false;       // settled by a correction
+  std::string note;             // the correction's note
+};
+
+struct SheetResult {
+  std::string sheet;
+  int pages = 0;                       // the sheet's page count (layout)
+  std::vector<bool> seen;              // per page: identified
+  std::map<std::string, FieldResult> fields;  // by question id, in id order
+  std::string student_number;          // as read ("" when not read or uncertain)
+  std::string student_name;            // from the roster
+  std::string roster_number;           // from the roster
+};
+
+struct ScanOptions {
+  int jobs = 0;            // 0: every core
+  int render_dpi = 200;    // PDF pages without one embedded image
+  bool all_crops = false;  // keep every field's crop (the feedback sheets), not only uncertain ones
+};
+
+struct ScanResult {
+  std::vector<PageRecord> pages;               // every input page, in input order
+  std::map<std::string, SheetResult> sheets;   // every sheet with an identified page
+  std::vector<std::string> problems;           // corrections that could not be applied, …
+};
+
+ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& layout, const ScanOptions& options,
+                       const DigitClassifier& net);
+
+// Applies a teacher's corrections; one for a sheet or question that was not scanned is a problem.
+void apply_corrections(ScanResult& result, const std::vector<grading::Correction>& corrections, const std::string& source);
+
+}  // namespace epure::scan

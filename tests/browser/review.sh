@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# epure scan's review.html in headless Chromium (review_test.mjs), then the corrections it saved
+# applied by `epure scan --corrections`: nothing left to review, the typed values in answers.json.
+# Needs `npm ci` in tests/browser and src/scan/classifier (the bootstrap does both in test mode).
+set -u
+here=$EPURE_SOURCE_DIR/tests
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+out=${EPURE_BROWSER_OUT:-$tmp/review}
+[ -d "$here/browser/node_modules/puppeteer-core" ] || { echo "FAIL: run 'npm ci' in tests/browser first"; exit 1; }
+"$EPURE" generate --format svg --sheets 2 --seed 4 --lang fr --jobs 1 --quiet --out "$tmp/set" || { echo "FAIL: epure generate"; exit 1; }
+"$EPURE_SCAN_FIXTURE" --key "$tmp/set/key.json" --out "$tmp/scans" --sheets 2 --dpi 150 --degrade copier --format png --seed 2 >/dev/null || { echo "FAIL: fixture"; exit 1; }
+"$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out" -q 2>/dev/null
+node "$here/browser/review_test.mjs" "$tmp/out/review.html" "$tmp/out/fields.csv" "$out" || exit 1
+"$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out2" \
+  --corrections "$out/corrections.json" -q 2>"$tmp/err"
+fail=0
+left=$(grep -c ',review,' "$tmp/out2/fields.csv")
+[ "$left" = 0 ] && echo "ok   no field left to review after the corrections" || { echo "FAIL: $left fields still to review"; fail=1; }
+python3 - "$out/corrections.json" "$tmp/out2/answers.json" <<'PY' || fail=1
+import json, sys
+c = json.load(open(sys.argv[1]))["corrections"]
+a = {r["sheet"]: r["answers"] for r in json.load(open(sys.argv[2]))}
+bad = [k for k in c if k["question"] != "student_number" and a[k["sheet"]].get(k["question"], "") != k["value"]]
+print(("FAIL: " if bad else "ok   ") + f"answers.json holds the {len(c)} corrected values" + (f": {bad[:3]}" if bad else ""))
+sys.exit(1 if bad else 0)
+PY
+exit $fail

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# epure scan end to end, on the suite's own scans (tests/scan/scan_fixture_main.cpp: a French set's
+# fields laid out with the scan furniture, written with handwritten digits held out of the
+# classifier's training and ticks of several kinds, degraded as a copier does):
+#  - every input page in pages.csv with its status: the blank page, the page of another set, the
+#    duplicate said, the dropped page said missing, every other page identified;
+#  - the figures (tests/tools/scan_figures.py): silent errors and fields sent to review within
+#    their bounds, ticks right or sent to review;
+#  - answers.json marked by `epure grade`: every value read is marked right (the suite wrote the
+#    key's values);
+#  - a corrections file settling the fields sent to review: scan again with it, nothing left;
+#  - bad input: a corrupt PDF, a file of no image, an image of no page, a key of another set.
+set -u
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0
+ok() { echo "ok   $*"; }
+bad() { echo "FAIL $*"; fail=1; }
+tools=$EPURE_SOURCE_DIR/tests/tools
+
+"$EPURE" generate --format svg --sheets 4 --seed 5 --lang fr --jobs 1 --quiet --out "$tmp/set" || { bad "generate"; exit 1; }
+key=$tmp/set/key.json
+# The bounds pinned on these small stacks (about 180 fields, 370 digits each), as measured with
+# the committed classifier (2026-12-04: silent errors 0 of 174 on the JPEG PDF, 3 of 193 on the
+# bilevel TIFF; fields sent to review 25-27 %; digits 95.7-96.7 %), with a margin. The issue's
+# targets (silent errors 0.1 %, review 5 %, digits 99 %) are NOT met: README, "epure scan".
+max_silent=${EPURE_SCAN_MAX_SILENT:-0.025}
+max_review=${EPURE_SCAN_MAX_REVIEW:-0.35}
+min_digits=${EPURE_SCAN_MIN_DIGITS:-0.94}
+
+# Four stacks: a copier's JPEG PDF (shuffled, a page dropped, one twice, a blank one, one of
+# another set), a bilevel TIFF (CCITT G4, 200 dpi), a Flate PDF at 300 dpi, PNG at 150 dpi.
+i=0
+for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300" "png copier 150"; do
+  set -- $spec
+  i=$((i + 1))
+  d=$tmp/s$i
+  "$EPURE_SCAN_FIXTURE" --key "$key" --out "$d" --sheets 4 --format "$1" --degrade "$2" --dpi "$3" --seed $((40 + i)) ${4:-} >/dev/null ||
+    { bad "fixture $spec"; continue; }
+  "$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out" -q 2>"$d/err"
+  status=$?
+  [ "$status" -le 1 ] || bad "$spec: scan exit status $status: $(cat "$d/err")"
+  python3 "$tools/scan_figures.py" "$d/truth.json" "$d/out" "$d/layout.json" --check --max-silent "$max_silent" --max-review "$max_review" --min-digits "$min_digits" >"$d/figures.json" 2>"$d/figures.err" &&
+    ok "$spec: figures within bounds: $(python3 -c "import json,sys; f=json.load(open(sys.argv[1])); print(f'{f[\"fields\"]} fields, {f[\"silent\"]} silent errors, {f[\"review\"]} to review, ticks {f[\"tick_right\"]}+{f[\"tick_review\"]}/{f[\"tick_fields\"]}, digits {f[\"digit_cells_right\"]}/{f[\"digit_cells\"]}')" "$d/figures.json")" ||
+    bad "$spec: $(cat "$d/figures.err")"
+  # every input page listed; the expected statuses
+  pages=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['pages']))" "$d/truth.json")
+  listed=$(($(wc -l <"$d/out/pages.csv") - 1))
+  [ "$listed" = "$pages" ] && ok "$spec: every input page in pages.csv ($pages)" || bad "$spec: $listed pages in pages.csv for $pages"
+  if [ "${4:-}" = --mess ]; then
+    for s in blank "another set" duplicate; do
+      grep -q ",$s," "$d/out/pages.csv" && ok "$spec: a page '$s'" || bad "$spec: no page '$s' in pages.csv"
+    done
+    dropped=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['dropped'])" "$d/truth.json")
+    sheet=${dropped% p*}; page=${dropped##* p}
+    grep -q "sheet $sheet: page $page of .* is missing" "$d/err" && ok "$spec: dropped page said missing ($dropped)" || bad "$spec: the dropped page $dropped is not said missing"
+    others=$(grep -v -E ",(identified|blank|another set|duplicate)," "$d/out/pages.csv" | tail -n +2)
+    [ -z "$others" ] && ok "$spec: every other page identified" || bad "$spec: pages not identified: $others"
+  else
+    others=$(grep -v ",identified," "$d/out/pages.csv" | tail -n +2)
+    [ -z "$others" ] && ok "$spec: every page identified" || bad "$spec: pages not identified: $others"
+  fi
+done
+
+# The loop: grade marks what scan read; every value read is right (the suite wrote the key's).
+d=$tmp/s1
+"$EPURE" grade --key "$key" --answers "$d/out/answers.json" --json "$d/marks.json" -q 2>"$d/grade.err"
+[ $? -le 1 ] || bad "grade: $(cat "$d/grade.err")"
+python3 - "$d/out/answers.json" "$d/marks.json" <<'PY' && ok "grade: every value scan read is marked right" || fail=1
+import json, sys
+answers = {r["sheet"]: r["answers"] for r in json.load(open(sys.argv[1]))}
+marks = json.load(open(sys.argv[2]))
+wrong, n = [], 0
+for sub in marks["submissions"]:
+    given = answers.get(sub["sheet"], {})
+    for m in sub["questions"]:
+        if m["id"] in given:
+            n += 1
+            if m["verdict"] not in ("right", "follow_through"):
+                wrong.append((sub["sheet"], m["id"], given[m["id"]], m["verdict"]))
+if wrong or n == 0:
+    print(f"FAIL grade: {len(wrong)} of {n} values read are marked wrong: {wrong[:5]}")
+    sys.exit(1)
+PY
+
+# Corrections: the fields sent to review settled with what was written, scanned again.
+python3 - "$d/truth.json" "$d/out/fields.csv" >"$tmp/corrections.json" <<'PY'
+import csv, json, sys
+truth = json.load(open(sys.argv[1]))["sheets"]
+out = []
+for r in csv.DictReader(open(sys.argv[2])):
+    if r["status"] == "review":
+        t = truth[r["sheet"]]
+        v = t["student_number"] if r["question"] == "student_number" else t["answers"].get(r["question"], "")
+        out.append({"sheet": r["sheet"], "question": r["question"], "value": v, "note": "suite"})
+print(json.dumps({"format": "epure-corrections", "version": 1, "corrections": out}))
+PY
+"$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out2" --corrections "$tmp/corrections.json" -q 2>/dev/null
+python3 "$tools/scan_figures.py" "$d/truth.json" "$d/out2" --check --max-silent 0 --max-review 0 >/dev/null 2>"$tmp/c.err" &&
+  ok "corrections: nothing left to review, no wrong value" || bad "corrections: $(cat "$tmp/c.err")"
+grep -q ",corrected," "$d/out2/fields.csv" && ok "corrections: fields.csv says which were corrected" || bad "corrections: no field marked corrected"
+
+# Bad input: each named with its file and page, the rest still read.
+head -c 3000 "$tmp/s3/scans.pdf" >"$tmp/corrupt.pdf"
+echo "not an image" >"$tmp/notes.txt"
+python3 - "$tmp/noise.png" <<'PY'
+import random, struct, sys, zlib
+r = random.Random(5); w, h = 300, 420
+raw = b"".join(b"\0" + bytes(r.choice((0, 255)) if r.random() < 0.02 else 255 for _ in range(w)) for _ in range(h))
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xffffffff)
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 0, 0, 0, 0)) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+PY
+"$EPURE" scan "$tmp/corrupt.pdf" "$tmp/notes.txt" "$tmp/noise.png" "$tmp"/s4/scan-*.png --key "$key" --layout "$tmp/s4/layout.json" --out "$tmp/bad" -q 2>"$tmp/bad.err"
+[ $? = 1 ] && ok "bad input: exit status 1" || bad "bad input: exit status not 1"
+grep -q "scan: $tmp/corrupt.pdf: page 1: unreadable: " "$tmp/bad.err" && ok "bad input: the corrupt PDF named" || bad "bad input: corrupt PDF: $(cat "$tmp/bad.err")"
+grep -q "scan: $tmp/notes.txt: page 1: unreadable: not a PDF, PNG, JPEG or TIFF file" "$tmp/bad.err" && ok "bad input: a text file named" || bad "bad input: text file: $(cat "$tmp/bad.err")"
+grep -q "scan: $tmp/noise.png: page 1: unknown: " "$tmp/bad.err" && ok "bad input: an image of no page named" || bad "bad input: noise: $(cat "$tmp/bad.err")"
+n=$(grep -c ",identified," "$tmp/bad/pages.csv")
+m=$(ls "$tmp"/s4/scan-*.png | wc -l)
+[ "$n" = "$m" ] && ok "bad input: the other $m pages still read" || bad "bad input: $n pages identified of $m"
+"$EPURE" generate --format svg --sheets 1 --seed 6 --jobs 1 --quiet --out "$tmp/other" || bad "generate another set"
+"$EPURE" scan "$tmp"/s4/scan-001.png --key "$tmp/other/key.json" --layout "$tmp/s4/layout.json" --out "$tmp/x" -q 2>"$tmp/x.err"
+[ $? = 2 ] && grep -q "is the key of another set" "$tmp/x.err" && ok "a key of another set refused" || bad "key of another set: $(cat "$tmp/x.err")"
+sed 's/"version": 1/"version": 9/' "$tmp/s4/layout.json" >"$tmp/layout9.json"
+"$EPURE" scan "$tmp"/s4/scan-001.png --key "$key" --layout "$tmp/layout9.json" --out "$tmp/x" -q 2>"$tmp/x.err"
+[ $? = 2 ] && grep -q "layout9.json: a layout.json of another version" "$tmp/x.err" && ok "a layout of another version refused" || bad "layout version: $(cat "$tmp/x.err")"
+exit $fail
