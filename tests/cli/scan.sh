@@ -21,7 +21,8 @@ tools=$EPURE_SOURCE_DIR/tests/tools
 key=$tmp/set/key.json
 # The bounds pinned on these small stacks (about 180 fields, 370 digits each), as measured with
 # the committed classifier (2026-12-04: silent errors 0 of 174 on the JPEG PDF, 3 of 193 on the
-# bilevel TIFF; fields sent to review 25-27 %; digits 95.7-96.7 %), with a margin. The issue's
+# bilevel TIFF, 2 of 193 at 300 dpi, 0 of 193 in the PNGs; fields sent to review 22-27 %; digits
+# 95.7-98.5 %), with a margin. The issue's
 # targets (silent errors 0.1 %, review 5 %, digits 99 %) are NOT met: README, "epure scan".
 max_silent=${EPURE_SCAN_MAX_SILENT:-0.025}
 max_review=${EPURE_SCAN_MAX_REVIEW:-0.35}
