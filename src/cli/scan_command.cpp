@@ -2,15 +2,17 @@
 // JPEG, TIFF) and writes the answers `epure grade` marks, pages.csv, sheets.csv and review.html
 // (src/scan/scan_outputs.h). Exit status: 0 when every page was identified and every field read
 // for sure, 1 when some page or field needs the teacher (each said on stderr), 2 when nothing
-// could be scanned (no layout, a key of another set or version).
+// could be scanned (no layout, a key of another set or version, a corrections file that is not one).
 #include <fmt/format.h>
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "cli/commands.h"
 #include "grading/answer_key.h"
+#include "exercises/texts.h"
 #include "grading/corrections.h"
 #include "scan/digit_classifier.h"
 #include "scan/layout_file.h"
@@ -68,15 +70,27 @@ int run_scan(const ScanCliOptions& o) {
     fmt::print(stderr, "scan: {}\n", e.what());
     return 2;
   }
+  // The teacher's corrections, read before any page (one reader and one format with `epure grade
+  // --corrections`): a file that is not a corrections file stops the run, as it stops grade; a
+  // bad entry is said in the set's language, as grade says it, and the others are applied.
+  std::optional<grading::Corrections> corrections;
+  const Texts& texts = Texts::builtin(layout.language);
+  std::vector<std::string> correction_problems;
+  if (!o.corrections.empty()) {
+    corrections = grading::read_corrections_file(o.corrections);
+    for (const auto& p : corrections->problems)
+      correction_problems.push_back(fmt::format("{}: {}", corrections->source, grading::describe(p, texts)));
+    if (!corrections->readable) {
+      for (const auto& p : correction_problems) fmt::print(stderr, "scan: {}\n", p);
+      return 2;
+    }
+  }
   scan::ScanOptions options;
   options.jobs = o.jobs;
   options.render_dpi = o.dpi;
   scan::ScanResult result = scan::scan_inputs(o.inputs, layout, options, scan::DigitClassifier::builtin());
-  if (!o.corrections.empty()) {
-    const grading::CorrectionsFile c = grading::read_corrections_file(o.corrections);
-    result.problems.insert(result.problems.end(), c.problems.begin(), c.problems.end());
-    scan::apply_corrections(result, c.corrections, o.corrections);
-  }
+  result.problems.insert(result.problems.end(), correction_problems.begin(), correction_problems.end());
+  if (corrections) scan::apply_corrections(result, *corrections, texts);
   scan::write_scan_outputs(o.out, result, layout);
 
   int status = 0;
@@ -115,10 +129,10 @@ void add_scan_command(CLI::App& app, int& status) {
   auto opts = std::make_shared<ScanCliOptions>();
   CLI::App* cmd = app.add_subcommand("scan", "Read a class's scanned sheets into answers for `epure grade`");
   cmd->add_option("scans", opts->inputs, "Scanned pages: PDF, PNG, JPEG or TIFF files, in any order")->required();
-  cmd->add_option("--key", opts->key_file, "The set's key.json (its layout.json beside it is read)")->required();
-  cmd->add_option("--layout", opts->layout_file, "The set's layout.json, if not beside key.json");
+  cmd->add_option("--key", opts->key_file, "The set's key.json (its layout.json beside it is read)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--layout", opts->layout_file, "The set's layout.json, if not beside key.json")->check(CLI::ExistingFile);
   cmd->add_option("--out", opts->out, "Output directory (answers.json, answers.csv, pages.csv, sheets.csv, review.html)");
-  cmd->add_option("--corrections", opts->corrections, "A corrections file saved from review.html");
+  cmd->add_option("--corrections", opts->corrections, "A corrections file (saved from review.html; the one epure grade --corrections reads)")->check(CLI::ExistingFile);
   cmd->add_option("--jobs", opts->jobs, "Threads reading pages (0: every core)")->check(CLI::Range(0, 256));
   cmd->add_option("--dpi", opts->dpi, "Resolution at which PDF pages without one embedded image are rendered")->check(CLI::Range(72, 600));
   cmd->add_flag("-q,--quiet", opts->quiet, "No summary on standard output");

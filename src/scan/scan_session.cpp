@@ -4,6 +4,7 @@
 #include <opencv2/core/utility.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -215,21 +216,37 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
   return result;
 }
 
-void apply_corrections(ScanResult& result, const std::vector<grading::Correction>& corrections, const std::string& source) {
-  std::size_t n = 0;
-  for (const auto& c : corrections) {
-    ++n;
-    auto canonical = parse_sheet_id(c.sheet);
-    const std::string id = canonical.id ? canonical.id->str() : c.sheet;
-    auto s = result.sheets.find(id);
+void apply_corrections(ScanResult& result, const grading::Corrections& corrections, const Texts& texts) {
+  if (!corrections.readable) return;
+  auto say = [&](const grading::Correction& c, std::string code, TextVars vars) {
+    result.problems.push_back(fmt::format("{}: {}", corrections.source,
+                                          grading::describe({c.entry, std::move(code), std::move(vars)}, texts)));
+  };
+  auto same_letters = [](std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+             return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+  };
+  std::map<std::pair<std::string, std::string>, int> applied;  // (sheet, question) → entry
+  for (const auto& c : corrections.entries) {
+    const auto parsed = parse_sheet_id(c.sheet);
+    const std::string id = parsed.id ? parsed.id->str() : c.sheet;
+    const auto s = result.sheets.find(id);
     if (s == result.sheets.end()) {
-      result.problems.push_back(fmt::format("{}: correction {}: sheet {} was not scanned", source, n, c.sheet));
+      say(c, "not_scanned", {{"sheet", c.sheet}});
       continue;
     }
     auto f = s->second.fields.find(c.question);
+    if (f == s->second.fields.end())
+      f = std::find_if(s->second.fields.begin(), s->second.fields.end(),
+                       [&](const auto& field) { return same_letters(field.first, c.question); });
     if (f == s->second.fields.end()) {
-      result.problems.push_back(fmt::format("{}: correction {}: sheet {} has no field {} on its scanned pages", source, n, id, c.question));
+      say(c, "not_on_pages", {{"sheet", id}, {"question", c.question}});
       continue;
+    }
+    if (auto [at, fresh] = applied.try_emplace({id, f->first}, c.entry); !fresh) {
+      say(c, "repeated", {{"first", std::to_string(at->second)}, {"sheet", id}, {"question", f->first}});
+      at->second = c.entry;
     }
     FieldReading& r = f->second.reading;
     r.value = c.value;
@@ -237,7 +254,7 @@ void apply_corrections(ScanResult& result, const std::vector<grading::Correction
     r.uncertain = false;
     f->second.corrected = true;
     f->second.note = c.note;
-    if (c.question == "student_number") s->second.student_number = c.value;
+    if (f->first == "student_number") s->second.student_number = c.value;
   }
 }
 

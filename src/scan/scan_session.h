@@ -62,7 +62,12 @@ struct ScanResult {
 ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& layout, const ScanOptions& options,
                        const DigitClassifier& net);
 
-// Applies a teacher's corrections; one for a sheet or question that was not scanned is a problem.
-void apply_corrections(ScanResult& result, const std::vector<grading::Correction>& corrections, const std::string& source);
+// Applies a teacher's corrections (grading/corrections.h: the file `epure grade --corrections`
+// reads too), each to its sheet (any case, with or without dashes) and field (the question id in
+// any case, or student_number). Each entry that cannot be placed (a sheet not scanned, a field
+// not on its scanned pages), or that corrects a field again, is said in `texts`' language
+// ("c.json: entry 3: …") in result.problems; the problems of the file itself are said by the
+// caller. The last correction of a field is the one applied, as `epure grade` does.
+void apply_corrections(ScanResult& result, const grading::Corrections& corrections, const Texts& texts);
 
 }  // namespace epure::scan

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # epure scan's review.html in headless Chromium (review_test.mjs), then the corrections it saved
-# applied by `epure scan --corrections`: nothing left to review, the typed values in answers.json.
+# applied by `epure scan --corrections` (nothing left to review, the typed values in answers.json)
+# and by `epure grade --corrections` (the typed values graded).
 # Needs `npm ci` in tests/browser and src/scan/classifier (the bootstrap does both in test mode).
 set -u
 here=$EPURE_SOURCE_DIR/tests
@@ -23,5 +24,19 @@ a = {r["sheet"]: r["answers"] for r in json.load(open(sys.argv[2]))}
 bad = [k for k in c if k["question"] != "student_number" and a[k["sheet"]].get(k["question"], "") != k["value"]]
 print(("FAIL: " if bad else "ok   ") + f"answers.json holds the {len(c)} corrected values" + (f": {bad[:3]}" if bad else ""))
 sys.exit(1 if bad else 0)
+PY
+# The same file read by `epure grade --corrections` (one format, one reader): applied to the
+# answers scan wrote before the corrections, every typed value is the answer graded.
+"$EPURE" grade --key "$tmp/set/key.json" --answers "$tmp/out/answers.json" --corrections "$out/corrections.json" \
+  --json "$tmp/marks.json" -q 2>"$tmp/grade.err"
+python3 - "$out/corrections.json" "$tmp/marks.json" "$tmp/grade.err" <<'PY' || fail=1
+import json, sys
+c = json.load(open(sys.argv[1]))["corrections"]
+given = {(s["sheet"], q["id"]): q["given"] for s in json.load(open(sys.argv[2]))["submissions"] for q in s["questions"]}
+said = [l for l in open(sys.argv[3]) if "corrections.json" in l]
+bad = [k for k in c if k["question"] != "student_number" and given.get((k["sheet"], k["question"])) != k["value"]]
+print(("FAIL: " if bad or said else "ok   ") + f"epure grade --corrections applies the {len(c)} saved values" +
+      (f": {bad[:3]}" if bad else "") + (f"; it says: {said[:2]}" if said else ""))
+sys.exit(1 if bad or said else 0)
 PY
 exit $fail

@@ -100,6 +100,25 @@ python3 "$tools/scan_figures.py" "$d/truth.json" "$d/out2" --check --max-silent 
   ok "corrections: nothing left to review, no wrong value" || bad "corrections: $(cat "$tmp/c.err")"
 grep -q ",corrected," "$d/out2/fields.csv" && ok "corrections: fields.csv says which were corrected" || bad "corrections: no field marked corrected"
 
+# The loop: the scanned and corrected answers get the marks of the answers that were written
+# (truth.json, on the pages scanned: one was dropped), sheet by sheet, as `epure grade` gives them.
+python3 - "$d/truth.json" "$d/out2/fields.csv" >"$tmp/written.json" <<'PY'
+import csv, json, sys
+truth = json.load(open(sys.argv[1]))["sheets"]
+scanned = {(r["sheet"], r["question"]) for r in csv.DictReader(open(sys.argv[2]))}
+print(json.dumps([{"sheet": s, "answers": {q: v for q, v in t["answers"].items() if (s, q) in scanned}} for s, t in truth.items()]))
+PY
+"$EPURE" grade --key "$key" --answers "$tmp/written.json" --json "$tmp/marks_written.json" -q 2>/dev/null
+"$EPURE" grade --key "$key" --answers "$d/out2/answers.json" --corrections "$tmp/corrections.json" --json "$tmp/marks_scanned.json" -q 2>"$tmp/grade2.err"
+python3 - "$tmp/marks_written.json" "$tmp/marks_scanned.json" <<'PY' && ok "the loop: scanned and corrected, every sheet gets the written answers' marks" || fail=1
+import json, sys
+score = lambda f: {s["sheet"]: (s["score"], s["to_check"]) for s in json.load(open(f))["submissions"]}
+written, scanned = score(sys.argv[1]), score(sys.argv[2])
+if not written or written != scanned:
+    print(f"FAIL the loop: marks of the written answers {written} != of the scanned ones {scanned}")
+    sys.exit(1)
+PY
+
 # Bad input: each named with its file and page, the rest still read.
 head -c 3000 "$tmp/s3/scans.pdf" >"$tmp/corrupt.pdf"
 echo "not an image" >"$tmp/notes.txt"

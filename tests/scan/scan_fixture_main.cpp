@@ -4,7 +4,7 @@
 //                      [--degrade none|copier|bilevel|phone] [--seed S] [--mess]
 //
 // Writes DIR/layout.json (the fields of every sheet of the key, as test_layout lays them out:
-// numbers as comb fields, yes/no and words as ticks, the student number), DIR/truth.json (what
+// numbers as comb fields, yes/no, words and sides as ticks, the student number), DIR/truth.json (what
 // was written, per sheet and question, as `epure grade` should read it) and the scans:
 // DIR/scans.<ext> (one file; PNG and JPEG one file per page, scan-NNN.<ext>). --mess shuffles
 // the pages, drops one, duplicates one, adds a blank page and a page of another set.
@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "grading/answer_key.h"
+#include "grading/faces.h"
 #include "output/atomic_file.h"
 #include "scan/page_code.h"
 #include "scan/page_input.h"
@@ -129,7 +130,24 @@ int main(int argc, char** argv) {
             w.tick_style[q.id] = styles[tick_count++ % 4];
             if (tick_count % 5 == 0) w.cancelled[q.id] = q.boolean ? "false" : "true";
             answers[q.id] = v;
-          } else if (q.type == grading::AnswerType::word) {
+          } else if (q.type == grading::AnswerType::faces) {
+            // the sides as boxes (a plane figure's four, a solid's six) and "none", as the
+            // answers spreadsheet spells them; the expected ones ticked
+            const bool space = std::any_of(e.questions.begin(), e.questions.end(),
+                                           [](const auto& other) { return other.id.ends_with(".z"); });
+            std::vector<std::string> values = {"+x", "-x", "+y", "-y"};
+            if (space) values.insert(values.end(), {"+z", "-z"});
+            values.push_back("none");
+            std::vector<std::string> ticked;
+            for (const auto& v : values)
+              if (v == "none" ? q.faces == 0 : (q.faces & grading::face_bit(v)) != 0) ticked.push_back(v);
+            std::string v;
+            for (const auto& t : ticked) v += (v.empty() ? "" : " ") + t;
+            specs.push_back({q.id, FieldType::tick, 0, 0, false, values, true});
+            w.ticks[q.id] = ticked;
+            w.tick_style[q.id] = styles[tick_count++ % 4];
+            answers[q.id] = v;
+          } else if (q.type == grading::AnswerType::choice) {
             // the expected word and a neighbour, until the sheets lay their own choices out
             const std::string other = q.word == "before" ? "after" : "before";
             specs.push_back({q.id, FieldType::tick, 0, 0, false, {q.word, other}, false});
