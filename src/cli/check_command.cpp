@@ -36,14 +36,6 @@ struct CheckCliOptions {
   bool sandbox_info = false;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 int print_sandbox() {
   const check::SandboxReport r = check::probe_sandbox();
   fmt::print("seccomp filters: {}\n", r.seccomp ? "yes" : "NO");

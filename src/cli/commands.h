@@ -5,6 +5,10 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "exercises/spec.h"
 
@@ -23,6 +27,15 @@ int run_reporting(const char* command, Body&& body) {
     fmt::print(stderr, "{}: {}\n", command, e.what());
     return 1;
   }
+}
+
+// A file the user named, whole (a key, a spec): "FILE: cannot read" when it cannot be opened.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // Registers `epure solve`; the callback stores its exit status in `status`.

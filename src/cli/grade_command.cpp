@@ -59,14 +59,6 @@ struct GradeCliOptions {
   bool quiet = false;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The first pass over the answers: how many rows carry each sheet (two submissions of one
 // sheet are flagged on both rows), and the ids to rebuild under --spec.
 class SheetCounter final : public RowHandler {

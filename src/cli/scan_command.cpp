@@ -34,14 +34,6 @@ struct ScanCliOptions {
   bool quiet = false;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot be read", path));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 int run_scan(const ScanCliOptions& o) {
   namespace fs = std::filesystem;
   const std::string layout_path = !o.layout_file.empty() ? o.layout_file

@@ -91,17 +91,25 @@ constexpr double kCodeCropScale = 4.0;  // crop pixels per page point: a 1.3 pt 
 
 // The page code where `map` puts it, and the check of the map there: nothing when no code
 // reads there upright; a finding without a map when the code is too far from where the map
-// puts it. The crop is taken at 4 pixels a point first; a code that does not read there (a
-// blurred low-resolution scan: its modules' edges smeared further by the upsampling) is tried
-// again at the scan's own resolution, where ZXing reads what the whole page shows it.
-std::optional<PageFinding> read_code_at(const cv::Mat& grey, const PageFrame& frame, const PageMap& map) {
+// puts it. The crop is taken at 4 pixels a point (`second_look` false); find_page looks again,
+// once no orientation read, at the scan's own resolution, then 3 and 6 pixels a point: a blurred
+// 150 dpi copy, whose smeared modules the upsampling smears further, reads at one of them (7 of
+// 72 such pages failed at 4 alone, none with them).
+std::optional<PageFinding> read_code_at(const cv::Mat& grey, const PageFrame& frame, const PageMap& map, bool second_look) {
   const double margin = frame.code.width * 0.5;
   const Rect area{frame.code.x - margin, frame.code.y - margin, frame.code.width + 2 * margin, frame.code.height + 2 * margin};
   const double native = map.scale_at({frame.code.x + frame.code.width / 2, frame.code.y + frame.code.height / 2});
+  std::vector<double> scales{kCodeCropScale};
+  if (second_look) {
+    scales.clear();
+    for (const double scale : {native, 3.0, 6.0})
+      if (scale >= 1 && std::abs(scale - kCodeCropScale) >= 0.5 &&
+          std::none_of(scales.begin(), scales.end(), [&](double t) { return std::abs(scale - t) < 0.5; }))
+        scales.push_back(scale);
+  }
   std::optional<ZXing::Result> r;
   double s = kCodeCropScale;
-  for (const double scale : {kCodeCropScale, native}) {
-    if (scale != kCodeCropScale && (scale < 1 || std::abs(scale - kCodeCropScale) < 0.5)) continue;
+  for (const double scale : scales) {
     s = scale;
     // crop pixel (u, v) is page point (area.x + u / s, area.y + v / s)
     const cv::Matx33d crop_to_page(1 / s, 0, area.x, 0, 1 / s, area.y, 0, 0, 1);
@@ -263,33 +271,35 @@ PageFinding find_page(const cv::Mat& grey, const PageFrame& frame) {
   // Orientation: the page's mark k sits at image corner (k + turn) % 4. Upright and upside down
   // first, or the quarter turns first when the image is landscape and the page is not. With
   // four marks whose map misplaces the code (a blob taken for a hidden mark), each three of them
-  // are tried.
+  // are tried. All of it at the code's first look, then at its second (read_code_at).
   const bool turned = (grey.cols > grey.rows) != (frame.width > frame.height);
   const int order[4] = {turned ? 1 : 0, turned ? 3 : 2, turned ? 0 : 1, turned ? 2 : 3};
   std::vector<int> skips{-1};
   if (out.marks == 4) skips.insert(skips.end(), {0, 1, 2, 3});
   std::optional<PageFinding> rejected;
-  for (int skip : skips) {
-    for (int turn : order) {
-      std::vector<Point> page_pts, image_pts;
-      for (int k = 0; k < 4; ++k) {
-        const int corner = (k + turn) % 4;
-        const auto& m = found[static_cast<std::size_t>(corner)];
-        if (!m || corner == skip) continue;
-        page_pts.push_back(frame.marks[static_cast<std::size_t>(k)]);
-        image_pts.push_back(*m);
+  for (bool second_look : {false, true}) {
+    for (int skip : skips) {
+      for (int turn : order) {
+        std::vector<Point> page_pts, image_pts;
+        for (int k = 0; k < 4; ++k) {
+          const int corner = (k + turn) % 4;
+          const auto& m = found[static_cast<std::size_t>(corner)];
+          if (!m || corner == skip) continue;
+          page_pts.push_back(frame.marks[static_cast<std::size_t>(k)]);
+          image_pts.push_back(*m);
+        }
+        auto map = fit_map(page_pts, image_pts);
+        if (!map) continue;
+        auto attempt = read_code_at(grey, frame, *map, second_look);
+        if (!attempt) continue;
+        attempt->marks = static_cast<int>(page_pts.size());
+        if (!inks.empty()) {
+          std::sort(inks.begin(), inks.end());
+          attempt->ink = inks[inks.size() / 2];
+        }
+        if (attempt->map) return *attempt;
+        if (!rejected) rejected = attempt;
       }
-      auto map = fit_map(page_pts, image_pts);
-      if (!map) continue;
-      auto attempt = read_code_at(grey, frame, *map);
-      if (!attempt) continue;
-      attempt->marks = static_cast<int>(page_pts.size());
-      if (!inks.empty()) {
-        std::sort(inks.begin(), inks.end());
-        attempt->ink = inks[inks.size() / 2];
-      }
-      if (attempt->map) return *attempt;
-      if (!rejected) rejected = attempt;
     }
   }
   if (rejected) return *rejected;
