@@ -8,6 +8,7 @@
 #include "embed/embedded.h"
 #include "exercises/texts.h"
 #include "output/atomic_file.h"
+#include "render/markup_escape.h"
 
 namespace epure::scan {
 
@@ -42,20 +43,6 @@ std::string base64(std::string_view bytes) {
 
 // A value `epure grade` marks: read for sure, or settled by a correction.
 bool usable(const FieldResult& f) { return !f.reading.uncertain && !f.reading.blank; }
-
-std::string html_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 void replace_all(std::string& s, std::string_view what, std::string_view with) {
   for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + with.size())) s.replace(at, what.size(), with);
@@ -163,14 +150,16 @@ std::string review_html(const ScanResult& result, const SetLayout& layout) {
   json words = {{"sheet", t.get("scan.sheet")},       {"page", t.get("scan.page")},     {"question", t.get("scan.question")},
                 {"proposed", t.get("scan.proposed")}, {"why", t.get("scan.why")},       {"saved", t.get("scan.saved")},
                 {"reviewed", t.get("scan.reviewed")}, {"none", t.get("scan.review_none")}};
-  // inside a <script> element: no "</" may appear, so every '/' after '<' is escaped
+  // inside a <script> element no "</" may close it early and no "<!--" may open the script's
+  // escaped state (a question id comes from layout.json): every '<' is written as \u003c, which
+  // JSON reads back as the same character (as explore.html's configuration is written)
   std::string data = json{{"words", words}, {"fields", fields}}.dump();
-  replace_all(data, "</", "<\\/");
+  replace_all(data, "<", "\\u003c");
   std::string page(*embedded_data("review.html"));
   replace_all(page, "{{LANG}}", layout.language == "fr" ? "fr" : "en");
-  replace_all(page, "{{TITLE}}", html_escape(t.get("scan.review_title")));
-  replace_all(page, "{{INTRO}}", html_escape(t.get("scan.review_intro")));
-  replace_all(page, "{{SAVE}}", html_escape(t.get("scan.save")));
+  replace_all(page, "{{TITLE}}", render::markup_escaped(t.get("scan.review_title")));
+  replace_all(page, "{{INTRO}}", render::markup_escaped(t.get("scan.review_intro")));
+  replace_all(page, "{{SAVE}}", render::markup_escaped(t.get("scan.save")));
   replace_all(page, "{{DATA}}", data);
   return page;
 }

@@ -1,0 +1,85 @@
+// What scan writes from its readings (src/scan/scan_outputs.cpp) and the teacher's corrections
+// applied to them (scan_session.cpp: the file epure grade reads, grading/corrections.h).
+#include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "grading/corrections.h"
+#include "scan/scan_outputs.h"
+#include "scan/scan_session.h"
+
+using namespace epure;
+using namespace epure::scan;
+
+namespace {
+
+FieldResult field(std::string question, std::string value, bool uncertain) {
+  FieldResult f;
+  f.page = 1;
+  f.reading.question = std::move(question);
+  f.reading.value = std::move(value);
+  f.reading.uncertain = uncertain;
+  f.reading.why = uncertain ? "a cell below 0.75" : "";
+  return f;
+}
+
+ScanResult sample() {
+  ScanResult r;
+  SheetResult& s = r.sheets["1000-0005-000S"];
+  s.sheet = "1000-0005-000S";
+  s.pages = 1;
+  s.seen = {true};
+  for (auto f : {field("1.t", "0,4", true), field("1.position", "between", false), field("student_number", "20260000", false)})
+    s.fields.emplace(f.reading.question, f);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("scan outputs: review.html's data cannot close or escape its script, whatever layout.json names") {
+  ScanResult r = sample();
+  SheetResult& s = r.sheets.begin()->second;
+  s.fields.emplace("</script><!--<script>", field("</script><!--<script>", "1", true));
+  SetLayout layout;
+  layout.language = "fr";
+  const std::string page = review_html(r, layout);
+  const auto data_at = page.find("id=\"review-data\"");
+  REQUIRE(data_at != std::string::npos);
+  const auto open_end = page.find('>', data_at) + 1;
+  const auto close = page.find("</script>", open_end);
+  REQUIRE(close != std::string::npos);
+  const std::string data = page.substr(open_end, close - open_end);
+  CHECK(data.find('<') == std::string::npos);
+  const auto parsed = nlohmann::json::parse(data);
+  bool found = false;
+  for (const auto& f : parsed["fields"]) found |= f["question"] == "</script><!--<script>";
+  CHECK(found);
+  CHECK(parsed["fields"].size() == 2);  // the fields to review only
+}
+
+TEST_CASE("scan corrections: the file epure grade reads, each entry placed or said with its number") {
+  ScanResult r = sample();
+  const grading::Corrections c = grading::read_corrections(R"({"format": "epure-corrections", "version": 1, "corrections": [
+      {"sheet": "1000-0005-000s", "question": "1.T", "value": "0,48", "note": "a 4"},
+      {"sheet": "1000-0005-001Q", "question": "1.t", "value": "1"},
+      {"sheet": "10000005000s", "question": "2.t", "value": "1"},
+      {"sheet": "1000-0005-000S", "question": "student_number", "value": "20260001"},
+      {"sheet": "1000-0005-000S", "question": "1.t", "value": "0,49"}]})",
+                                                           "c.json");
+  REQUIRE(c.readable);
+  apply_corrections(r, c, Texts::builtin("en"));
+  const SheetResult& s = r.sheets.begin()->second;
+  const FieldResult& t = s.fields.at("1.t");
+  CHECK(t.corrected);
+  CHECK(t.reading.value == "0,49");  // the later of two entries wins, as in epure grade
+  CHECK_FALSE(t.reading.uncertain);
+  CHECK(s.student_number == "20260001");
+  CHECK(fields_to_review(r) == 0);
+  CHECK(r.problems == std::vector<std::string>{
+                          "c.json: entry 2: sheet 1000-0005-001Q was not scanned: not applied",
+                          "c.json: entry 3: sheet 1000-0005-000S has no field 2.t on its scanned pages: not applied",
+                          "c.json: entry 5: corrects 1.t of sheet 1000-0005-000S again, after entry 1: this one is applied"});
+  // answers.json holds the corrected value, not the one read
+  const auto answers = nlohmann::json::parse(answers_json(r));
+  CHECK(answers[0]["answers"]["1.t"] == "0,49");
+}
