@@ -10,7 +10,7 @@ out=${EPURE_BROWSER_OUT:-$tmp/review}
 [ -d "$here/browser/node_modules/puppeteer-core" ] || { echo "FAIL: run 'npm ci' in tests/browser first"; exit 1; }
 "$EPURE" generate --format svg --sheets 2 --seed 4 --lang fr --jobs 1 --quiet --out "$tmp/set" || { echo "FAIL: epure generate"; exit 1; }
 "$EPURE_SCAN_FIXTURE" --key "$tmp/set/key.json" --out "$tmp/scans" --sheets 2 --dpi 150 --degrade copier --format png --seed 2 >/dev/null || { echo "FAIL: fixture"; exit 1; }
-"$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out" -q 2>/dev/null
+"$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out" -q 2>"$tmp/scan.err"
 node "$here/browser/review_test.mjs" "$tmp/out/review.html" "$tmp/out/fields.csv" "$out" || exit 1
 "$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out2" \
   --corrections "$out/corrections.json" -q 2>"$tmp/err"
@@ -39,4 +39,7 @@ print(("FAIL: " if bad or said else "ok   ") + f"epure grade --corrections appli
       (f": {bad[:3]}" if bad else "") + (f"; it says: {said[:2]}" if said else ""))
 sys.exit(1 if bad or said else 0)
 PY
+# under the sanitizers a report ends a run with exit status 1, as fields to review do
+reports=$(grep -l -a -e "ERROR: AddressSanitizer" -e "ERROR: LeakSanitizer" -e "runtime error:" "$tmp"/*.err 2>/dev/null)
+[ -z "$reports" ] && echo "ok   no sanitizer report" || { echo "FAIL: sanitizer reports in: $reports"; fail=1; }
 exit $fail

@@ -95,7 +95,7 @@ for r in csv.DictReader(open(sys.argv[2])):
         out.append({"sheet": r["sheet"], "question": r["question"], "value": v, "note": "suite"})
 print(json.dumps({"format": "epure-corrections", "version": 1, "corrections": out}))
 PY
-"$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out2" --corrections "$tmp/corrections.json" -q 2>/dev/null
+"$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out2" --corrections "$tmp/corrections.json" -q 2>"$tmp/scan2.err"
 python3 "$tools/scan_figures.py" "$d/truth.json" "$d/out2" --check --max-silent 0 --max-review 0 >/dev/null 2>"$tmp/c.err" &&
   ok "corrections: nothing left to review, no wrong value" || bad "corrections: $(cat "$tmp/c.err")"
 grep -q ",corrected," "$d/out2/fields.csv" && ok "corrections: fields.csv says which were corrected" || bad "corrections: no field marked corrected"
@@ -108,7 +108,7 @@ truth = json.load(open(sys.argv[1]))["sheets"]
 scanned = {(r["sheet"], r["question"]) for r in csv.DictReader(open(sys.argv[2]))}
 print(json.dumps([{"sheet": s, "answers": {q: v for q, v in t["answers"].items() if (s, q) in scanned}} for s, t in truth.items()]))
 PY
-"$EPURE" grade --key "$key" --answers "$tmp/written.json" --json "$tmp/marks_written.json" -q 2>/dev/null
+"$EPURE" grade --key "$key" --answers "$tmp/written.json" --json "$tmp/marks_written.json" -q 2>"$tmp/grade1.err"
 "$EPURE" grade --key "$key" --answers "$d/out2/answers.json" --corrections "$tmp/corrections.json" --json "$tmp/marks_scanned.json" -q 2>"$tmp/grade2.err"
 python3 - "$tmp/marks_written.json" "$tmp/marks_scanned.json" <<'PY' && ok "the loop: scanned and corrected, every sheet gets the written answers' marks" || fail=1
 import json, sys
@@ -143,4 +143,8 @@ m=$(ls "$tmp"/s4/scan-*.png | wc -l)
 sed 's/"version": 1/"version": 9/' "$tmp/s4/layout.json" >"$tmp/layout9.json"
 "$EPURE" scan "$tmp"/s4/scan-001.png --key "$key" --layout "$tmp/layout9.json" --out "$tmp/x" -q 2>"$tmp/x.err"
 [ $? = 2 ] && grep -q "layout9.json: a layout.json of another version" "$tmp/x.err" && ok "a layout of another version refused" || bad "layout version: $(cat "$tmp/x.err")"
+# Under the sanitizers (the ASan run of .ci/bootstrap test) a report ends a run with exit status 1,
+# the status of pages or fields to review: every stderr kept above is searched for one.
+reports=$(grep -l -a -e "ERROR: AddressSanitizer" -e "ERROR: LeakSanitizer" -e "runtime error:" "$tmp"/*.err "$tmp"/s*/err "$tmp"/s*/*.err 2>/dev/null)
+[ -z "$reports" ] && ok "no sanitizer report" || bad "sanitizer reports in: $reports"
 exit $fail
