@@ -759,7 +759,11 @@ inline bool carried_within(const Run<Dual>& run) {
   };
   for (const auto& a : run.answers()) {
     if (a.type == AnswerType::number && !ok(a.x.v)) return false;
-    if (a.type == AnswerType::point && !(ok(a.x.v) & ok(a.y.v))) return false;
+    if (a.type == AnswerType::point) {
+      // both coordinates read (ok steps through the tolerances in order)
+      const bool x_ok = ok(a.x.v), y_ok = ok(a.y.v);
+      if (!(x_ok && y_ok)) return false;
+    }
   }
   return true;
 }
