@@ -234,11 +234,11 @@ Questions make_questions(const ExerciseContext& ctx, std::span<const method::Que
   // the tolerance of each numeric answer coordinate, by field (zero without the dual run)
   const std::vector<double> tol = dual ? method::tolerances(*dual) : std::vector<double>{};
   const std::vector<double> follow = dual ? method::tolerances(*dual, true) : std::vector<double>{};
-  auto tolerance_in = [&](const std::vector<double>& tol, std::string_view field) -> std::pair<double, double> {
+  auto tolerance_in = [&](const std::vector<double>& of, std::string_view field) -> std::pair<double, double> {
     if (!dual) return {0.0, 0.0};
     std::size_t k = 0;
     for (const auto& a : dual->answers()) {
-      if (a.id == field) return {tol.at(k), a.type == AnswerType::point ? tol.at(k + 1) : 0.0};
+      if (a.id == field) return {of.at(k), a.type == AnswerType::point ? of.at(k + 1) : 0.0};
       k += a.type == AnswerType::point ? 2 : a.type == AnswerType::number ? 1 : 0;
     }
     throw std::logic_error(fmt::format("method: no tolerance for '{}'", field));

@@ -454,12 +454,24 @@ inline bool on_decimal_grid(double x, int decimals) {
 // value; four significant digits keep every carried value within 0,05 %.
 inline constexpr int kCarriedDigits = 4;
 
+// Half a unit in the last of `decimals` decimals: how far writing an answer rounded moves it.
+inline double written_half_step(int decimals) { return 0.5 * std::pow(10.0, -decimals); }
+
+// The power of ten of x's first significant digit (x finite, not 0): floor(log10 |x|), mended
+// where log10 rounds across a power of ten (0,001 must give −3, 999,9999999 must give 2).
+inline int decimal_exponent(double x) {
+  const double a = std::abs(x);
+  int e = static_cast<int>(std::floor(std::log10(a)));
+  if (std::pow(10.0, e) > a) --e;
+  else if (std::pow(10.0, e + 1) <= a) ++e;
+  return e;
+}
+
 // Half a unit in the last place of x carried to kCarriedDigits significant digits: how far a
 // student's rounding moves it (0 for x = 0, which is written as it is).
 inline double carried_half_step(double x) {
   if (x == 0 || !std::isfinite(x)) return 0;
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
-  return 0.5 * std::pow(10.0, e - (kCarriedDigits - 1));
+  return 0.5 * std::pow(10.0, decimal_exponent(x) - (kCarriedDigits - 1));
 }
 
 // x as a student carries it: rounded half away from zero to kCarriedDigits significant digits.
@@ -467,8 +479,7 @@ inline double carried_half_step(double x) {
 // 1234/10000 rather than 1234·0,0001 (one rounding less).
 inline double carried(double x) {
   if (x == 0 || !std::isfinite(x)) return x;
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
-  const int k = e - (kCarriedDigits - 1);
+  const int k = decimal_exponent(x) - (kCarriedDigits - 1);
   if (k >= 0) {
     const double step = std::pow(10.0, k);
     return std::round(x / step) * step;
@@ -482,8 +493,7 @@ inline double carried(double x) {
 // steps show their values so, that a student can follow them as told.
 inline int carried_decimals(double x, int decimals) {
   if (x == 0 || !std::isfinite(x)) return decimals;
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
-  return std::clamp(kCarriedDigits - 1 - e, decimals, 12);
+  return std::clamp(kCarriedDigits - 1 - decimal_exponent(x), decimals, 12);
 }
 
 struct RunOptions {
@@ -713,26 +723,29 @@ std::optional<exact::Surd> Run<Num>::rational(double x) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Tolerances from a Dual run: for each numeric answer coordinate, in the order of answers(),
-// δ + 1.5·Σ_k |∂a/∂q_k|·δ_k, with δ = ½·10^−decimals the answer's own rounding as written and
-// δ_k how far carrying q_k to kCarriedDigits significant digits moves it. The factor 1.5 covers
-// the second-order terms the derivatives leave out and a student who rounds a step twice; it is
-// not applied to δ (only a relative 10⁻⁹, so that 0,13 for 0,125 is not lost to binary
-// rounding), so that an answer of 0,1 written to two decimals keeps its 5 %.
-//
-// With `as_written`, the steps that are answers count at their written rounding δ instead: the
-// tolerance of follow-through, where grading goes on from the answers as the student wrote them
-// while the student went on with more digits.
-inline std::vector<double> tolerances(const Run<Dual>& run, bool as_written = false) {
-  const double delta = 0.5 * std::pow(10.0, -run.options().decimals);
+
+// Each numeric answer coordinate's value, in the order of answers() (a point gives x then y).
+inline std::vector<double> coordinate_values(const Run<Dual>& run) {
+  std::vector<double> out;
+  for (const auto& a : run.answers()) {
+    if (a.type == AnswerType::number) out.push_back(a.x.v);
+    if (a.type == AnswerType::point) out.insert(out.end(), {a.x.v, a.y.v});
+  }
+  return out;
+}
+
+// The part of each tolerance the carried steps make: 1.5·Σ_k |∂a/∂q_k|·δ_k, per coordinate in
+// the order of coordinate_values.
+inline std::vector<double> carried_errors(const Run<Dual>& run, bool as_written) {
+  const double delta = written_half_step(run.options().decimals);
   std::vector<double> out;
   auto one = [&](const Dual& x) {
-    double carried_error = 0;
+    double sum = 0;
     for (int k = 0; k < run.rounded_count(); ++k) {
       const double step = as_written && run.slot_written(k) ? std::max(delta, run.slot_half_step(k)) : run.slot_half_step(k);
-      carried_error += std::abs(x.d[k]) * step;
+      sum += std::abs(x.d[k]) * step;
     }
-    out.push_back(delta * (1 + 1e-9) + 1.5 * carried_error);
+    out.push_back(1.5 * sum);
   };
   for (const auto& a : run.answers()) {
     if (a.type == AnswerType::number) one(a.x);
@@ -744,27 +757,32 @@ inline std::vector<double> tolerances(const Run<Dual>& run, bool as_written = fa
   return out;
 }
 
+// Tolerances from a Dual run: for each numeric answer coordinate, in the order of answers(),
+// δ + 1.5·Σ_k |∂a/∂q_k|·δ_k, with δ = ½·10^−decimals the answer's own rounding as written and
+// δ_k how far carrying q_k to kCarriedDigits significant digits moves it. The factor 1.5 covers
+// the second-order terms the derivatives leave out and a student who rounds a step twice; it is
+// not applied to δ (only a relative 10⁻⁹, so that 0,13 for 0,125 is not lost to binary
+// rounding), so that an answer of 0,1 written to two decimals keeps its 5 %.
+//
+// With `as_written`, the steps that are answers count at their written rounding δ instead: the
+// tolerance of follow-through, where grading goes on from the answers as the student wrote them
+// while the student went on with more digits.
+inline std::vector<double> tolerances(const Run<Dual>& run, bool as_written = false) {
+  const double delta = written_half_step(run.options().decimals);
+  std::vector<double> out = carried_errors(run, as_written);
+  for (double& t : out) t += delta * (1 + 1e-9);
+  return out;
+}
+
 // Whether the steps a student carries move no answer of |v| ≥ 0.1 by more than kMaxCarriedShare
 // of it (beyond the answer's own rounding, which at 0.1 is itself 5 %). A figure where they do is
 // ill-conditioned (a ray nearly tangent, a normal from a nearly flat ellipse): its tolerance
 // would not tell a right answer from a slip, so the draws reject it.
 inline constexpr double kMaxCarriedShare = 0.05;
 inline bool carried_within(const Run<Dual>& run) {
-  const double own = 0.5 * std::pow(10.0, -run.options().decimals);
-  const std::vector<double> tol = tolerances(run);
-  std::size_t k = 0;
-  auto ok = [&](double v) {
-    const double t = tol.at(k++);
-    return std::abs(v) < 0.1 || t - own * (1 + 1e-9) <= kMaxCarriedShare * std::abs(v);
-  };
-  for (const auto& a : run.answers()) {
-    if (a.type == AnswerType::number && !ok(a.x.v)) return false;
-    if (a.type == AnswerType::point) {
-      // both coordinates read (ok steps through the tolerances in order)
-      const bool x_ok = ok(a.x.v), y_ok = ok(a.y.v);
-      if (!(x_ok && y_ok)) return false;
-    }
-  }
+  const std::vector<double> values = coordinate_values(run), carried = carried_errors(run, false);
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (std::abs(values[k]) >= 0.1 && carried[k] > kMaxCarriedShare * std::abs(values[k])) return false;
   return true;
 }
 

@@ -63,7 +63,7 @@ Limits limits(const ExerciseContext& ctx, const ExerciseKind& kind) {
           constraint(ctx, kind, "width"),
           constraint(ctx, kind, "height"),
           constraint(ctx, kind, "max_canonical"),
-          constraint(ctx, kind, "max_amplification") * 0.5 * std::pow(10.0, -ctx.decimals)};
+          constraint(ctx, kind, "max_amplification") * method::written_half_step(ctx.decimals)};
 }
 
 std::optional<Data> draw_data(Rng& rng, Difficulty level, Shape shape, bool inside, const Limits& lim) {
