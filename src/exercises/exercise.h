@@ -176,11 +176,12 @@ class ExerciseKind {
   virtual bool solves(const solve::Fields& figure) const = 0;
   virtual void solve_figure(const solve::Fields& figure, solve::Result& result) const = 0;
   // The method run on an instance read by read_instance: with `given`, on the student's own
-  // answers where they gave them; with `mistake`, taking that mistake's road. The answers in
-  // the order the method reaches them, each with the answers it was computed from.
+  // answers where they gave them; with a mistake switched on, making it; with a road, taking
+  // that other right road (roads()). The answers in the order the method reaches them, each
+  // with the answers it was computed from.
   virtual std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data,
                                                                  const method::GivenAnswers* given,
-                                                                 std::string_view mistake, int decimals) const = 0;
+                                                                 method::Switches switches, int decimals) const = 0;
   // The method as a student works it by the sheet's instruction: each step carried to
   // method::kCarriedDigits significant digits (the answers not yet rounded for writing), going
   // on from the student's own carried answers where `given` has them. What the tolerances (and

@@ -265,8 +265,8 @@ class MethodKind : public ExerciseKind {
   }
 
   std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data, const method::GivenAnswers* given,
-                                                         std::string_view mistake, int decimals) const override {
-    method::Run<method::Traced> run({Kind::kQuestions, decimals, mistake, given});
+                                                         method::Switches switches, int decimals) const override {
+    method::Run<method::Traced> run({Kind::kQuestions, decimals, switches, given});
     Kind::method(run, std::any_cast<const Data&>(data));
     return run.answers();
   }

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <bit>
 #include <cstdint>
 #include <initializer_list>
 #include <numbers>
@@ -218,7 +219,17 @@ inline double sqrt(double x) { return std::sqrt(x); }
 // (the only ones a hand computation gives in whole degrees); correctly rounded, as the core's
 // angle (portable.h): the same bits natively and in the explorer's WebAssembly.
 inline double atan2_degrees(double s, double c) { return portable::atan2(s, c) * (180.0 / std::numbers::pi); }
-inline Traced atan2_degrees(Traced s, Traced c) { return {atan2_degrees(s.v, c.v), s.deps | c.deps}; }
+// Grading runs the method once per named mistake on one student's answers, mostly with the same
+// sine and cosine (a mistake elsewhere): the correctly rounded atan2 is the run's dearest step,
+// so the last pair's angle is kept, per thread.
+inline Traced atan2_degrees(Traced s, Traced c) {
+  thread_local bool have = false;
+  thread_local std::uint64_t last_s = 0, last_c = 0;
+  thread_local double last = 0;
+  const auto bs = std::bit_cast<std::uint64_t>(s.v), bc = std::bit_cast<std::uint64_t>(c.v);
+  if (!have || bs != last_s || bc != last_c) last = atan2_degrees(s.v, c.v), last_s = bs, last_c = bc, have = true;
+  return {last, s.deps | c.deps};
+}
 inline Dual atan2_degrees(const Dual& s, const Dual& c) {
   Dual r{atan2_degrees(s.v, c.v)};
   const double k = (180.0 / std::numbers::pi) / (s.v * s.v + c.v * c.v);
@@ -496,13 +507,24 @@ inline int carried_decimals(double x, int decimals) {
   return std::clamp(kCarriedDigits - 1 - decimal_exponent(x), decimals, 12);
 }
 
+// What one run of a method switches on: a named mistake, another right road (Run::road), both
+// (the mistake made on that road: û left unnormalised, then d² by the cross product), or
+// neither.
+struct Switches {
+  Switches() = default;
+  Switches(std::string_view mistake_, std::string_view road_ = {}) : mistake(mistake_), road(road_) {}
+  Switches(const char* mistake_) : mistake(mistake_) {}
+  std::string_view mistake, road;
+};
+
 struct RunOptions {
-  RunOptions(std::span<const QuestionDecl> questions_, int decimals_, std::string_view mistake_ = {},
+  RunOptions(std::span<const QuestionDecl> questions_, int decimals_, Switches switches = {},
              const GivenAnswers* given_ = nullptr)
-      : questions(questions_), decimals(decimals_), mistake(mistake_), given(given_) {}
+      : questions(questions_), decimals(decimals_), mistake(switches.mistake), road(switches.road), given(given_) {}
   std::span<const QuestionDecl> questions;  // the kind's declared questions (for deps bits)
   int decimals = 2;                          // what the student rounds answers to
   std::string_view mistake;                  // the named mistake switched on, or none
+  std::string_view road;                     // the other right road taken, or the usual one
   const GivenAnswers* given = nullptr;       // the student's answers (Traced)
   // Traced: each rounded step carried as the sheet says (`carried`), as a student computes;
   // what the tolerances must accept (tests/exercises/tolerance_property_test.cpp)
@@ -623,7 +645,7 @@ class Run {
   // earlier answers. Not a mistake: the key shows the first road.
   template <class T>
   T road(std::string_view name, T usual, T other) {
-    return name == o_.mistake ? other : usual;
+    return name == o_.road ? other : usual;
   }
 
   // ---- named mistakes: the wrong road, taken only when that mistake is switched on

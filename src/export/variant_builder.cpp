@@ -1,9 +1,12 @@
 #include "export/variant_builder.h"
 
+#include <memory>
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "exercises/kind_support.h"
 #include "geometry/box_faces.h"
@@ -81,8 +84,15 @@ bool changes(const std::vector<Recorded<Traced>>& run, const std::vector<Recorde
 }  // namespace
 
 struct VariantBuilder::Runs {
+  // A named mistake's run on one of the method's roads, and the right run on that road (what
+  // the mistake is measured from: the roads differ by the rounding of their steps).
+  struct Mistake {
+    std::string_view code;
+    std::vector<Recorded<Traced>> run;
+    std::shared_ptr<const std::vector<Recorded<Traced>>> right;
+  };
   std::vector<Recorded<Traced>> key;
-  std::vector<std::pair<std::string_view, std::vector<Recorded<Traced>>>> mistakes;
+  std::vector<Mistake> mistakes;
 };
 
 Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::ExerciseKey& ex, const ExerciseInstance& inst,
@@ -96,7 +106,7 @@ Variant VariantBuilder::build(const grading::SheetKey& sheet, const grading::Exe
   std::vector<std::size_t> origin(runs.mistakes.size(), ex.questions.size());
   for (std::size_t k = 0; k < runs.mistakes.size(); ++k)
     for (std::size_t i = 0; i < ex.questions.size() && origin[k] == ex.questions.size(); ++i)
-      if (changes(runs.mistakes[k].second, runs.key, ex.questions[i])) origin[k] = i;
+      if (changes(runs.mistakes[k].run, *runs.mistakes[k].right, ex.questions[i])) origin[k] = i;
   for (std::size_t i = 0; i < ex.questions.size(); ++i) {
     // the mistakes first made on this answer before those carried from an earlier one:
     // grading tries each mistake on the student's own earlier answers first, so that for a
@@ -174,7 +184,15 @@ VariantBuilder::Runs VariantBuilder::evaluate(const ExerciseKind* kind, const gr
   if (!kind || kind->questions().empty()) return r;
   const std::any data = kind->read_instance(ex.instance);
   r.key = kind->evaluate(data, nullptr, {}, decimals_);
-  for (std::string_view code : kind->mistakes()) r.mistakes.emplace_back(code, kind->evaluate(data, nullptr, code, decimals_));
+  // each mistake on the usual road, then on each other right road the kind declares (as
+  // grading tries them: û left unnormalised, then d² by the course's cross product)
+  std::vector<std::string_view> roads{""};
+  for (auto road : kind->roads()) roads.push_back(road);
+  for (auto road : roads) {
+    auto right = std::make_shared<const std::vector<Recorded<Traced>>>(kind->evaluate(data, nullptr, {"", road}, decimals_));
+    for (std::string_view code : kind->mistakes())
+      r.mistakes.push_back({code, kind->evaluate(data, nullptr, {code, road}, decimals_), right});
+  }
   return r;
 }
 
@@ -266,13 +284,18 @@ Part VariantBuilder::part(const ExerciseKind* kind, const QuestionKey& q, const 
       const double right = rule_width(q.rule, q.number);
       p.width = conservative_width(right, q.number);
       if (q.rule.kind == ToleranceRule::Kind::distance) p.radius = conservative_width(q.rule.abs, q.number);
-      const auto base = number_in(runs.key, q);
-      for (const auto& [code, run] : runs.mistakes) {
+      for (const auto& [code, run, right] : runs.mistakes) {
         const auto value = number_in(run, q);
-        // as grading does: a mistake that leaves the answer where it is says nothing of it;
-        // every other one is listed, in grading's order, even where an earlier one (or the
-        // right answer) already answers (a platform tries them in order, as grading does)
+        const auto base = number_in(*right, q);
+        // as grading does: a mistake that leaves the answer where its road has it says nothing
+        // of it; every other one is listed, in grading's order, even where an earlier one (or
+        // the right answer) already answers (a platform tries them in order, as grading does),
+        // once for each value it gives (on another road it often gives the same, but for the
+        // rounding of the road's steps)
         if (!value || !std::isfinite(*value) || (base && unchanged(*value, *base))) continue;
+        bool known = false;
+        for (const auto& m : p.mistakes) known = known || (m.code == code && std::fabs(m.value - *value) <= m.width);
+        if (known) continue;
         MistakeAnswer m;
         m.code = std::string(code);
         m.value = *value;
@@ -296,9 +319,9 @@ Part VariantBuilder::part(const ExerciseKind* kind, const QuestionKey& q, const 
       if (std::none_of(p.options.begin(), p.options.end(), [&](const Option& o) { return o.id == q.word; }))
         p.options.push_back({q.word, wording(q.word), false});
       for (auto& o : p.options) o.right = o.id == q.word;
-      for (const auto& [code, run] : runs.mistakes) {
+      for (const auto& [code, run, right] : runs.mistakes) {
         const auto* a = find_answer(run, q.field);
-        const auto* b = find_answer(runs.key, q.field);
+        const auto* b = find_answer(*right, q.field);
         if (!a || a->type != method::AnswerType::choice || a->word == q.word || (b && a->word == b->word)) continue;
         bool known = false;
         for (const auto& m : p.mistakes) known = known || m.options.front() == a->word;
@@ -311,9 +334,9 @@ Part VariantBuilder::part(const ExerciseKind* kind, const QuestionKey& q, const 
       p.type = Part::Type::faces;
       p.options = side_options(kind, q.field);
       for (auto& o : p.options) o.right = o.id == "none" ? q.faces == 0 : (q.faces & grading::face_bit(o.id)) != 0;
-      for (const auto& [code, run] : runs.mistakes) {
+      for (const auto& [code, run, right] : runs.mistakes) {
         const auto* a = find_answer(run, q.field);
-        const auto* b = find_answer(runs.key, q.field);
+        const auto* b = find_answer(*right, q.field);
         if (!a || a->type != method::AnswerType::faces || a->faces == q.faces || (b && a->faces == b->faces)) continue;
         bool known = false;
         const auto options = face_names(a->faces);

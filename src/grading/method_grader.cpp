@@ -1,6 +1,8 @@
 #include "grading/method_grader.h"
 
 #include <array>
+#include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -196,12 +198,66 @@ bool student_fits(const ExerciseReview& r, const Unit& u, const Unit& theirs) {
   return true;
 }
 
+using Answers = std::vector<Recorded<Traced>>;
+
+// Runs of the method made on first use, by index (a road, a mistake).
+class Lazy {
+ public:
+  template <class Make>
+  Lazy(std::size_t n, Make make) : runs_(n), make_(std::move(make)) {}
+  std::size_t size() const { return runs_.size(); }
+  const Answers& operator[](std::size_t k) {
+    if (!runs_[k]) runs_[k] = &own_.emplace_back(make_(k));
+    return *runs_[k];
+  }
+
+ private:
+  std::vector<const Answers*> runs_;
+  std::deque<Answers> own_;  // stable addresses
+  std::function<Answers(std::size_t)> make_;
+};
+
+// The method's runs on the key's data alone, without the student's answers (the key's values,
+// and each named mistake made on them): they depend on the instance only, so a sheet's rows
+// share them. Made on first use, for the `decimals` a grading asks.
+class KeyRuns {
+ public:
+  const Answers& run(const ExerciseKind& kind, const std::any& data, method::Switches switches, int decimals) const {
+    std::lock_guard lock(mutex_);
+    const auto key = std::pair{std::string(switches.mistake), std::string(switches.road)};
+    auto it = runs_.find(key);
+    if (it == runs_.end()) it = runs_.emplace(key, kind.evaluate(data, nullptr, switches, decimals)).first;
+    return it->second;  // a std::map's elements stay where they are
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::map<std::pair<std::string, std::string>, Answers> runs_;
+};
+
+// What prepare() makes of an instance: the kind's reading of it, and the runs on its data alone.
+struct PreparedExercise {
+  explicit PreparedExercise(std::any d) : data(std::move(d)) {}
+  std::any data;
+
+  const KeyRuns& key_runs(int decimals) const {
+    std::lock_guard lock(mutex_);
+    return by_decimals_[decimals];
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::map<int, KeyRuns> by_decimals_;
+};
+
 class MethodGrader final : public KindGrader {
  public:
   explicit MethodGrader(const ExerciseKind& kind) : kind_(kind) {}
 
   std::string_view kind() const override { return kind_.name(); }
-  std::any prepare(const nlohmann::json& instance) const override { return kind_.read_instance(instance); }
+  std::any prepare(const nlohmann::json& instance) const override {
+    return std::make_shared<const PreparedExercise>(kind_.read_instance(instance));
+  }
   std::vector<std::string_view> mistakes() const override {
     const auto m = kind_.mistakes();
     return {m.begin(), m.end()};
@@ -214,22 +270,33 @@ class MethodGrader final : public KindGrader {
   // from agree with it (never against their own right answers: u_c given right, t is not "u_c
   // renormalised"). A mistake is counted once: named on the first answer it explains (a point as
   // a whole), it credits the later answers that carry it on as follow-through.
-  void review(const std::any& prepared, ExerciseReview& r) const override {
+  void review(const std::any& prepared_any, ExerciseReview& r) const override {
+    const auto& prepared = *std::any_cast<const std::shared_ptr<const PreparedExercise>&>(prepared_any);
+    const std::any& data = prepared.data;
     const auto decls = kind_.questions();
     const auto codes = kind_.mistakes();
     const auto roads = kind_.roads();
     const GivenFromReview given(r);
     const int decimals = r.decimals();
-    const auto base = kind_.evaluate(prepared, &given, {}, decimals);
-    std::vector<std::vector<Recorded<Traced>>> road_runs, theirs, pure;
-    for (auto road : roads) road_runs.push_back(kind_.evaluate(prepared, &given, road, decimals));
-    // each mistake on the student's own earlier answers, and on the key's data alone (a wrong
-    // answer next to blank earlier ones: J given as I, t not given)
-    for (auto code : codes) {
-      theirs.push_back(kind_.evaluate(prepared, &given, code, decimals));
-      pure.push_back(kind_.evaluate(prepared, nullptr, code, decimals));
-    }
-    const auto key_values = kind_.evaluate(prepared, nullptr, {}, decimals);
+    const auto base = kind_.evaluate(data, &given, {}, decimals);
+    // The other runs are made when first asked: most wrong answers are settled by
+    // follow-through or by the first mistakes tried. Those on the key's data alone are the
+    // instance's, made once for every row of the sheet (PreparedExercise).
+    // the usual road (0) and each other right road the kind declares (1…)
+    const std::size_t n_roads = roads.size() + 1;
+    auto road = [&](std::size_t j) { return j == 0 ? std::string_view{} : roads[j - 1]; };
+    Lazy road_runs(roads.size(), [&](std::size_t j) { return kind_.evaluate(data, &given, {"", roads[j]}, decimals); });
+    auto right_on = [&](std::size_t j) -> const Answers& { return j == 0 ? base : road_runs[j - 1]; };
+    // each mistake on each road, on the student's own earlier answers, and on the key's data
+    // alone (a wrong answer next to blank earlier ones: J given as I, t not given)
+    Lazy theirs(n_roads * codes.size(), [&](std::size_t jk) {
+      return kind_.evaluate(data, &given, {codes[jk % codes.size()], road(jk / codes.size())}, decimals);
+    });
+    const KeyRuns& alone = prepared.key_runs(decimals);
+    auto key_on = [&](std::size_t j) -> const Answers& { return alone.run(kind_, data, {"", road(j)}, decimals); };
+    auto pure = [&](std::size_t k, std::size_t j) -> const Answers& {
+      return alone.run(kind_, data, {codes[k], road(j)}, decimals);
+    };
     const std::vector<Unit> units = units_of(base);
     struct Named {
       method::Deps bits;        // the answers it was named on
@@ -278,7 +345,11 @@ class MethodGrader final : public KindGrader {
                         const std::vector<Recorded<Traced>>& right) {
       const Unit b = same_unit(run, units[at]), usual = same_unit(right, units[at]);
       if (!b || (usual && b.same(usual))) return false;
-      if (auto it = named.find(codes[k]); it != named.end() && (b.deps() & it->second.bits))
+      // An answer computed from the one the mistake was named on, by the road taken or by the
+      // usual one, carries it on: d² by the course's cross product does not go through t_proj,
+      // but the usual road's d² does, and both carry the same unnormalised û. (t_ab and t_cd
+      // swapped are two slips of one name: neither is computed from the other.)
+      if (auto it = named.find(codes[k]); it != named.end() && ((b.deps() | units[at].deps()) & it->second.bits))
         return follow(r, b, it->second.names, codes[k]);
       // (the student's answer fitting the mistake first: the cheap test, which most fail)
       if (!student_fits(r, units[at], b) || !consistent(at, run, right) || !name_mistake(r, b, codes[k]))
@@ -293,9 +364,14 @@ class MethodGrader final : public KindGrader {
       if (!is_open(a)) continue;
       if (follows(a)) continue;
       bool done = false;
-      for (std::size_t k = 0; k < road_runs.size() && !done; ++k) done = follows(same_unit(road_runs[k], a));
-      for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, i, theirs[k], base);
-      for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, i, pure[k], key_values);
+      for (std::size_t j = 0; j < road_runs.size() && !done; ++j) done = follows(same_unit(road_runs[j], a));
+      // the mistakes on the usual road first, then on each other one (û left unnormalised, then
+      // d² by the course's cross product)
+      for (std::size_t j = 0; j < n_roads && !done; ++j)
+        for (std::size_t k = 0; k < codes.size() && !done; ++k)
+          done = explains(k, i, theirs[j * codes.size() + k], right_on(j));
+      for (std::size_t j = 0; j < n_roads && !done; ++j)
+        for (std::size_t k = 0; k < codes.size() && !done; ++k) done = explains(k, i, pure(k, j), key_on(j));
     }
   }
 

@@ -294,13 +294,19 @@ TEST_CASE("the ball's method in space: a sphere whose figure lies in z = 0 is th
                              {"u", {flat["u"][0], flat["u"][1], 0}},
                              {"C", {flat["C"][0], flat["C"][1], 0}},
                              {"r", flat["r"]}};
-      std::vector<std::string_view> roads_and_mistakes{""};
-      for (auto m : circle->mistakes()) roads_and_mistakes.push_back(m);
-      for (auto r : circle->roads()) roads_and_mistakes.push_back(r);
-      for (std::string_view mistake : roads_and_mistakes) {
-        CAPTURE(mistake);
-        const auto a = test::method_answers(flat.dump(), mistake);
-        const auto b = test::method_answers(in_space.dump(), mistake);
+      // every mistake on every road, and each road alone
+      std::vector<method::Switches> runs;
+      std::vector<std::string_view> roads{""};
+      for (auto r : circle->roads()) roads.push_back(r);
+      for (auto road : roads) {
+        runs.push_back({"", road});
+        for (auto m : circle->mistakes()) runs.push_back({m, road});
+      }
+      for (const method::Switches& run : runs) {
+        CAPTURE(run.mistake);
+        CAPTURE(run.road);
+        const auto a = test::method_answers(flat.dump(), run);
+        const auto b = test::method_answers(in_space.dump(), run);
         for (const auto& [field, values] : a) {
           CAPTURE(field);
           if (values.size() == 1) {

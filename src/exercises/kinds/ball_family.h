@@ -86,6 +86,17 @@ RayBranch branch_of(const Result& r) {
   return *r.reason == geo::NoHit::behind ? RayBranch::behind : RayBranch::miss;
 }
 
+// (a∧b)²: the square of the plane's cross product, the squared norm of space's.
+template <class T>
+T squared_norm_of_cross(const method::V2<T>& a, const method::V2<T>& b) {
+  const T c = cross(a, b);
+  return c * c;
+}
+template <class T>
+T squared_norm_of_cross(const method::V3<T>& a, const method::V3<T>& b) {
+  return norm2(cross(a, b));
+}
+
 // The family, for MethodKind (kind_method.h): a kind adds its kName and kPoints.
 template <int Dim>
 struct Family {
@@ -101,7 +112,7 @@ struct Family {
   }
 
   static constexpr auto& kQuestions = S::kQuestions;
-  static constexpr std::string_view kRoads[] = {"pythagoras_apc"};
+  static constexpr std::string_view kRoads[] = {"pythagoras_apc", "cross_product"};
   static constexpr std::string_view kMistakes[] = {"direction_not_unit", "far_intersection", "near_root_inside",
                                                    "normal_not_unit", "normal_inward"};
 
@@ -132,8 +143,13 @@ struct Family {
     m.tell(inside ? "ahead.inside" : ahead ? "ahead.outside" : "behind");
     const auto P = m.round(S::P, A + t_proj * uh);
     m.tell("P", {{"P", "P", Shown::point}});
-    // d² = CP², or by Pythagoras in the triangle A–P–C: AC² − t_proj²
-    const auto d2 = m.number("d2", m.round("d2", m.road("pythagoras_apc", norm2(P - C), ac2 - t_proj * t_proj)));
+    // d² = CP², or by Pythagoras in the triangle A–P–C: AC² − t_proj², or as the course
+    // computes it, the squared cross product (û∧AC)² (the area of the parallelogram on û and AC
+    // over a base of length 1), which does not go through t_proj
+    const auto d2 = m.number(
+        "d2", m.round("d2", m.road("cross_product",
+                                   m.road("pythagoras_apc", norm2(P - C), ac2 - t_proj * t_proj),
+                                   squared_norm_of_cross(uh, AC))));
     m.tell("d2", {{"d2", "d2"}});
     const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, r2)));
     if (!hit) {

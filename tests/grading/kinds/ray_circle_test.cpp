@@ -77,3 +77,36 @@ TEST_CASE("ray_circle: A inside, the root behind A") {
   const auto m = mark(key, {{"t", fmt::format("{:.2f}", behind)}});
   CHECK(m["t"].mistake == "near_root_inside");
 }
+
+// Issue 31's sheet 1000-0005-001Q (French set, seed 5): A(4,8), u = (4,1), C(1,3), r = 2.
+// The course computes d² = (û∧AC)². A student who forgot to normalise u writes t_proj = u·AC =
+// −17 and, by the course's formula with u, d² = (u∧AC)² = (4·(−5) − 1·(−3))² = 289: one slip
+// (û left as u), named once on t_proj; d² carries it on by the course's road, although it is
+// not computed from t_proj.
+TEST_CASE("ray_circle: u not normalised, then d² by the course's cross product: one slip, carried on") {
+  const auto key = exercise(R"({"kind":"ray_circle","A":[4,8],"u":[4,1],"C":[1,3],"r":2})",
+                            {"t_proj", "d2", "inside", "hit", "reason"});
+  const auto m = mark(key, {{"t_proj", "-17"}, {"d2", "289"}, {"inside", "no"}, {"hit", "no"}, {"reason", "behind"}});
+  CHECK(m["t_proj"].mistake == "direction_not_unit");
+  CHECK(m["d2"].verdict == Verdict::follow_through);
+  CHECK(m["d2"].from == "t_proj");
+  // the right û and the course's formula: (û∧AC)² = 289/17 = 17, the key's own d²
+  CHECK(mark(key, {{"t_proj", "-4.12"}, {"d2", "17"}})["d2"].verdict == Verdict::right);
+  // d² alone by the cross product with u unnormalised, t_proj left blank: the slip is named on d²
+  const auto alone = mark(key, {{"d2", "289"}});
+  CHECK(alone["d2"].mistake == "direction_not_unit");
+  // 289 next to a right t_proj is not that slip: the student's own û was right
+  const auto against = mark(key, {{"t_proj", "-4.12"}, {"d2", "289"}});
+  CHECK(against["d2"].verdict == Verdict::wrong);
+  CHECK(against["d2"].mistake.empty());
+}
+
+// Sheet 1000-0005-000S: A(1,8), u = (2,−4), C(4,5). With u unnormalised the course's formula
+// gives d² = (u∧AC)² = 6² = 36 (the usual road, CP² with P = A + t·u, gives 5,850): both are
+// that slip, on their road.
+TEST_CASE("ray_circle: u not normalised, d² on either road is the same slip") {
+  const auto key = exercise(R"({"kind":"ray_circle","A":[1,8],"u":[2,-4],"C":[4,5],"r":2})",
+                            {"t_proj", "d2", "inside", "hit", "t", "I.x", "I.y", "N.x", "N.y"});
+  CHECK(mark(key, {{"d2", "36"}})["d2"].mistake == "direction_not_unit");
+  CHECK(mark(key, {{"d2", "5850"}})["d2"].mistake == "direction_not_unit");
+}
