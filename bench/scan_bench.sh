@@ -11,8 +11,8 @@ build=${1:?usage: scan_bench.sh BUILD_DIR [SHEETS] [PASSES]}
 sheets=${2:-30}
 passes=${3:-10}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-"$build/epure" generate --format svg --sheets "$sheets" --seed 5 --lang fr --quiet --out "$tmp/set"
-"$build/epure_scan_fixture" --key "$tmp/set/key.json" --out "$tmp/scans" --sheets "$sheets" --dpi 200 --format pdf --degrade copier --seed 9 >/dev/null
+"$build/epure" generate --format pdf --sheets "$sheets" --seed 5 --lang fr --quiet --out "$tmp/set"
+"$build/epure_scan_fixture" --key "$tmp/set/key.json" --set "$tmp/set" --out "$tmp/scans" --sheets "$sheets" --dpi 200 --format pdf --degrade copier --seed 9 >/dev/null
 pages=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['pages']))" "$tmp/scans/truth.json")
 inputs=()
 for _ in $(seq "$passes"); do inputs+=("$tmp/scans/scans.pdf"); done

@@ -10,6 +10,8 @@
 
 #include "cli/commands.h"
 #include "exercises/spec.h"
+#include "exercises/texts.h"
+#include "grading/roster.h"
 #include "exercises/worksheet.h"
 #include "output/explore_page.h"
 #include "output/generate.h"
@@ -32,7 +34,36 @@ struct GenerateCliOptions {
   bool duplex = false;
   bool quiet = false;
   int jobs = 0;  // 0: every core
+  std::string roster;
+  bool sheets_given = false;
 };
+
+// The roster's students, one sheet each. A problem that would leave a student without a sheet
+// or two with one number (a duplicate number, a row without a number, no number column, an
+// empty or unreadable file) stops the run before anything is written: sheets printed for a
+// class that cannot be told apart are paper wasted. A missing name or a bad e-mail is said and
+// the sheets are made. Every problem is said with the file and its line. Nothing when the
+// roster is refused.
+std::optional<std::vector<SheetStudent>> read_students(const std::string& path, const Texts& texts) {
+  const grading::Roster roster = grading::read_roster(path);
+  bool refused = false;
+  for (const auto& p : roster.problems) {
+    const std::string where = p.line > 0 ? fmt::format("{}:{}", path, p.line) : path;
+    fmt::print(stderr, "epure generate: {}: {}: {}\n", where, p.error ? "error" : "warning", describe(p, texts));
+    refused = refused || p.error;
+  }
+  if (roster.students.empty() && !refused) {
+    fmt::print(stderr, "epure generate: {}: error: no student in the roster\n", path);
+    refused = true;
+  }
+  if (refused) {
+    fmt::print(stderr, "epure generate: {}: the roster has errors: no sheet written\n", path);
+    return std::nullopt;
+  }
+  std::vector<SheetStudent> students;
+  for (const auto& e : roster.students) students.push_back({e.number, e.name, e.email});
+  return students;
+}
 
 // A bar on stderr when it is a terminal and the run has lasted more than a second.
 class Progress {
@@ -60,6 +91,7 @@ std::string written_files(const output::GenerateOptions& o) {
   if (o.svg) files += "sheets/*.svg, keys/*.svg, ";
   if (o.pdf) files += o.split ? "sheets/*.pdf, keys/*.pdf, " : "sheets.pdf, keys.pdf, ";
   files += "key.json";
+  if (o.svg || o.pdf) files += ", layout.json";
   if (o.svg) files += ", index.html";
   if (o.svg && output::explore_available()) files += ", explore.html";
   return files;
@@ -89,6 +121,21 @@ int run_generate(const GenerateCliOptions& o) {
 
   output::GenerateOptions options;
   options.sheets = o.sheets;
+  if (!o.roster.empty()) {
+    auto students = read_students(o.roster, Texts::builtin(set.language()));
+    if (!students) return 2;
+    if (o.sheets_given && o.sheets != static_cast<int>(students->size())) {
+      fmt::print(stderr, "epure generate: --sheets {} with a roster of {} students: a roster makes one sheet per student (leave --sheets out)\n",
+                 o.sheets, students->size());
+      return 2;
+    }
+    if (students->size() > static_cast<std::size_t>(kMaxSheets)) {
+      fmt::print(stderr, "epure generate: {}: {} students: a set holds at most {} sheets\n", o.roster, students->size(), kMaxSheets);
+      return 2;
+    }
+    options.sheets = static_cast<int>(students->size());
+    options.students = std::move(*students);
+  }
   options.out = o.out;
   options.svg = std::find(o.formats.begin(), o.formats.end(), "svg") != o.formats.end();
   options.pdf = std::find(o.formats.begin(), o.formats.end(), "pdf") != o.formats.end();
@@ -112,7 +159,11 @@ void add_generate_command(CLI::App& app, int& status) {
   auto o = std::make_shared<GenerateCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "generate", "Write a randomised worksheet set and its answer keys (default: the course's worksheet)");
-  cmd->add_option("--sheets,-n", o->sheets, "Number of sheets")->check(CLI::Range(1, 32768))->capture_default_str();
+  cmd->add_option("--sheets,-n", o->sheets, "Number of sheets")->check(CLI::Range(1, 32768))->capture_default_str()
+      ->each([o](const std::string&) { o->sheets_given = true; });
+  cmd->add_option("--roster", o->roster,
+                  "Class roster (CSV: student number; name; optional e-mail): one sheet per student, their name and number printed on it")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--seed,-s", o->seed, "Seed of the set (0 to 2^35-1); same spec + seed = same files")
       ->check(CLI::Range(std::uint64_t{0}, (std::uint64_t{1} << 35) - 1))
       ->capture_default_str();

@@ -56,13 +56,20 @@ void KeyJson::begin(fmt::memory_buffer& out, const WorksheetSet& set, std::strin
   out.push_back('[');
 }
 
-void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first) {
+void KeyJson::sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first, const SheetStudent* student) {
   if (!first) out.push_back(',');
   out.push_back('\n');
   JsonWriter w(out);
   w.begin_object();
   w.field("id", std::string_view(sheet.id.str()));
   w.key("index").integer(sheet.id.index);
+  if (student) {
+    w.key("student").begin_object();
+    w.field("number", std::string_view(student->number));
+    w.field("name", std::string_view(student->name));
+    if (!student->email.empty()) w.field("email", std::string_view(student->email));
+    w.end_object();
+  }
   w.key("exercises").begin_array();
   for (const auto& e : sheet.exercises) {
     w.begin_object();

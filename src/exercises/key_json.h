@@ -14,12 +14,20 @@
 
 namespace epure {
 
+// Who has a sheet (`generate --roster`): recorded in key.json with the sheet.
+struct SheetStudent {
+  std::string number;  // as the roster writes it
+  std::string name;
+  std::string email;   // empty when the roster has none
+};
+
 class KeyJson {
  public:
   // Appends the opening of the object: spec, seed, version, and "sheets":[
   static void begin(fmt::memory_buffer& out, const WorksheetSet& set, std::string_view epure_version);
   // Appends one sheet (with a comma before it unless it is the first).
-  static void sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first);
+  // `student`: the roster's student who has it ("student": {"number", "name", "email"}).
+  static void sheet(fmt::memory_buffer& out, const Sheet& sheet, bool first, const SheetStudent* student = nullptr);
   // Closes the array and the object.
   static void end(fmt::memory_buffer& out);
 };

@@ -168,19 +168,26 @@ std::vector<std::string> face_options(const ExerciseContext& ctx, const std::vec
   return shown;
 }
 
+std::vector<std::string> face_values(const std::vector<std::string>& names) {
+  std::vector<std::string> values = names;
+  values.push_back("none");  // as face_options adds its box
+  return values;
+}
+
 void Questions::choice(std::string_view field, std::string_view value,
                        const std::vector<std::string>& choices) {
   ask_exactly(field, std::string(value));
   std::vector<std::string> shown;
   for (const auto& c : choices) shown.push_back(ctx_.texts.get(fmt::format("choice.{}", c)));
-  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::choice, shown});
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::choice, shown, false, 0, 0, choices});
   lines_.push_back({id(field), prompt(field), ctx_.texts.get(fmt::format("choice.{}", value))});
 }
 
 void Questions::faces(std::string_view field, const std::vector<std::string>& value,
                       const std::vector<std::string>& all) {
   ask_exactly(field, value);
-  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, face_options(ctx_, all), true});
+  fields_.push_back({id(field), prompt(field), render::AnswerField::Kind::faces, face_options(ctx_, all), true, 0, 0,
+                     face_values(all)});
   std::string shown;
   for (const auto& f : value) shown += fmt::format("{}{}", shown.empty() ? "" : ", ", face_label(f));
   if (shown.empty()) shown = ctx_.texts.get("common.none");
@@ -205,9 +212,12 @@ void add_fields(render::Section& s, const Questions& q) {
       shown = face_options(ctx, f.choices);
     else
       shown = f.choices;
+    std::vector<std::string> values;
+    if (f.kind == Kind::choice) values = f.choices;
+    if (f.kind == Kind::faces) values = face_values(f.choices);
     s.add(render::AnswerField{fmt::format("{}.{}", number_of(ctx), f.field),
                               ctx.texts.get(fmt::format("{}.q.{}", ctx.spec.kind, f.field)), f.kind, shown,
-                              f.kind == Kind::faces});
+                              f.kind == Kind::faces, 0, 0, std::move(values)});
   }
 }
 

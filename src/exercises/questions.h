@@ -78,6 +78,8 @@ void add_fields(render::Section& s, const Questions& q);
 // every name, then "none".
 std::string face_label(std::string_view name);
 std::vector<std::string> face_options(const ExerciseContext& ctx, const std::vector<std::string>& names);
+// What each of face_options' boxes stands for in the answers spreadsheet: the names, then "none".
+std::vector<std::string> face_values(const std::vector<std::string>& names);
 void add_lines(render::Section& s, const Questions& q);
 
 }  // namespace epure::kinds

@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <variant>
+
 #include "exercises/numbers.h"
+#include "exercises/page_code.h"
 #include "exercises/points.h"
 #include "exercises/texts.h"
 
@@ -136,6 +140,35 @@ render::PageWords page_words(const Texts& texts) {
 
 }  // namespace
 
+namespace {
+
+// A number field's id on the sheet: a point's coordinates share their point's comb width.
+std::string comb_field(const ExerciseInstance& e, const Question& q) {
+  return fmt::format("{}.{}", e.number, q.point_group.empty() ? q.field : q.point_group);
+}
+
+}  // namespace
+
+void WorksheetSet::comb_reach(const Sheet& sheet, CombCells& cells) const {
+  for (const auto& e : sheet.exercises)
+    for (const auto& q : e.questions) {
+      const auto* v = std::get_if<double>(&q.expected);
+      if (!v || !std::isfinite(*v)) continue;
+      // as a student writes it: rounded to the set's decimals, its integer part's digits
+      const std::string written = fmt::format("{:.{}f}", std::fabs(*v), spec_.decimals);
+      const int digits = static_cast<int>(std::min(written.find('.'), written.size()));
+      int& n = cells[comb_field(e, q)];
+      n = std::max({n, digits, 1});
+    }
+}
+
+void WorksheetSet::measure_combs(int sheets) {
+  WorksheetSet probe = *this;
+  CombCells cells;
+  for (int i = 0; i < std::max(sheets, kReachSheets); ++i) comb_reach(probe.next(), cells);
+  comb_cells_ = std::move(cells);
+}
+
 render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
   const auto& texts = Texts::builtin(language_);
   render::Document doc;
@@ -147,10 +180,26 @@ render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
   doc.page_budget = kSheetPageBudget;
   doc.words = page_words(texts);
   doc.page = page_size(spec_.page);
+  // The scan furniture: marks and a page code on every page, numbers as combs, the student
+  // number as a comb.
+  doc.page_code = [id = doc.sheet_id](int page, int pages) { return page_code_text({id, page, pages}); };
+  doc.decimal_separator = NumberStyle::for_language(language_).decimal_comma ? "," : ".";
+  doc.student_number_cells = kStudentNumberCells;
   render::Section intro;
-  intro.add(render::Paragraph{texts.format("common.rounding", {{"decimals", std::to_string(spec_.decimals)}}), true});
+  intro.add(render::Paragraph{texts.format("common.rounding", {{"decimals", std::to_string(spec_.decimals)}}) + " " +
+                                  texts.get("common.tick_help"),
+                              true});
   doc.sections.push_back(std::move(intro));
-  for (const auto& e : sheet.exercises) doc.sections.push_back(e.sheet);
+  using K = render::AnswerField::Kind;
+  for (const auto& e : sheet.exercises) {
+    doc.sections.push_back(e.sheet);
+    for (auto& block : doc.sections.back().blocks)
+      if (auto* f = std::get_if<render::AnswerField>(&block); f && (f->kind == K::number || f->kind == K::point || f->kind == K::point3)) {
+        auto it = comb_cells_.find(f->question_id);
+        f->integer_cells = it == comb_cells_.end() ? kDefaultIntegerCells : it->second;
+        f->decimals = spec_.decimals;
+      }
+  }
   return doc;
 }
 

@@ -6,6 +6,7 @@
 // id replays them, and generating in parallel draws attempt 0 everywhere first, then settles the
 // collisions in index order — the same sheets either way.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -66,6 +67,25 @@ class WorksheetSet {
   // Rebuilds the sheet a given id names: refuses an id of another draw version or seed.
   Sheet rebuild(const SheetId& id);
 
+  // The combs of the sheets' number fields (one character per cell, a scan reads them): how many
+  // integer cells each field has, by its id on the sheet ("2.t"; "3.P" for both coordinates of a
+  // point). The same for every instance of a question, so that the comb does not give the answer
+  // away: what the set's answers reach (comb_reach over its sheets), never one instance's value.
+  // A field not in the map gets kDefaultIntegerCells.
+  using CombCells = std::map<std::string, int, std::less<>>;
+  static constexpr int kDefaultIntegerCells = 3;
+  // Sheets drawn to measure the reach, at least: a small set's combs are those of its first 64
+  // sheets, so they do not depend on --sheets (nor tell one instance's digits).
+  static constexpr int kReachSheets = 64;
+  static constexpr int kStudentNumberCells = 8;
+  // Widens `cells` to hold the integer digits of every number answer of `sheet`, as written
+  // with the set's decimals.
+  void comb_reach(const Sheet& sheet, CombCells& cells) const;
+  void set_comb_cells(CombCells cells) { comb_cells_ = std::move(cells); }
+  // The combs of a fresh set's first `sheets` sheets (at least kReachSheets), drawn on a copy,
+  // set on this one, as `epure generate` does (there in parallel: the same result).
+  void measure_combs(int sheets = 0);
+
   // The printed documents of a sheet: the student's sheet and its answer key.
   render::Document sheet_document(const Sheet& sheet) const;
   render::Document key_document(const Sheet& sheet) const;
@@ -79,6 +99,7 @@ class WorksheetSet {
   std::vector<BranchSchedule> schedules_;
   std::vector<std::unordered_set<std::uint64_t>> used_;  // fingerprints per slot
   int next_index_ = 0;
+  CombCells comb_cells_;
 };
 
 }  // namespace epure

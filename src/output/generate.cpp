@@ -11,12 +11,15 @@
 #include <fmt/format.h>
 
 #include "exercises/key_json.h"
+#include "exercises/numbers.h"
+#include "exercises/sheet_id.h"
 #include "exercises/texts.h"
 #include "exercises/worksheet.h"
 #include "output/atomic_file.h"
 #include "output/explore_page.h"
 #include "output/index_html.h"
 #include "output/parallel.h"
+#include "output/sheet_layout.h"
 #include "render/layout.h"
 #include "render/pdf_document.h"
 #include "render/svg_page.h"
@@ -41,6 +44,7 @@ struct Printed {
   render::Document sheet, key;
   std::vector<render::LaidOutPage> sheet_pages, key_pages;
   std::vector<render::PageLink> sheet_links, key_links;
+  std::string layout;  // the sheet in layout.json
 };
 
 render::PdfMetadata pdf_metadata(const WorksheetSpec& spec, const std::string& title,
@@ -166,6 +170,8 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   if (options.sheets < 1 || options.sheets > kMaxSheets)
     throw std::runtime_error(fmt::format("--sheets must be from 1 to {}", kMaxSheets));
   if (set.next_index() != 0) throw std::logic_error("generate_set needs a fresh set");
+  if (!options.students.empty() && options.students.size() != static_cast<std::size_t>(options.sheets))
+    throw std::logic_error("generate_set: one sheet per student");
   if (options.svg || (options.pdf && options.split)) {
     fs::create_directories(options.out / "sheets");
     fs::create_directories(options.out / "keys");
@@ -192,6 +198,20 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   }
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;
+  set.measure_combs(options.sheets);  // the combs' widths: what the set's answers reach
+  // layout.json, where a scan looks, written from the sheets' pages as they come
+  const bool laid_out = options.svg || options.pdf;
+  std::optional<AtomicFile> layout_file;
+  if (laid_out) {
+    scan::SetLayout head;
+    head.title = set.spec().title;
+    head.language = set.language();
+    head.decimal_separator = NumberStyle::for_language(set.language()).decimal_comma ? "," : ".";
+    head.seed = set.seed();
+    head.draw_version = kDrawVersion;
+    layout_file.emplace(options.out / "layout.json");
+    layout_file->write(scan::layout_json_begin(head));
+  }
   std::unique_ptr<ClassSetWriter> class_set;
 
   // While a class-set PDF is drawn on threads of its own, the rest of the jobs generate.
@@ -219,6 +239,11 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
       parallel_for(count, jobs, [&](int i) {
         Printed& p = printed[i];
         p.sheet = set.sheet_document(sheets[i]);
+        const SheetStudent* student = options.students.empty() ? nullptr : &options.students[start + i];
+        if (student) {
+          p.sheet.student_name = student->name;
+          p.sheet.student_number = student->number;
+        }
         p.key = set.key_document(sheets[i]);
         const std::string id = sheets[i].id.str();
         // each exercise of the key links to the student's own instance in explore.html
@@ -227,6 +252,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
             p.key.sections[k].link = fmt::format("explore.html#{}.{}", id, sheets[i].exercises[k].n);
         p.sheet_pages = render::layout_document(p.sheet);
         p.key_pages = render::layout_document(p.key);
+        scan::SheetLayout sl = sheet_layout(id, p.sheet_pages);
+        if (student) sl.student = scan::StudentLayout{student->number, student->name};
+        p.layout = scan::layout_json_sheet(sl, start + i == 0);
         if (options.pdf && !options.split) p.key_links = render::section_links(p.key_pages, p.key);
         if (options.svg) {
           write_file_atomically(options.out / "sheets" / (id + ".svg"), render::pages_to_svg(p.sheet_pages, p.sheet));
@@ -241,6 +269,8 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
         }
       });
     }
+    if (layout_file)
+      for (const Printed& p : printed) layout_file->write(p.layout);
     // 4. the class-set PDFs, in id order (behind the next batch, with two jobs or more)
     if (class_set_pdf) {
       if (!class_set) class_set = std::make_unique<ClassSetWriter>(options, set.spec(), printed[0]);
@@ -250,7 +280,7 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
       class_set->add(std::move(batch));
     }
     for (int i = 0; i < count; ++i) {
-      KeyJson::sheet(key, sheets[i], start + i == 0);
+      KeyJson::sheet(key, sheets[i], start + i == 0, options.students.empty() ? nullptr : &options.students[start + i]);
       index.push_back({sheets[i].id.str(), static_cast<int>(sheets[i].exercises.size())});
       if (explore) {
         ExploreSheet e{sheets[i].id.str(), {}};
@@ -269,6 +299,10 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   key_file.write(std::string_view(key.data(), key.size()));
   if (class_set) class_set->commit();
   key_file.commit();
+  if (layout_file) {
+    layout_file->write(scan::layout_json_end());
+    layout_file->commit();
+  }
   if (options.svg) {
     AtomicFile index_file(options.out / "index.html");
     write_index_html([&](std::string_view bytes) { index_file.write(bytes); }, set.spec().title, set.spec().course,

@@ -11,6 +11,9 @@
 #include <optional>
 #include <string>
 
+#include <vector>
+
+#include "exercises/key_json.h"
 #include "exercises/worksheet.h"
 
 namespace epure::output {
@@ -25,6 +28,10 @@ struct GenerateOptions {
   std::optional<std::int64_t> pdf_date;  // the PDFs' creation date (SOURCE_DATE_EPOCH)
   int jobs = 1;
   std::string epure_version;
+  // A roster's students (`generate --roster`): one sheet each, in this order (`sheets` must be
+  // their number), their name and number printed on its first page instead of the name line and
+  // the number's comb, recorded in key.json and layout.json. Empty: anonymous sheets.
+  std::vector<SheetStudent> students;
   // Called after each batch with the number of sheets written so far.
   std::function<void(int done, int total)> progress;
 };

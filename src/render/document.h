@@ -2,6 +2,7 @@
 // A printed page's content, as exercises and keys describe it: headings, paragraphs, diagrams,
 // answer fields. Knows nothing of exercises (they fill it) nor of the backend (layout.h places
 // it, the SVG and PDF backends draw the placed result).
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -28,6 +29,15 @@ struct AnswerField {
   std::vector<std::string> choices;  // for `choice` and `faces`: the options to tick
   // The last choice says something else than the others ("none" after the sides): a row of its own.
   bool last_choice_apart = false;
+  // A number or a point's coordinates as comb fields, one character per cell (a scan reads
+  // them): a sign cell, `integer_cells` digit cells, the document's decimal separator printed
+  // between cells, `decimals` decimal cells. 0 integer cells: one plain box per value.
+  int integer_cells = 0;
+  int decimals = 0;
+  // For `choice` and `faces`: what each option stands for, as a student types it in the answers
+  // spreadsheet ("before", "-x", "none"), where it differs from the printed option; empty: the
+  // printed options themselves.
+  std::vector<std::string> choice_values{};
 };
 
 // In a key: a question and its expected answer.
@@ -101,6 +111,17 @@ struct Document {
     // steps may run on to the next page; its figure and answer table stay with the last steps).
     between_blocks,
   } breaks = Breaks::whole;
+  // The scan furniture of a student's sheet: when set, every page carries four corner marks and
+  // a QR code of the text page_code(page, pages) gives (a page number and the page count, known
+  // only once the document is laid out). What the text means is the caller's business.
+  std::function<std::string(int page, int pages)> page_code;
+  // Printed between a comb's integer and decimal cells ("," in French).
+  std::string decimal_separator = ".";
+  // The student number on the first page: a comb of this many cells (a scan reads it), or, when
+  // 0, a writing line.
+  int student_number_cells = 0;
+  // A roster's student, printed on the first page instead of the writing line and the comb.
+  std::string student_name, student_number;
   PageWords words;
   PageSize page;
   std::vector<Section> sections;

@@ -22,6 +22,11 @@ constexpr double kStackIndent = 12;
 // (only its '\n' break it).
 constexpr double kUnbounded = 1e9;
 
+// A comb's width: its sign cell, integer and decimal cells, and the separator's gap.
+double comb_width(const LayoutStyle& s, const AnswerField& f) {
+  return s.comb_cell_width * (1 + f.integer_cells + f.decimals) + (f.decimals > 0 ? s.comb_separator_gap : 0);
+}
+
 }  // namespace
 
 // The prompt column shared by a run of consecutive fields, so that their boxes line up.
@@ -59,10 +64,11 @@ double SectionAtoms::measure_field_prompt_column(const std::vector<Block>& block
     const bool boxes = f->kind == K::number || f->kind == K::point || f->kind == K::point3;
     if (boxes || !any_boxes) widest = std::max(widest, text_width(f->prompt, size));
     const double id = f->question_id.empty() ? 0 : text_width(f->question_id, s_.id_size) + kIdGap;
-    double need = s_.number_box_width;
+    const bool comb = f->integer_cells > 0;
+    double need = comb ? comb_width(s_, *f) : s_.number_box_width;
     if (f->kind == K::point || f->kind == K::point3) {
       const int n = f->kind == K::point3 ? 3 : 2;
-      const double box = f->kind == K::point3 ? s_.point3_box_width : s_.point_box_width;
+      const double box = comb ? comb_width(s_, *f) : f->kind == K::point3 ? s_.point3_box_width : s_.point_box_width;
       need = text_width("(", size) + text_width(")", size) + (n - 1) * text_width(";", size) +
              n * box + 2 * n * kBoxGap;
     } else if (f->kind != K::number) {
@@ -114,20 +120,38 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
 
   if (!ticks) {
     const double bh = s_.field_box_height;
-    auto box = [&](double x, double w, std::string value) {
-      a.content.box({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
-    };
-    auto glyph = [&](const char* s, double x) {
+    const bool comb = f.integer_cells > 0;
+    auto glyph = [&](const std::string& s, double x) {
       auto runs = plain(s);
       const double w = text_width(runs, size);
       a.content.text(std::move(runs), x, baseline, size);
       return x + w;
     };
+    // A value's box, or its comb: the cells side by side, the separator printed in the gap
+    // before the decimals.
+    auto box = [&](double x, double w, std::string value) {
+      if (!comb) {
+        a.content.box({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
+        return;
+      }
+      const int n = 1 + f.integer_cells + f.decimals;
+      const double top = (bh - s_.comb_cell_height) / 2;
+      for (int i = 0; i < n; ++i) {
+        if (i == n - f.decimals) {
+          const double sep_w = text_width(plain(doc_.decimal_separator), size);
+          glyph(doc_.decimal_separator, x + (s_.comb_separator_gap - sep_w) / 2);
+          x += s_.comb_separator_gap;
+        }
+        a.content.box({{x, top, s_.comb_cell_width, s_.comb_cell_height}, BoxKind::cell, f.question_id, value, true,
+                       f.decimals});
+        x += s_.comb_cell_width;
+      }
+    };
     if (f.kind == K::number) {
-      box(x0, s_.number_box_width, {});
+      box(x0, comb ? comb_width(s_, f) : s_.number_box_width, {});
     } else {
       const bool three = f.kind == K::point3;
-      const double w = three ? s_.point3_box_width : s_.point_box_width;
+      const double w = comb ? comb_width(s_, f) : three ? s_.point3_box_width : s_.point_box_width;
       static constexpr const char* kAxes[] = {"x", "y", "z"};
       double x = glyph("(", x0) + kBoxGap;
       for (int k = 0; k < (three ? 3 : 2); ++k) {
@@ -180,7 +204,8 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
     if (f.kind == K::boolean) {
       options = {{doc_.words.yes, "true"}, {doc_.words.no, "false"}};
     } else {
-      for (const auto& c : f.choices) options.emplace_back(c, c);
+      for (std::size_t i = 0; i < f.choices.size(); ++i)
+        options.emplace_back(f.choices[i], i < f.choice_values.size() ? f.choice_values[i] : f.choices[i]);
     }
     for (const auto& o : options) {
       labels.push_back(parse_rich_text(o.first));
@@ -240,7 +265,7 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
       const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
       const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
       a.content.box({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
-                                 std::move(options[i].second)});
+                     std::move(options[i].second), false, 0, f.kind == K::faces});
       a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
     }
     body_h = ticks_top + static_cast<double>(grid.rows) * s_.tick_row_height;

@@ -4,8 +4,10 @@
 // cairo for the PDF) draws these pages as they are: no backend measures, wraps or breaks pages,
 // so both draw the same thing.
 //
-// The rules: a header on every page (course, title, sheet id, "page i/n"); the first page opens
-// with the name and student number fields and the sheet id as a QR code; sections share pages.
+// The rules: a header on every page (course, title, sheet id, "page i/n"; for a document with
+// scan furniture, Document::page_code, the page's QR code at its right end and four corner
+// marks in the margins); the first page opens with the name and student number fields;
+// sections share pages.
 // A page ends only between blocks or between sentences of a paragraph (never inside a sentence or
 // a parenthesis, never leaving one line of a paragraph alone), never right after a Heading, never
 // between a Figure and the Paragraph just before it or the fields (a key's answers) just after
@@ -75,6 +77,7 @@ struct PlacedRule {
 enum class BoxKind {
   answer,  // a box the student writes a value in
   tick,    // a small square to tick, one per option
+  cell,    // one cell of a comb field: one character written in it
   shade,   // the light background of an emphasised paragraph
 };
 
@@ -86,6 +89,12 @@ struct PlacedBox {
   // ("before", a face name, "true"/"false"), empty for a single number.
   std::string question_id;
   std::string value;
+  // For a comb's cells: whether the comb starts with a sign cell, and how many of its last cells
+  // are decimals (the same on each of its cells).
+  bool comb_sign = false;
+  int comb_decimals = 0;
+  // For a tick: whether any number of the field's boxes may be ticked (sides), or one.
+  bool any = false;
 };
 
 // A Scene drawn into a rectangle scene_height (scene_painter.h) high, with Style::print().
@@ -95,8 +104,8 @@ struct PlacedFigure {
   const Scene* scene = nullptr;
 };
 
-// The sheet id as a QR code, on a student's first page: `rect` holds the modules and their
-// quiet zone, so nothing else may be drawn in it.
+// A page's code as a QR code (Document::page_code), in the header: `rect` holds the modules and
+// their quiet zone, so nothing else may be drawn in it.
 struct PlacedQr {
   PageRect rect;
   QrCode code;
@@ -121,6 +130,9 @@ struct LaidOutPage {
   std::vector<PlacedText> texts;
   std::vector<PlacedQr> codes;
   std::vector<PlacedBlock> blocks;
+  // The corner marks (solid squares) a scan registers the page on: top-left, top-right,
+  // bottom-right, bottom-left; empty for a page without scan furniture.
+  std::vector<PageRect> marks;
 };
 
 // Sizes of the printed page, in points. The defaults are a plain A4/Letter worksheet.
@@ -133,7 +145,11 @@ struct LayoutStyle {
   double header_gap = 14;           // from that rule to the content
 
   double name_row_height = 26;      // the first page's name and student number fields
-  double qr_module = 1.3;           // side of a QR module: 21 modules + quiet zone ≈ 11 mm
+  double qr_module = 1.3;           // side of a QR module: 25 modules (a page code) ≈ 11.5 mm
+  double mark_size = 14.17;         // a corner mark's side (5 mm)
+  double mark_inset = 34;           // from a page edge to a mark's centre (12 mm: in the margin)
+  double comb_cell_width = 14, comb_cell_height = 18;  // a comb's cell: one handwritten character
+  double comb_separator_gap = 6;    // between the integer and decimal cells, for the separator
 
   double body_size = 10;
   double line_height = 1.4;         // × font size; room for an arrow over AB or a subscript

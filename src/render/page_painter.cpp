@@ -20,6 +20,7 @@ void paint_box(Canvas& canvas, const PlacedBox& box, const PageStyle& style) {
       canvas.path(rectangle(box.rect), Paint{StrokeStyle{style.box_stroke, style.box_width, {}}, style.paper, 1});
       break;
     case BoxKind::tick:
+    case BoxKind::cell:
       canvas.path(rectangle(box.rect), Paint{StrokeStyle{style.tick_stroke, style.tick_width, {}}, style.paper, 1});
       break;
     case BoxKind::shade: {
@@ -102,6 +103,11 @@ void paint_page(Canvas& canvas, const LaidOutPage& page, const PageStyle& style)
     if (f.scene == nullptr) continue;
     canvas.begin_group("figure", "figure");
     paint_scene(canvas, *f.scene, f.rect.x, f.rect.y, f.rect.width, style.scene);
+    canvas.end_group();
+  }
+  if (!page.marks.empty()) {
+    canvas.begin_group("marks");
+    for (const PageRect& m : page.marks) canvas.path(rectangle(m), Paint{std::nullopt, style.ink(Ink::text), 1});
     canvas.end_group();
   }
   for (const PlacedQr& q : page.codes) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace epure::scan {
 
@@ -184,39 +185,54 @@ SetLayout read_layout_file(const std::string& path) {
   return read_layout(ss.str(), path);
 }
 
-std::string layout_json(const SetLayout& layout) {
-  auto rect = [](const Rect& r) { return json::array({r.x, r.y, r.width, r.height}); };
-  json sheets = json::array();
-  for (const auto& [id, s] : layout.sheets) {
-    json pages = json::array();
-    for (const auto& p : s.pages) {
-      json fields = json::array();
-      for (const auto& f : p.fields) {
-        json cells = json::array();
-        for (const auto& c : f.cells) cells.push_back(rect(c));
-        json o = {{"question", f.question}, {"type", f.type == FieldType::comb ? "comb" : "tick"}, {"cells", cells}};
-        if (f.type == FieldType::comb) {
-          o["sign"] = f.sign;
-          o["decimals"] = f.decimals;
-        } else {
-          o["values"] = f.values;
-          o["select"] = f.multiple ? "any" : "one";
-        }
-        fields.push_back(std::move(o));
-      }
-      json marks = json::array();
-      for (const auto& m : p.marks) marks.push_back(json::array({m.x, m.y}));
-      pages.push_back({{"page", p.page}, {"width", p.width}, {"height", p.height}, {"marks", marks},
-                       {"mark_size", p.mark_size}, {"code", rect(p.code)}, {"fields", fields}});
-    }
-    json sheet = {{"sheet", id}, {"pages", pages}};
-    if (s.student) sheet["student"] = {{"number", s.student->number}, {"name", s.student->name}};
-    sheets.push_back(std::move(sheet));
-  }
+std::string layout_json_begin(const SetLayout& layout) {
   json root = {{"format", "epure-layout"}, {"version", 1}, {"title", layout.title}, {"language", layout.language},
                {"decimal_separator", layout.decimal_separator}, {"seed", layout.seed},
-               {"draw_version", layout.draw_version}, {"sheets", sheets}};
-  return root.dump(1) + "\n";
+               {"draw_version", layout.draw_version}};
+  std::string head = root.dump(1);
+  head.erase(head.rfind('\n'));  // the closing brace: the sheets follow
+  return head + ",\n \"sheets\": [\n";
+}
+
+std::string layout_json_sheet(const SheetLayout& s, bool first) {
+  auto rect = [](const Rect& r) { return json::array({r.x, r.y, r.width, r.height}); };
+  json pages = json::array();
+  for (const auto& p : s.pages) {
+    json fields = json::array();
+    for (const auto& f : p.fields) {
+      json cells = json::array();
+      for (const auto& c : f.cells) cells.push_back(rect(c));
+      json o = {{"question", f.question}, {"type", f.type == FieldType::comb ? "comb" : "tick"}, {"cells", cells}};
+      if (f.type == FieldType::comb) {
+        o["sign"] = f.sign;
+        o["decimals"] = f.decimals;
+      } else {
+        o["values"] = f.values;
+        o["select"] = f.multiple ? "any" : "one";
+      }
+      fields.push_back(std::move(o));
+    }
+    json marks = json::array();
+    for (const auto& m : p.marks) marks.push_back(json::array({m.x, m.y}));
+    pages.push_back({{"page", p.page}, {"width", p.width}, {"height", p.height}, {"marks", marks},
+                     {"mark_size", p.mark_size}, {"code", rect(p.code)}, {"fields", fields}});
+  }
+  json sheet = {{"sheet", s.sheet}, {"pages", pages}};
+  if (s.student) sheet["student"] = {{"number", s.student->number}, {"name", s.student->name}};
+  return (first ? "" : ",\n") + sheet.dump(1);
+}
+
+std::string layout_json_end() { return "\n]}\n"; }
+
+std::string layout_json(const SetLayout& layout) {
+  std::string out = layout_json_begin(layout);
+  bool first = true;
+  for (const auto& [id, s] : layout.sheets) {
+    SheetLayout named = s;
+    named.sheet = id;
+    out += layout_json_sheet(named, std::exchange(first, false));
+  }
+  return out + layout_json_end();
 }
 
 }  // namespace epure::scan

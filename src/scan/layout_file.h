@@ -84,8 +84,13 @@ class LayoutError : public std::runtime_error {
 SetLayout read_layout(std::string_view text, const std::string& source);
 SetLayout read_layout_file(const std::string& path);
 
-// The same as JSON text (the test fixtures write layouts with it; `epure generate` will too).
+// The same as JSON text (the test fixtures write layouts with it).
 std::string layout_json(const SetLayout& layout);
+// The same written as it comes (`epure generate`, sheet after sheet, memory flat): begin (the
+// set's fields; its sheets are not read), each sheet (first = true for the first), end.
+std::string layout_json_begin(const SetLayout& layout);
+std::string layout_json_sheet(const SheetLayout& sheet, bool first);
+std::string layout_json_end();
 
 inline constexpr std::size_t kMaxLayoutBytes = std::size_t{1} << 30;
 inline constexpr int kMaxLayoutDepth = 16;

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "scan/layout_file.h"
-#include "scan/page_code.h"
+#include "exercises/page_code.h"
 
 namespace epure::scan {
 

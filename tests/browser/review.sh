@@ -8,8 +8,8 @@ here=$EPURE_SOURCE_DIR/tests
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 out=${EPURE_BROWSER_OUT:-$tmp/review}
 [ -d "$here/browser/node_modules/puppeteer-core" ] || { echo "FAIL: run 'npm ci' in tests/browser first"; exit 1; }
-"$EPURE" generate --format svg --sheets 2 --seed 4 --lang fr --jobs 1 --quiet --out "$tmp/set" || { echo "FAIL: epure generate"; exit 1; }
-"$EPURE_SCAN_FIXTURE" --key "$tmp/set/key.json" --out "$tmp/scans" --sheets 2 --dpi 150 --degrade copier --format png --seed 2 >/dev/null || { echo "FAIL: fixture"; exit 1; }
+"$EPURE" generate --format pdf --sheets 2 --seed 4 --lang fr --jobs 1 --quiet --out "$tmp/set" || { echo "FAIL: epure generate"; exit 1; }
+"$EPURE_SCAN_FIXTURE" --key "$tmp/set/key.json" --set "$tmp/set" --out "$tmp/scans" --sheets 2 --dpi 150 --degrade copier --format png --seed 2 >/dev/null || { echo "FAIL: fixture"; exit 1; }
 "$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out" -q 2>"$tmp/scan.err"
 node "$here/browser/review_test.mjs" "$tmp/out/review.html" "$tmp/out/fields.csv" "$out" || exit 1
 "$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/set/key.json" --layout "$tmp/scans/layout.json" --out "$tmp/out2" \
@@ -34,7 +34,8 @@ import json, sys
 c = json.load(open(sys.argv[1]))["corrections"]
 given = {(s["sheet"], q["id"]): q["given"] for s in json.load(open(sys.argv[2]))["submissions"] for q in s["questions"]}
 said = [l for l in open(sys.argv[3]) if "corrections.json" in l]
-bad = [k for k in c if k["question"] != "student_number" and given.get((k["sheet"], k["question"])) != k["value"]]
+# a value typed empty is a blank answer: graded as none given (null)
+bad = [k for k in c if k["question"] != "student_number" and (given.get((k["sheet"], k["question"])) or "") != k["value"]]
 print(("FAIL: " if bad or said else "ok   ") + f"epure grade --corrections applies the {len(c)} saved values" +
       (f": {bad[:3]}" if bad else "") + (f"; it says: {said[:2]}" if said else ""))
 sys.exit(1 if bad or said else 0)

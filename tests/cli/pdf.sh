@@ -4,7 +4,7 @@
 # starts on an odd page; pdftotext finds every sheet's id and statements, French accents
 # included; pdffonts lists embedded fonts only; the metadata comes from the spec and
 # SOURCE_DATE_EPOCH; the same spec and seed give byte-identical PDFs across runs and job counts;
-# the first page's QR code reads back as the sheet id; a PDF page and the SVG page of the same
+# every page's QR code reads back as its page code; a PDF page and the SVG page of the same
 # sheet agree pixel-wise (and two different sheets do not); --split, --paper letter and
 # `epure preview` write what they say. With the explorer's page built, the keys' PDFs link each
 # exercise to explore.html#<sheet id>.<n> (a /Link annotation read back with qpdf --json) and
@@ -180,13 +180,29 @@ pdftotext "$tmp/fr/sheets.pdf" "$tmp/fr.txt"
 grep -q "Numéro d'étudiant\|Numéro d’étudiant" "$tmp/fr.txt" || fail "French: no 'Numéro d'étudiant' in $(head -20 "$tmp/fr.txt")"
 grep -q "é" "$tmp/fr.txt" || fail "French: accents lost"
 
-# The QR code on each first page reads back as the sheet id.
+# The QR code on every page of a sheet reads back as its page code (sheet id, page, page count,
+# check), where layout.json says it is: the code's square and its quiet zone, cut out of the page
+# at 150 dpi as a scan reads it (zbar, given a whole page, may take a corner mark for a finder
+# pattern and give up).
 first=1
 for id in $(echo $ids | cut -d' ' -f1-2); do
   n=$(grep -c 'class="page"' "$tmp/a/sheets/$id.svg")
-  pdftoppm -r 150 -f $first -l $first -singlefile -png "$tmp/a/sheets.pdf" "$tmp/qr"
-  read_back=$(zbarimg --quiet --raw "$tmp/qr.png" 2>/dev/null)
-  [ "$read_back" = "$id" ] || fail "the QR code on $id's first page reads '$read_back'"
+  for page in $(seq 1 "$n"); do
+    crop=$(python3 -c "
+import json, sys
+l = json.load(open(sys.argv[1]))
+s = next(s for s in l['sheets'] if s['sheet'] == sys.argv[2])
+x, y, w, h = s['pages'][int(sys.argv[3]) - 1]['code']
+k = 150 / 72
+print(int((x - 8) * k), int((y - 8) * k), int((w + 16) * k), int((h + 16) * k))" "$tmp/a/layout.json" "$id" "$page")
+    set -- $crop
+    pdftoppm -r 150 -f $((first + page - 1)) -l $((first + page - 1)) -x "$1" -y "$2" -W "$3" -H "$4" -singlefile -png "$tmp/a/sheets.pdf" "$tmp/qr"
+    read_back=$(zbarimg --quiet --raw "$tmp/qr.png" 2>/dev/null)
+    case "$read_back" in
+      "$id/$page/$n/"?) ;;
+      *) fail "the QR code on $id's page $page reads '$read_back', not its page code $id/$page/$n/…" ;;
+    esac
+  done
   first=$((first + n))
 done
 

@@ -164,6 +164,7 @@ TEST_CASE("figures as printed: labels set apart from labels, points, numbers and
         options.language = lang;
         options.difficulty = difficulty;
         WorksheetSet set(spec, static_cast<std::uint64_t>(++seed), options);
+        set.measure_combs();  // as `epure generate` does
         for (int i = 0; i < kSheetsPerSet; ++i) {
           const Sheet sheet = set.next();
           const std::string id = fmt::format("{} {} {}", spec_name, lang, sheet.id.str());
@@ -197,6 +198,7 @@ TEST_CASE("feedback sheets: the student's wrong points and vectors on the key's 
       SetOptions options;
       options.language = lang;
       WorksheetSet set(spec, static_cast<std::uint64_t>(++seed), options);
+      set.measure_combs();  // as `epure generate` does
       fmt::memory_buffer json;
       KeyJson::begin(json, set, "test");
       for (int i = 0; i < kSheetsPerSet; ++i) KeyJson::sheet(json, set.next(), i == 0);

@@ -129,20 +129,61 @@ TEST_CASE("layout: a header on every page, the name fields on the first only") {
   }
   CHECK(page_has_text(pages[0], doc.header_note));
 
-  SUBCASE("the sheet id as a QR code at the end of the name row, clear of its writing lines") {
-    REQUIRE(pages[0].codes.size() == 1);
-    for (std::size_t i = 1; i < pages.size(); ++i) CHECK(pages[i].codes.empty());
-    const PlacedQr& qr = pages[0].codes[0];
-    const LayoutStyle style;
-    CHECK(qr.code.size >= 21);
-    CHECK(qr.rect.width == doctest::Approx(style.qr_module * (qr.code.size + 2 * kQrQuietZone)));
-    // Its modules end on the right margin, its quiet zone stays below the header's rule.
-    CHECK(qr.rect.right() - style.qr_module * kQrQuietZone == doctest::Approx(doc.page.width_pt - style.margin_right));
-    CHECK(qr.rect.y > style.margin_top + style.header_height);
-    for (const PlacedRule& r : pages[0].rules) {
-      if (r.a.y < qr.rect.y || r.a.y > qr.rect.bottom()) continue;  // the header's rule, or lower
-      CHECK(std::max(r.a.x, r.b.x) < qr.rect.x);
+  SUBCASE("no scan furniture unless the document asks for it") {
+    for (const auto& page : pages) {
+      CHECK(page.codes.empty());
+      CHECK(page.marks.empty());
     }
+  }
+
+  SUBCASE("the scan furniture: on every page four corner marks and the page's code, in the header's right end") {
+    Document scanned = doc;
+    scanned.page_code = [](int page, int count) { return fmt::format("K7QF-3M2X/{}/{}", page, count); };
+    scanned.student_number_cells = 8;
+    const auto sp = layout_document(scanned);
+    const LayoutStyle style;
+    for (const auto& page : sp) {
+      CAPTURE(page.number);
+      REQUIRE(page.codes.size() == 1);
+      CHECK(page.codes[0].code.modules == encode_qr(fmt::format("K7QF-3M2X/{}/{}", page.number, page.count)).modules);
+      const PlacedQr& qr = page.codes[0];
+      CHECK(qr.rect.width == doctest::Approx(style.qr_module * (qr.code.size + 2 * kQrQuietZone)));
+      // its modules end on the right margin and start at the top margin; its quiet zone ends
+      // above the content
+      CHECK(qr.rect.right() - style.qr_module * kQrQuietZone == doctest::Approx(scanned.page.width_pt - style.margin_right));
+      CHECK(qr.rect.y + style.qr_module * kQrQuietZone == doctest::Approx(style.margin_top));
+      CHECK(qr.rect.bottom() <= style.margin_top + style.header_height + style.header_gap);
+      // no text, rule or box in it
+      for (const PlacedText& t : page.texts)
+        CHECK((t.baseline.x + text_width(t.runs, t.size) <= qr.rect.x || t.baseline.y - t.size > qr.rect.bottom()));
+      for (const PlacedRule& r : page.rules)
+        if (r.a.y >= qr.rect.y && r.a.y <= qr.rect.bottom()) CHECK(std::max(r.a.x, r.b.x) <= qr.rect.x + 1e-9);
+      for (const PlacedBox& b : page.boxes) CHECK(b.rect.y > qr.rect.bottom());
+      REQUIRE(page.marks.size() == 4);
+      for (const PageRect& m : page.marks) {
+        CHECK(m.width == doctest::Approx(style.mark_size));
+        // in the margins, at the corners
+        const double cx = m.x + m.width / 2, cy = m.y + m.height / 2;
+        CHECK((cx == doctest::Approx(style.mark_inset) || cx == doctest::Approx(scanned.page.width_pt - style.mark_inset)));
+        CHECK((cy == doctest::Approx(style.mark_inset) || cy == doctest::Approx(scanned.page.height_pt - style.mark_inset)));
+        CHECK((m.right() < style.margin_left || m.x > scanned.page.width_pt - style.margin_right));
+        CHECK((m.bottom() < style.margin_top || m.y > scanned.page.height_pt - style.margin_bottom));
+      }
+    }
+    // the student number as a comb of 8 cells on the first page, right of its label
+    int cells = 0;
+    for (const PlacedBox& b : sp[0].boxes)
+      if (b.kind == BoxKind::cell && b.question_id == "student_number") ++cells;
+    CHECK(cells == 8);
+    for (std::size_t i = 1; i < sp.size(); ++i)
+      for (const PlacedBox& b : sp[i].boxes) CHECK(b.question_id != "student_number");
+    // a roster's student: printed, no comb
+    scanned.student_name = "Zoé Lefèvre";
+    scanned.student_number = "20260001";
+    const auto named = layout_document(scanned);
+    CHECK(page_has_text(named[0], "Zoé Lefèvre"));
+    CHECK(page_has_text(named[0], "20260001"));
+    for (const PlacedBox& b : named[0].boxes) CHECK(b.kind != BoxKind::cell);
   }
 
   SUBCASE("a key has no name fields, and its words come from the document") {
@@ -151,6 +192,7 @@ TEST_CASE("layout: a header on every page, the name fields on the first only") {
     key.words.page = "feuille";
     const auto key_pages = layout_document(key);
     CHECK(key_pages[0].codes.empty());
+    CHECK(key_pages[0].marks.empty());
     CHECK_FALSE(page_has_text(key_pages[0], "Name:"));
     CHECK(page_has_text(key_pages[0], fmt::format("feuille 1/{}", key_pages.size())));
   }

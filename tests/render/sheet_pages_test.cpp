@@ -172,6 +172,7 @@ TEST_CASE("sheets and keys: exercises whole, no sentence across pages, tables wi
         options.difficulty = difficulty;
         options.page = paper;
         WorksheetSet set(spec, static_cast<std::uint64_t>(++seed), options);
+        set.measure_combs();  // as `epure generate` does
         Counts n;
         for (int i = 0; i < 12; ++i) {
           const Sheet sheet = set.next();

@@ -4,7 +4,7 @@
 
 #include "exercises/sheet_id.h"
 #include "scan/field_reading.h"
-#include "scan/page_code.h"
+#include "exercises/page_code.h"
 #include "scan/registration.h"
 #include "scan_fixture.h"
 

@@ -240,6 +240,12 @@ cv::Mat draw_page(const PageLayout& page, const std::string& code_text, const Wr
         cv::putText(m, f.values[i], px(f.cells[i].x + kTick + 3, f.cells[i].y + 9, s), cv::FONT_HERSHEY_SIMPLEX, 0.35 * s / 1.5, cv::Scalar(40), std::max(1, static_cast<int>(s / 2)), cv::LINE_AA);
     }
   }
+  write_fields(m, page, writing, dpi, rng);
+  return m;
+}
+
+void write_fields(cv::Mat& m, const PageLayout& page, const Writing& writing, double dpi, Rng& rng) {
+  const double s = dpi / 72;
   for (const auto& f : page.fields) {
     if (f.type == FieldType::comb) {
       auto it = writing.comb.find(f.question);
@@ -260,7 +266,6 @@ cv::Mat draw_page(const PageLayout& page, const std::string& code_text, const Wr
           if (std::find(t->second.begin(), t->second.end(), f.values[i]) != t->second.end()) tick_box(m, f.cells[i], style, s, rng);
     }
   }
-  return m;
 }
 
 cv::Mat degrade(const cv::Mat& page, const Degradation& d, double dpi, Rng& rng) {

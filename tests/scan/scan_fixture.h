@@ -4,8 +4,9 @@
 // and ticks of several kinds, then degraded as a copier does. Used by the doctest files of this
 // directory and by the epure_scan_fixture program (tests/cli/scan.sh, bench/scan).
 //
-// Until `epure generate` lays these fields out on its sheets (issue 30, second part), the pages
-// here are laid out by test_layout(): the same furniture the sheets will carry, fields in rows.
+// Pages are either the sheets `epure generate` printed, rendered from its PDF and read where its
+// layout.json says (epure_scan_fixture --set), or laid out here by lay_out_fields(): the same
+// furniture, fields in rows (the unit tests' pages).
 #include <opencv2/core.hpp>
 
 #include <map>
@@ -55,6 +56,9 @@ std::string comb_cells(const FieldLayout& f, std::string_view value);
 
 // A page drawn at `dpi`, grey, with the writing in its fields.
 cv::Mat draw_page(const PageLayout& page, const std::string& code_text, const Writing& writing, double dpi, Rng& rng);
+// The writing put into the fields of a page image at `dpi` (drawn here, or a sheet `epure
+// generate` printed, rendered): digits held out of training in the comb cells, ticks.
+void write_fields(cv::Mat& image, const PageLayout& page, const Writing& writing, double dpi, Rng& rng);
 
 // A copier's or scanner's damage.
 struct Degradation {

@@ -1,11 +1,15 @@
 // epure_scan_fixture: a class's scanned sheets, made by the suite (scan_fixture.h).
 //
-//   epure_scan_fixture --key DIR/key.json --out DIR [--sheets N] [--dpi D] [--format pdf|pdf-flate|png|jpeg|tiff|tiff-g4]
+//   epure_scan_fixture --key DIR/key.json --out DIR [--set SET] [--sheets N] [--dpi D]
+//                      [--format pdf|pdf-flate|png|jpeg|tiff|tiff-g4]
 //                      [--degrade none|copier|bilevel|phone] [--seed S] [--mess]
 //
-// Writes DIR/layout.json (the fields of every sheet of the key, as test_layout lays them out:
-// numbers as comb fields, yes/no, words and sides as ticks, the student number), DIR/truth.json (what
-// was written, per sheet and question, as `epure grade` should read it) and the scans:
+// With --set, the pages are the sheets `epure generate` printed: SET/sheets.pdf rendered at D
+// dpi (poppler), written into where SET/layout.json says (copied to DIR/layout.json). Without
+// it, the fields of every sheet of the key are laid out here (lay_out_fields: numbers as comb
+// fields, yes/no, words and sides as ticks, the student number) and drawn, into DIR/layout.json.
+// Writes DIR/truth.json (what was written, per sheet and question, as `epure grade` should read
+// it) and the scans:
 // DIR/scans.<ext> (one file; PNG and JPEG one file per page, scan-NNN.<ext>). --mess shuffles
 // the pages, drops one, duplicates one, adds a blank page and a page of another set.
 #include <CLI/CLI.hpp>
@@ -20,9 +24,11 @@
 #include "grading/answer_key.h"
 #include "grading/faces.h"
 #include "output/atomic_file.h"
-#include "scan/page_code.h"
+#include "exercises/page_code.h"
 #include "scan/page_input.h"
 #include "scan_fixture.h"
+
+#include <set>
 
 using namespace epure;
 using namespace epure::scan;
@@ -72,17 +78,103 @@ Degradation profile(const std::string& name, Rng& rng) {
   return d;
 }
 
+const TickStyle kStyles[] = {TickStyle::cross, TickStyle::check, TickStyle::cross, TickStyle::faint};
+
+// The field of a question on a sheet's pages, or null.
+const FieldLayout* find_field(const SheetLayout& sheet, const std::string& question) {
+  for (const auto& p : sheet.pages)
+    for (const auto& f : p.fields)
+      if (f.question == question) return &f;
+  return nullptr;
+}
+
+// The sheets `epure generate` printed (SET/sheets.pdf and SET/layout.json), rendered at `dpi`,
+// the key's answers written where layout.json says: every number in its comb, every tick.
+// Throws when a key's question has no field or a value does not fit its comb (a sheet a student
+// could not answer).
+void written_sets(const std::string& set_dir, const grading::AnswerKey& key, int sheets, double dpi, Rng& rng,
+                  SetLayout& layout, nlohmann::json& truth, std::vector<std::pair<std::string, cv::Mat>>& pages) {
+  layout = read_layout_file(set_dir + "/layout.json");
+  const std::string& sep = layout.decimal_separator;
+  auto stream = open_pages(set_dir + "/sheets.pdf", static_cast<int>(dpi));
+  int tick_count = 0, done = 0;
+  for (const auto& sheet : key.sheets()) {
+    const SheetLayout* sl = layout.find(sheet.id);
+    if (!sl) throw std::runtime_error(fmt::format("layout.json: no sheet {}", sheet.id));
+    const bool take = done < sheets;
+    Writing w;
+    nlohmann::json answers = nlohmann::json::object();
+    const std::string number = fmt::format("{:08d}", 20260000 + done);
+    if (take) {
+      w.comb["student_number"] = number;
+      for (const auto& e : sheet.exercises)
+        for (const auto& q : e.questions) {
+          const FieldLayout* f = find_field(*sl, q.id);
+          if (!f) throw std::runtime_error(fmt::format("sheet {}: no field for question {}", sheet.id, q.id));
+          if (q.type == grading::AnswerType::number) {
+            const std::string v = written(q.number, f->decimals, sep);
+            if (comb_cells(*f, v).empty())
+              throw std::runtime_error(fmt::format("sheet {}: {} = {} does not fit its comb of {} cells", sheet.id, q.id, v, f->cells.size()));
+            w.comb[q.id] = v;
+            answers[q.id] = v;
+            continue;
+          }
+          std::vector<std::string> ticked;
+          std::string v;
+          if (q.type == grading::AnswerType::boolean) {
+            v = q.boolean ? "true" : "false";
+            ticked = {v};
+          } else if (q.type == grading::AnswerType::choice) {
+            v = q.word;
+            ticked = {v};
+          } else if (q.type == grading::AnswerType::faces) {
+            for (const auto& value : f->values)
+              if (value == "none" ? q.faces == 0 : (q.faces & grading::face_bit(value)) != 0) ticked.push_back(value);
+            for (const auto& t : ticked) v += (v.empty() ? "" : " ") + t;
+          } else {
+            continue;
+          }
+          w.ticks[q.id] = ticked;
+          w.tick_style[q.id] = kStyles[tick_count++ % 4];
+          // every fifth tick of a one-box field: another box ticked first, then filled to cancel it
+          if (tick_count % 5 == 0 && !f->multiple)
+            for (const auto& value : f->values)
+              if (value != v) {
+                w.cancelled[q.id] = value;
+                break;
+              }
+          answers[q.id] = v;
+        }
+      truth[sheet.id] = {{"student_number", number}, {"answers", answers}};
+    }
+    for (const auto& p : sl->pages) {
+      auto page = stream->next();
+      if (!page || !page->error.empty())
+        throw std::runtime_error(fmt::format("{}/sheets.pdf: sheet {} page {}: {}", set_dir, sheet.id, p.page, page ? page->error : "missing"));
+      if (!take) continue;
+      write_fields(page->image, p, w, dpi, rng);
+      pages.emplace_back(fmt::format("{} p{}", sheet.id, p.page), std::move(page->image));
+    }
+    if (take) ++done;
+    else break;
+  }
+  // only the sheets written
+  for (auto it = layout.sheets.begin(); it != layout.sheets.end();)
+    it = truth.contains(it->first) ? std::next(it) : layout.sheets.erase(it);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"The suite's scans of a set: layout.json, truth.json and the scanned pages"};
-  std::string key_file, out, format = "pdf", degrade_name = "copier";
+  std::string key_file, out, format = "pdf", degrade_name = "copier", set_dir;
   int sheets = 3;
   double dpi = 200;
   std::uint64_t seed = 1;
   bool mess = false;
   app.add_option("--key", key_file)->required();
   app.add_option("--out", out)->required();
+  app.add_option("--set", set_dir);
   app.add_option("--sheets", sheets);
   app.add_option("--dpi", dpi);
   app.add_option("--format", format);
@@ -103,9 +195,11 @@ int main(int argc, char** argv) {
     layout.draw_version = key.info.draw_version;
     nlohmann::json truth = nlohmann::json::object();
     std::vector<std::pair<std::string, cv::Mat>> pages;  // (label, image)
-    const TickStyle styles[] = {TickStyle::cross, TickStyle::check, TickStyle::cross, TickStyle::faint};
+    const auto& styles = kStyles;
     int tick_count = 0;
+    if (!set_dir.empty()) written_sets(set_dir, key, sheets, dpi, rng, layout, truth, pages);
     for (const auto& sheet : key.sheets()) {
+      if (!set_dir.empty()) break;
       if (static_cast<int>(layout.sheets.size()) >= sheets) break;
       std::vector<FieldSpec> specs;
       Writing w;

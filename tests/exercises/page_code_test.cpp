@@ -1,10 +1,9 @@
 #include <doctest/doctest.h>
 
 #include "exercises/sheet_id.h"
-#include "scan/page_code.h"
+#include "exercises/page_code.h"
 
 using namespace epure;
-using namespace epure::scan;
 
 TEST_CASE("page code: written and read back, and every single change caught") {
   const std::string sheet = SheetId{kDrawVersion, 5, 17}.str();

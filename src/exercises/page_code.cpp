@@ -1,4 +1,4 @@
-#include "scan/page_code.h"
+#include "exercises/page_code.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "exercises/sheet_id.h"
 
-namespace epure::scan {
+namespace epure {
 
 namespace {
 
@@ -63,4 +63,4 @@ std::optional<PageCode> parse_page_code(std::string_view text) {
   return PageCode{std::string(parts[0]), *page, *pages};
 }
 
-}  // namespace epure::scan
+}  // namespace epure

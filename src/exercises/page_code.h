@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace epure::scan {
+namespace epure {
 
 struct PageCode {
   std::string sheet;  // the sheet id as printed (canonical)
@@ -25,4 +25,4 @@ std::string page_code_text(const PageCode& code);
 // The code read back, or nothing when the text is not a page code or its check fails.
 std::optional<PageCode> parse_page_code(std::string_view text);
 
-}  // namespace epure::scan
+}  // namespace epure
