@@ -13,7 +13,7 @@ namespace {
 // Horizontal gaps, in points.
 constexpr double kPromptGap = 8;    // after a prompt column
 constexpr double kBoxGap = 3;       // between a box and the "(", ";" around it
-constexpr double kTickGap = 4;      // between a tick box and its option
+constexpr double kTickGap = 3;      // between a tick box and its option (10 + 3: the 9 + 4 of old, rows unchanged)
 constexpr double kOptionGap = 16;   // between two options
 // A key's answer too long for the cell beside its prompt goes on the line under the prompt, this
 // much indented, when that wraps it less (a point or a value is then on one line).

@@ -163,7 +163,8 @@ struct LayoutStyle {
   double number_box_width = 88;
   double point_box_width = 62;      // each coordinate of a point
   double point3_box_width = 54;
-  double tick_size = 9;
+  double tick_size = 10;           // a box to tick (3.5 mm): at 9 pt, a cross in a 150 dpi scan was once taken for
+                                   // a filled, cancelled box; 11 pt, the fixture's, cost a Letter sheet a 5th page
   double tick_row_height = 17;
   double row_space = 4;             // between consecutive field rows
   double prompt_column_max = 0.4;   // × text width, for the shared prompt column of fields
