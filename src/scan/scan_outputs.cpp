@@ -117,7 +117,11 @@ std::string sheets_csv(const ScanResult& result) {
       values += usable(f);
       corrected += f.corrected;
     }
-    const char* match = s.roster_number.empty() ? "" : s.student_number.empty() ? "not read" : s.student_number == s.roster_number ? "yes" : "no";
+    const char* match = s.roster_number.empty()    ? ""
+                        : s.number_printed         ? "printed"
+                        : s.student_number.empty() ? "not read"
+                        : s.student_number == s.roster_number ? "yes"
+                                                              : "no";
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", id, s.pages, read, missing, s.student_number, s.roster_number, match,
                        values, blank, review, corrected);
   }

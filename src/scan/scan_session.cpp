@@ -198,6 +198,9 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
         if (layout_sheet.student) {
           s.student_name = layout_sheet.student->name;
           s.roster_number = layout_sheet.student->number;
+          s.number_printed = true;
+          for (const auto& p : layout_sheet.pages)
+            for (const auto& f : p.fields) s.number_printed = s.number_printed && f.question != "student_number";
         }
       }
       if (s.seen[static_cast<std::size_t>(r.sheet_page - 1)]) {

@@ -45,6 +45,8 @@ struct SheetResult {
   std::string student_number;          // as read ("" when not read or uncertain)
   std::string student_name;            // from the roster
   std::string roster_number;           // from the roster
+  // The roster's number printed on the sheet (`generate --roster`): no comb to read it from.
+  bool number_printed = false;
 };
 
 struct ScanOptions {

@@ -4,7 +4,7 @@
 # printed on their first page (no number comb then), key.json and layout.json saying whose
 # sheet is whose; a roster with errors (a duplicate number, a line without a number, an empty
 # file) refused with the file and the line, nothing written; a warning (no name) said, the
-# sheets made.
+# sheets made; the sheets scanned (epure_scan_fixture --set) know their student.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail=0
@@ -37,6 +37,12 @@ PY
 pdftotext -f 1 -l 1 "$tmp/fr/sheets.pdf" - | grep -q "Lefèvre, Zoé" && pdftotext -f 1 -l 1 "$tmp/fr/sheets.pdf" - | grep -q "20260001" &&
   ok "the student's name and number printed on their first page" || bad "the name is not on the first page"
 python3 "$EPURE_SOURCE_DIR/tests/tools/layout_check.py" "$tmp/fr" >/dev/null 2>"$tmp/check.err" && ok "layout.json as the PDF" || bad "layout_check: $(head -5 "$tmp/check.err")"
+
+# the roster's sheets scanned: each sheet's student known from its page code, the number printed
+"$EPURE_SCAN_FIXTURE" --key "$tmp/fr/key.json" --set "$tmp/fr" --out "$tmp/scans" --sheets 2 --dpi 150 --degrade none --format png --seed 5 >/dev/null &&
+  "$EPURE" scan "$tmp"/scans/scan-*.png --key "$tmp/fr/key.json" --out "$tmp/scanned" -q 2>"$tmp/scan.err"
+[ $? -le 1 ] && grep -q "^[^,]*,4,4,,,20260001,printed," "$tmp/scanned/sheets.csv" && grep -q "^[^,]*,4,4,,,00412,printed," "$tmp/scanned/sheets.csv" &&
+  ok "scanned: every sheet's student from the roster, the number said printed" || bad "scan of the roster's sheets: $(cat "$tmp/scanned/sheets.csv" "$tmp/scan.err" 2>&1 | head -5)"
 
 # errors: refused, the file and its lines named, nothing written
 printf 'number;name\n20260001;A\n20260001;B\n;C\n' >"$tmp/dup.csv"
