@@ -141,6 +141,13 @@ struct Family {
     m.tell("t_proj", {{"t_proj", "t_proj"}});
     const auto ahead = !less(t_proj, zero);
     m.tell(inside ? "ahead.inside" : ahead ? "ahead.outside" : "behind");
+    if (!(inside || ahead)) {
+      // "si t ≤ 0, on arrête": the course eliminates the useless case at once, and so does the
+      // sheet: nothing past t_proj is asked
+      m.boolean("hit", inside || ahead);
+      m.choice("reason", method::pick(ahead, "miss", "behind"));
+      return;
+    }
     const auto P = m.round(S::P, A + t_proj * uh);
     m.tell("P", {{"P", "P", Shown::point}});
     // d² = CP², or by Pythagoras in the triangle A–P–C: AC² − t_proj², or as the course
@@ -154,7 +161,7 @@ struct Family {
     const auto hit = m.boolean("hit", inside || (ahead && less_equal(d2, r2)));
     if (!hit) {
       m.choice("reason", method::pick(ahead, "miss", "behind"));
-      if (ahead) m.tell("miss", {{"d2", "d2"}, {"r2", "r2"}});  // the course stops behind at once
+      m.tell("miss", {{"d2", "d2"}, {"r2", "r2"}});
       return;
     }
     const auto h2 = r2 - d2;
@@ -176,7 +183,9 @@ struct Family {
   static CoreAnswers core(const Data& d) {
     const auto rc = solve_core(d);
     CoreAnswers a;
-    a.number("t_proj", rc.t_proj).number("d2", rc.d2).boolean("inside", rc.inside).boolean("hit", rc.hit.has_value());
+    a.number("t_proj", rc.t_proj);
+    if (branch_of(rc) != RayBranch::behind) a.number("d2", rc.d2);  // the course stops behind at once
+    a.boolean("inside", rc.inside).boolean("hit", rc.hit.has_value());
     if (rc.hit) a.number("t", rc.hit->t).point(S::I, rc.hit->I).vec(S::N, rc.hit->N);
     else a.choice("reason", geo::to_string(*rc.reason));
     return a;

@@ -5,8 +5,11 @@
 
 #include <cmath>
 
+#include "exercises/exercise.h"
 #include "grading/exercise_fixture.h"
 
+using epure::ExerciseKind;
+using epure::find_kind;
 using epure::grading::Verdict;
 using epure::test::exercise;
 using epure::test::mark;
@@ -78,35 +81,45 @@ TEST_CASE("ray_circle: A inside, the root behind A") {
   CHECK(m["t"].mistake == "near_root_inside");
 }
 
-// Issue 31's sheet 1000-0005-001Q (French set, seed 5): A(4,8), u = (4,1), C(1,3), r = 2.
-// The course computes d² = (û∧AC)². A student who forgot to normalise u writes t_proj = u·AC =
-// −17 and, by the course's formula with u, d² = (u∧AC)² = (4·(−5) − 1·(−3))² = 289: one slip
-// (û left as u), named once on t_proj; d² carries it on by the course's road, although it is
-// not computed from t_proj.
+// Issue 31's sheet 1000-0005-000S (French set, seed 5): A(1,8), u = (2,−4), C(4,5), r = 2; the
+// key's t_proj = û·AC = 18/√20 ≈ 4.02 and d² = 1.8. The course computes d² = (û∧AC)². A student
+// who forgot to normalise u writes t_proj = u·AC = 18 and, by the course's formula with u,
+// d² = (u∧AC)² = 6² = 36 (the usual road, CP² with P = A + t·u, gives 5,850): one slip (û left
+// as u), named once, on t_proj; d² carries it on by the course's road, although that road does
+// not go through t_proj.
 TEST_CASE("ray_circle: u not normalised, then d² by the course's cross product: one slip, carried on") {
-  const auto key = exercise(R"({"kind":"ray_circle","A":[4,8],"u":[4,1],"C":[1,3],"r":2})",
-                            {"t_proj", "d2", "inside", "hit", "reason"});
-  const auto m = mark(key, {{"t_proj", "-17"}, {"d2", "289"}, {"inside", "no"}, {"hit", "no"}, {"reason", "behind"}});
+  const auto key = exercise(R"({"kind":"ray_circle","A":[1,8],"u":[2,-4],"C":[4,5],"r":2})",
+                            {"t_proj", "d2", "inside", "hit", "t", "I.x", "I.y", "N.x", "N.y"});
+  const auto m = mark(key, {{"t_proj", "18"}, {"d2", "36"}});
   CHECK(m["t_proj"].mistake == "direction_not_unit");
   CHECK(m["d2"].verdict == Verdict::follow_through);
   CHECK(m["d2"].from == "t_proj");
-  // the right û and the course's formula: (û∧AC)² = 289/17 = 17, the key's own d²
-  CHECK(mark(key, {{"t_proj", "-4.12"}, {"d2", "17"}})["d2"].verdict == Verdict::right);
-  // d² alone by the cross product with u unnormalised, t_proj left blank: the slip is named on d²
-  const auto alone = mark(key, {{"d2", "289"}});
-  CHECK(alone["d2"].mistake == "direction_not_unit");
-  // 289 next to a right t_proj is not that slip: the student's own û was right
-  const auto against = mark(key, {{"t_proj", "-4.12"}, {"d2", "289"}});
+  // the right û and the course's formula: (û∧AC)² = 36/20, the key's d²
+  CHECK(mark(key, {{"t_proj", "4.02"}, {"d2", "1.8"}})["d2"].verdict == Verdict::right);
+  // d² alone, t_proj left blank: the slip is named on d², on either road
+  CHECK(mark(key, {{"d2", "36"}})["d2"].mistake == "direction_not_unit");
+  CHECK(mark(key, {{"d2", "5850"}})["d2"].mistake == "direction_not_unit");
+  // 36 next to a right t_proj is not that slip: the student's own û was right
+  const auto against = mark(key, {{"t_proj", "4.02"}, {"d2", "36"}});
   CHECK(against["d2"].verdict == Verdict::wrong);
   CHECK(against["d2"].mistake.empty());
 }
 
-// Sheet 1000-0005-000S: A(1,8), u = (2,−4), C(4,5). With u unnormalised the course's formula
-// gives d² = (u∧AC)² = 6² = 36 (the usual road, CP² with P = A + t·u, gives 5,850): both are
-// that slip, on their road.
-TEST_CASE("ray_circle: u not normalised, d² on either road is the same slip") {
-  const auto key = exercise(R"({"kind":"ray_circle","A":[1,8],"u":[2,-4],"C":[4,5],"r":2})",
-                            {"t_proj", "d2", "inside", "hit", "t", "I.x", "I.y", "N.x", "N.y"});
-  CHECK(mark(key, {{"d2", "36"}})["d2"].mistake == "direction_not_unit");
-  CHECK(mark(key, {{"d2", "5850"}})["d2"].mistake == "direction_not_unit");
+// Sheet 1000-0005-001Q: A(4,8), u = (4,1), C(1,3): A is outside and t_proj = û·AC = −17/√17 < 0,
+// the ray points away. "Si t ≤ 0, on arrête": the key asks nothing past t_proj (the student of
+// the issue, u left unnormalised, wrote t_proj = −17 and d² = (u∧AC)² = 289 and got 0 for d²;
+// d² is no longer asked, and the slip is named once, on t_proj).
+TEST_CASE("ray_circle: behind, the course stops at t_proj; the sheet asks no d²") {
+  const ExerciseKind* circle = find_kind("ray_circle");
+  const auto data = circle->read_instance(nlohmann::json::parse(R"({"kind":"ray_circle","A":[4,8],"u":[4,1],"C":[1,3],"r":2})"));
+  std::vector<std::string_view> asked;
+  for (const auto& a : circle->evaluate(data, nullptr, {}, 2)) asked.push_back(a.id);
+  CHECK(asked == std::vector<std::string_view>{"inside", "t_proj", "hit", "reason"});
+  const auto key = exercise(R"({"kind":"ray_circle","A":[4,8],"u":[4,1],"C":[1,3],"r":2})",
+                            {"t_proj", "inside", "hit", "reason"});
+  const auto m = mark(key, {{"t_proj", "-17"}, {"inside", "no"}, {"hit", "no"}, {"reason", "behind"}});
+  CHECK(m["t_proj"].mistake == "direction_not_unit");
+  CHECK(m["hit"].verdict == Verdict::right);
+  CHECK(m["reason"].verdict == Verdict::right);
+  CHECK(m.total() == doctest::Approx(3).epsilon(1e-12));
 }
