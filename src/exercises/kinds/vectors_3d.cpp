@@ -177,7 +177,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
     const auto r = geo::compare_vectors_3d(d.u, d.v);
     const std::string branch = branch_of(r);
 
-    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{scene(d, r, ctx, false), 0.45}; };
+    const auto sheet_figure = [&](const KeySolution&) { return render::Figure{scene(d, r, ctx, false), 0.8}; };
     Begun begun = begin_sections(d, ctx, sheet_figure);
     ExerciseInstance& inst = begun.inst;
     const KeySolution& key = begun.key;
@@ -205,39 +205,86 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
                  {"sin", equals_value(ctx, r.sin, key.exact("sin"))}});
     step("angle", {{"angle", equals_value(ctx, r.angle_deg, key.exact("angle_deg"))}});
     step(branch, {});
-    inst.key.add(render::Figure{scene(d, r, ctx, true), 0.5});
+    inst.key.add(render::Figure{scene(d, r, ctx, true), 1.0});
     add_lines(inst.key, q);
     return std::move(inst);
   }
 
-  // The 3D view: u and v from the origin; on the key, u∧v too (to its direction, two units
-  // long), with the right angles it makes with u and v.
-  render::Scene scene(const Data& d, const geo::VectorPair3& r, const ExerciseContext& ctx, bool key) const {
+  // The axonometric view: u and v from the origin, u∧v to its direction (two units long).
+  static render::Panel space_view(const Data& d, const geo::VectorPair3& r, const ExerciseContext& ctx) {
     using render::Role;
     using space::p3;
     const auto& T = ctx.texts;
     const render::Camera cam = space::camera();
-    render::Scene s;
-    s.title = T.get("vectors_3d.title");
-    s.description = T.get(key ? "vectors_3d.figure.key" : "vectors_3d.figure.question");
     const double nw = geo::norm(r.cross);
     const geo::Vec3 w = nw > 0 ? (2.0 / nw) * r.cross : geo::Vec3{};
     std::vector<render::P3> pts = {{0, 0, 0}, p3(d.u), p3(d.v)};
-    if (key && nw > 0) pts.push_back(p3(w));
+    if (nw > 0) pts.push_back(p3(w));
     render::Panel panel = space::view_panel(cam, pts, 5, 1.5);
     space::add_drop(panel, cam, p3(d.u));
     space::add_drop(panel, cam, p3(d.v));
     const render::P2 o = cam.project({0, 0, 0});
     panel.add(render::Arrow{o, cam.project(p3(d.u)), Role::data});
     panel.add(render::Arrow{o, cam.project(p3(d.v)), Role::data});
-    if (key && nw > 0) {
+    if (nw > 0) {
       panel.add(render::Arrow{o, cam.project(p3(w)), Role::result});
       panel.add(render::Label{T.get("vectors_3d.figure.cross"), cam.project(p3(w)), render::Side::auto_, Role::result});
     }
     panel.add(render::Label{"\\vec{u}", cam.project(p3(d.u))});
     panel.add(render::Label{"\\vec{v}", cam.project(p3(d.v))});
     panel.caption = T.get("vectors_3d.figure.caption");
-    s.panels.push_back(std::move(panel));
+    return panel;
+  }
+
+  // An épure, as the course's field draws space on paper: two orthographic views side by side,
+  // the front view (elevation: x across, z up) and the top view (plan: x across, y up), each over
+  // a unit grid, so that every component is read in true size and lengths can be compared (an
+  // axonometric view foreshortens: u of length 5.4 came out shorter than v of length 3). On the
+  // key, the direction of u∧v too, two units long.
+  render::Scene scene(const Data& d, const geo::VectorPair3& r, const ExerciseContext& ctx, bool key) const {
+    using render::Role;
+    const auto& T = ctx.texts;
+    render::Scene s;
+    s.title = T.get("vectors_3d.title");
+    s.description = T.get(key ? "vectors_3d.figure.key" : "vectors_3d.figure.question");
+    const double nw = geo::norm(r.cross);
+    struct Drawn {
+      geo::Vec3 v;
+      std::string label;
+      Role role;
+    };
+    std::vector<Drawn> vectors = {{d.u, "\\vec{u}", Role::data}, {d.v, "\\vec{v}", Role::data}};
+    if (key && nw > 0) vectors.push_back({(2.0 / nw) * r.cross, T.get("vectors_3d.figure.cross"), Role::result});
+    // the view's two axes: 0 = x, 1 = y, 2 = z
+    auto view = [&](int across, int up, const char* across_name, const char* up_name, const std::string& caption) {
+      auto component = [](const geo::Vec3& v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; };
+      auto in_view = [&](const geo::Vec3& v) { return render::P2{component(v, across), component(v, up)}; };
+      std::vector<render::P2> pts = {{0, 0}, {1, 1}};
+      for (const auto& w : vectors) pts.push_back(in_view(w.v));
+      render::Panel panel;
+      panel.view = view_around(pts, 1.0, 5.0);
+      panel.add(render::Grid{1, true});
+      for (const auto& w : vectors) {
+        const render::P2 tip = in_view(w.v);
+        // a vector seen end on is a point in this view: marked, not drawn as an arrow
+        if (std::hypot(tip.x, tip.y) < 1e-9) continue;
+        panel.add(render::Arrow{{0, 0}, tip, w.role});
+      }
+      for (const auto& w : vectors) {
+        const render::P2 tip = in_view(w.v);
+        panel.add(render::Label{w.label, tip, render::Side::auto_, w.role});
+      }
+      // the axes' names at their positive ends, inside the view
+      panel.add(render::Label{across_name, {panel.view.x_max - 0.3, 0}, render::Side::auto_, Role::muted});
+      panel.add(render::Label{up_name, {0, panel.view.y_max - 0.3}, render::Side::auto_, Role::muted});
+      panel.caption = caption;
+      return panel;
+    };
+    // The key opens with the view in space (the explorer's handles and drags are set on its
+    // camera); the sheet has the two views only.
+    if (key) s.panels.push_back(space_view(d, r, ctx));
+    s.panels.push_back(view(0, 2, "x", "z", T.get("vectors_3d.figure.front")));
+    s.panels.push_back(view(0, 1, "x", "y", T.get("vectors_3d.figure.top")));
     return s;
   }
 };
