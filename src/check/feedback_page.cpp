@@ -101,9 +101,9 @@ void overlay(render::Scene& scene, Fn fn, const Outcome& got, const Texts& T) {
     tip = {got.out[0] + got.out[2], got.out[1] + got.out[3]};
   }
   if (!std::isfinite(J.x) || !std::isfinite(J.y) || !grading::make_room(panel, J)) return;
-  panel.add(render::PointMark{J, render::Role::highlight, render::Label{label, J, render::Side::auto_, render::Role::highlight}});
+  panel.add(render::PointMark{J, render::Role::given, render::Label{label, J, render::Side::auto_, render::Role::given}});
   if (f.has_normal && std::isfinite(tip.x) && std::isfinite(tip.y) && grading::make_room(panel, tip))
-    panel.add(render::Arrow{J, tip, render::Role::highlight});
+    panel.add(render::Arrow{J, tip, render::Role::given});
 }
 
 std::string category_text(Category c, const Texts& T) { return T.get("check.category." + std::string(category_name(c))); }

@@ -9,15 +9,7 @@ namespace epure::kinds {
 
 void legend_highlight(render::Scene& scene, const ExerciseContext& ctx, std::string_view text_key,
                       render::LegendEntry::Swatch swatch) {
-  bool any = false;
-  for (const render::Panel& panel : scene.panels)
-    for (const render::Item& item : panel.items)
-      std::visit(
-          [&](const auto& i) {
-            if constexpr (requires { i.role; }) any = any || i.role == render::Role::highlight;
-          },
-          item);
-  if (any) scene.legend.push_back({render::Role::highlight, swatch, ctx.texts.get(std::string(text_key))});
+  if (render::uses_role(scene, render::Role::highlight)) scene.legend.push_back({render::Role::highlight, swatch, ctx.texts.get(std::string(text_key))});
 }
 
 render::Box view_around(const std::vector<render::P2>& points, double margin, double min_size,

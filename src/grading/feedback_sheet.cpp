@@ -60,7 +60,7 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
     if (d.anchor.empty()) {
       const render::P2 at{*x, *y};
       if (!make_room(panel, at)) continue;
-      panel.add(render::PointMark{at, render::Role::highlight, render::Label{label, at, render::Side::auto_, render::Role::highlight}});
+      panel.add(render::PointMark{at, render::Role::given, render::Label{label, at, render::Side::auto_, render::Role::given}});
       continue;
     }
     // a vector: drawn from where the key puts its anchor point
@@ -70,8 +70,8 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
     const render::P2 from{ex.questions[static_cast<std::size_t>(ax)].number, ex.questions[static_cast<std::size_t>(ay)].number};
     const render::P2 to{from.x + *x, from.y + *y};
     if (!make_room(panel, to)) continue;
-    panel.add(render::Arrow{from, to, render::Role::highlight});
-    panel.add(render::Label{label, to, render::Side::auto_, render::Role::highlight});
+    panel.add(render::Arrow{from, to, render::Role::given});
+    panel.add(render::Label{label, to, render::Side::auto_, render::Role::given});
   }
 }
 

@@ -23,6 +23,7 @@ enum class Role {
   normal,        // normal vectors at a hit
   muted,         // shown for context but not in play (the square's non-candidate sides)
   highlight,     // picked out (the candidate sides)
+  given,         // a student's own answer, drawn over the key's figure (feedback sheets)
 };
 
 // Text of a label or caption. Plain UTF-8 with three markups, which every backend renders:
@@ -162,5 +163,21 @@ struct Scene {
   std::vector<std::string> links;  // RichText between panel i and i+1 (size panels − 1 or 0)
   std::vector<LegendEntry> legend;
 };
+
+// Whether any item of the scene is drawn in `role`: a legend says what a colour means only where
+// the figure shows it.
+inline bool uses_role(const Scene& scene, Role role) {
+  for (const Panel& panel : scene.panels)
+    for (const Item& item : panel.items) {
+      const bool in_role = std::visit(
+          [&](const auto& i) {
+            if constexpr (requires { i.role; }) return i.role == role;
+            else return false;
+          },
+          item);
+      if (in_role) return true;
+    }
+  return false;
+}
 
 }  // namespace epure::render

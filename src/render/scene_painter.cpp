@@ -106,13 +106,14 @@ std::string_view role_name(Role r) {
     case Role::normal: return "normal";
     case Role::muted: return "muted";
     case Role::highlight: return "highlight";
+    case Role::given: return "given";
   }
   return "data";
 }
 
 // Drawing order: context under the figure, the answer on top.
-constexpr std::array<Role, 6> kLayerOrder = {Role::muted, Role::construction, Role::highlight,
-                                             Role::data,  Role::normal,       Role::result};
+constexpr std::array<Role, 7> kLayerOrder = {Role::muted, Role::construction, Role::highlight, Role::data,
+                                             Role::normal, Role::result,      Role::given};
 
 P2 side_direction(Side s) {
   switch (s) {
@@ -738,8 +739,8 @@ class PanelPainter {
   const Style& style_;
   Obstacles obstacles_;
   std::vector<Op> grid_;
-  std::array<std::vector<Op>, 6> strokes_;
-  std::array<std::vector<Op>, 6> points_;
+  std::array<std::vector<Op>, kLayerOrder.size()> strokes_;
+  std::array<std::vector<Op>, kLayerOrder.size()> points_;
   std::vector<PendingLabel> labels_;
   std::vector<Number> numbers_;
   std::array<long, 2> every_{1, 1};  // number every k-th grid line, on x and y

@@ -10,6 +10,8 @@
 //   normal        dash-dot dark green, medium, with an arrowhead
 //   muted         dotted light grey, thin
 //   highlight     solid orange, thickest
+//   given         long-dashed purple, thickest (a student's answer: never orange, which means a
+//                 candidate side)
 //
 // Lengths are in points (1/72 in).
 #include <array>
@@ -49,7 +51,7 @@ struct RoleStyle {
 inline const std::vector<double> kForcedDash = {5, 3};
 
 struct Style {
-  std::array<RoleStyle, 6> roles;
+  std::array<RoleStyle, 7> roles;
 
   // Text sizes.
   double label_size = 10;   // point and free labels
@@ -93,6 +95,8 @@ struct Style {
         {0xa8, 0xa8, 0xa8}, 0.9, {1, 2}, 2.0, {0x90, 0x90, 0x90}};
     s.roles[static_cast<std::size_t>(Role::highlight)] = {
         {0xe0, 0x70, 0x00}, 3.0, {}, 3.2, {0xb0, 0x58, 0x00}};
+    s.roles[static_cast<std::size_t>(Role::given)] = {
+        {0x7b, 0x1f, 0xa2}, 3.0, {7, 3}, 3.2, {0x6a, 0x1b, 0x9a}};
     return s;
   }
 };

@@ -128,7 +128,8 @@ TEST_CASE("a wrong point is drawn on the key's diagram, a right one is not") {
   REQUIRE(wrong.panels[0].items.size() == 1);
   const auto* mark = std::get_if<epure::render::PointMark>(&wrong.panels[0].items[0]);
   REQUIRE(mark);
-  CHECK(mark->role == epure::render::Role::highlight);
+  // in the student's own colour, never orange (a candidate side's); its label says whose it is
+  CHECK(mark->role == epure::render::Role::given);
   CHECK(mark->at.x == doctest::Approx(4.5).epsilon(1e-12));
   CHECK(mark->label->text == "P (yours)");
   CHECK(scene_with("4.04").panels[0].items.empty());
