@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <bit>
 #include <cstdint>
 #include <initializer_list>
 #include <numbers>
@@ -226,7 +225,7 @@ inline Traced atan2_degrees(Traced s, Traced c) {
   thread_local bool have = false;
   thread_local std::uint64_t last_s = 0, last_c = 0;
   thread_local double last = 0;
-  const auto bs = std::bit_cast<std::uint64_t>(s.v), bc = std::bit_cast<std::uint64_t>(c.v);
+  const auto bs = portable::bit_cast<std::uint64_t>(s.v), bc = portable::bit_cast<std::uint64_t>(c.v);
   if (!have || bs != last_s || bc != last_c) last = atan2_degrees(s.v, c.v), last_s = bs, last_c = bc, have = true;
   return {last, s.deps | c.deps};
 }

@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -26,6 +25,7 @@
 #include "exercises/kinds/ray_branch.h"
 #include "geometry/affine.h"
 #include "geometry/ray_transformed.h"
+#include "support/portable.h"
 
 namespace epure::kinds::transformed {
 
@@ -136,7 +136,7 @@ ExactCosSin exact_cos_sin(double degrees);
 inline geo::CosSin figure_cos_sin(double degrees) {
   thread_local double last_degrees = std::numeric_limits<double>::quiet_NaN();
   thread_local geo::CosSin last{};
-  if (std::bit_cast<std::uint64_t>(degrees) != std::bit_cast<std::uint64_t>(last_degrees)) {
+  if (portable::bit_cast<std::uint64_t>(degrees) != portable::bit_cast<std::uint64_t>(last_degrees)) {
     last = geo::cos_sin_degrees(degrees);
     last_degrees = degrees;
   }
