@@ -28,7 +28,7 @@ void solve_line(benchmark::State& state) {
   fmt::memory_buffer out;
   std::size_t i = 0, failed = 0;
   for (auto _ : state) {
-    failed += !epure::solve::solve_line(lines[i], out, epure::solve::Semantics::exact).empty();
+    failed += !epure::solve::solve_line(lines[i], out).empty();
     benchmark::DoNotOptimize(out.data());
     if (out.size() > (1 << 16)) out.clear();
     i = (i + 1) & (kBatch - 1);

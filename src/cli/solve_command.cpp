@@ -104,7 +104,7 @@ int run_solve(std::FILE* in, const std::string& name) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF files
     if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
-    std::string error = solve::solve_line(line, out, solve::Semantics::exact);  // README
+    std::string error = solve::solve_line(line, out);  // README
     out.push_back('\n');
     if (!error.empty()) {
       ++failed;

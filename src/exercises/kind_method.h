@@ -238,7 +238,8 @@ class MethodKind : public ExerciseKind {
   }
 
   // The solve contract: the figure read by the schema, solved and written by the kind's
-  // `contract(const Data&, bool exact, solve::Result&)`.
+  // `contract(const Data&, const solve::Fields&, solve::Result&)`; the fields give the numbers
+  // as written (solve::Fields::decimal), which the decisions are exact for.
   bool solves(const solve::Fields& figure) const override {
     FirstPoint first;
     const Data d{};
@@ -252,7 +253,7 @@ class MethodKind : public ExerciseKind {
     Data d{};
     FigureReader reader(figure);
     visit_schema(reader, d);
-    Kind::contract(d, figure.exact(), result);
+    Kind::contract(d, figure, result);
   }
 
   // A kind's `ExerciseInstance build(const Data&, const ExerciseContext&) const` (the key of

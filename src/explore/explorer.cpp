@@ -123,7 +123,7 @@ ExerciseSpec exercise_spec(std::string_view kind) {
 
 std::string solve(std::string_view line) {
   fmt::memory_buffer out;
-  solve::solve_line(line, out, solve::Semantics::exact);
+  solve::solve_line(line, out);
   return std::string(out.data(), out.size());
 }
 

@@ -12,12 +12,25 @@
 
 namespace epure::geo {
 
-// hi + lo is the vector exactly; hi alone is its rounded value.
+struct Decimal;
+
+// hi + lo is the vector exactly; hi alone is its rounded value. A vector between decimals
+// (decimal.h) is hi + lo to within `err` in each coordinate, and keeps what it is made of for
+// the exact slow path of a decision (predicates.h): (to − from)·2^shift, `from` null for a datum
+// itself; `to` null when hi + lo is exact.
 struct ExactVec2 {
   Vec2 hi, lo;
+  double err = 0;
+  const Decimal* to = nullptr;
+  const Decimal* from = nullptr;
+  int shift = 0;
 };
 struct ExactVec3 {
   Vec3 hi, lo;
+  double err = 0;
+  const Decimal* to = nullptr;
+  const Decimal* from = nullptr;
+  int shift = 0;
 };
 
 // b − a, exactly (barring overflow).

@@ -15,6 +15,7 @@
 // filter bounds are relative, and the fma products exact, only away from underflow.
 #include <cmath>
 
+#include "geometry/decimal_vec.h"
 #include "geometry/exact_vec.h"
 #include "geometry/tolerance.h"
 
@@ -75,10 +76,25 @@ inline exact::TwoTerm compensated_dot(const ExactVec3& u, const ExactVec3& v) {
 Certain exact_dot(const ExactVec2& u, const ExactVec2& v);
 Certain exact_cross(const ExactVec2& u, const ExactVec2& v);
 Certain exact_dot(const ExactVec3& u, const ExactVec3& v);
-Certain exact_excess(const ExactVec2& v, double r);
-Certain exact_excess(const ExactVec3& v, double r);
-Certain exact_discriminant(Vec2 u, const ExactVec2& v, double r);
-Certain exact_discriminant(Vec3 u, const ExactVec3& v, double r);
+Certain exact_cross(const ExactVec3& u, const ExactVec3& v, int axis);
+Certain exact_excess(const ExactVec2& v, const DecimalScalar& r);
+Certain exact_excess(const ExactVec3& v, const DecimalScalar& r);
+Certain exact_discriminant(const ExactVec2& u, const ExactVec2& v, const DecimalScalar& r);
+Certain exact_discriminant(const ExactVec3& u, const ExactVec3& v, const DecimalScalar& r);
+
+// What the decimals' rests may move u·v or u∧v by (their `err`), with margin: zero between
+// doubles, so that the filter is then the one it always was.
+inline double perturbation(const ExactVec2& u, const ExactVec2& v) {
+  if (u.err == 0 && v.err == 0) return 0;
+  const double nu = std::abs(u.hi.x) + std::abs(u.hi.y), nv = std::abs(v.hi.x) + std::abs(v.hi.y);
+  return 2 * (u.err * (nv + 2 * v.err) + v.err * nu) + 0x1p-1060;
+}
+inline double perturbation(const ExactVec3& u, const ExactVec3& v) {
+  if (u.err == 0 && v.err == 0) return 0;
+  const double nu = std::abs(u.hi.x) + std::abs(u.hi.y) + std::abs(u.hi.z);
+  const double nv = std::abs(v.hi.x) + std::abs(v.hi.y) + std::abs(v.hi.z);
+  return 2 * (u.err * (nv + 3 * v.err) + v.err * nu) + 0x1p-1060;
+}
 Certain exact_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, double y2);
 }  // namespace detail
 
@@ -86,7 +102,7 @@ Certain exact_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, d
 inline Certain certain_dot(const ExactVec2& u, const ExactVec2& v) {
   const exact::TwoTerm value = detail::compensated_dot(u, v);
   const double terms = std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_dot(u, v);
 }
@@ -94,7 +110,7 @@ inline Certain certain_dot(const ExactVec3& u, const ExactVec3& v) {
   const exact::TwoTerm value = detail::compensated_dot(u, v);
   const double terms =
       std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y) + std::abs(u.hi.z * v.hi.z);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_dot(u, v);
 }
@@ -103,33 +119,60 @@ inline Certain certain_dot(const ExactVec3& u, const ExactVec3& v) {
 inline Certain certain_cross(const ExactVec2& u, const ExactVec2& v) {
   const exact::TwoTerm value = detail::compensated_cross(u, v);
   const double terms = std::abs(u.hi.x * v.hi.y) + std::abs(u.hi.y * v.hi.x);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_cross(u, v);
 }
 
+// One coordinate of u×v in space (axis 0, 1, 2: x, y, z), of exact vectors.
+inline Certain certain_cross(const ExactVec3& u, const ExactVec3& v, int axis) {
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  auto at = [](const Vec3& w, int k) { return k == 0 ? w.x : k == 1 ? w.y : w.z; };
+  const ExactVec2 a{{at(u.hi, i), at(u.hi, j)}, {at(u.lo, i), at(u.lo, j)}, u.err};
+  const ExactVec2 b{{at(v.hi, i), at(v.hi, j)}, {at(v.lo, i), at(v.lo, j)}, v.err};
+  const exact::TwoTerm value = detail::compensated_cross(a, b);
+  const double terms = std::abs(a.hi.x * b.hi.y) + std::abs(a.hi.y * b.hi.x);
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(a, b))
+    return {sign_of(value.hi), value.hi, value.lo};
+  return detail::exact_cross(u, v, axis);
+}
+
 // ‖v‖² − r² of an exact vector: the sign says outside (+), on (0) or inside (−) the circle.
-inline Certain certain_excess(const ExactVec2& v, double r) {
+// (r is a radius: a double, or a decimal datum with its rest, decimal_vec.h.)
+inline Certain certain_excess(const ExactVec2& v, const DecimalScalar& radius) {
+  const double r = radius.hi;
   exact::CompensatedSum s;
   s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(-r, r);
   s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y) + (v.lo.x * v.lo.x + v.lo.y * v.lo.y));
+  if (radius.lo != 0) s.add(-(2 * r + radius.lo) * radius.lo);
   const exact::TwoTerm value = s.two_term();
   const double terms = v.hi.x * v.hi.x + v.hi.y * v.hi.y + r * r;
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+  const double moved = v.err == 0 && radius.err == 0
+                           ? 0
+                           : 4 * (v.err * (std::abs(v.hi.x) + std::abs(v.hi.y) + v.err) +
+                                  radius.err * (std::abs(r) + radius.err)) + 0x1p-1060;
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + moved)
     return {sign_of(value.hi), value.hi, value.lo};
-  return detail::exact_excess(v, r);
+  return detail::exact_excess(v, radius);
 }
-inline Certain certain_excess(const ExactVec3& v, double r) {
+inline Certain certain_excess(const ExactVec3& v, const DecimalScalar& radius) {
+  const double r = radius.hi;
   exact::CompensatedSum s;
   s.add_product(v.hi.x, v.hi.x).add_product(v.hi.y, v.hi.y).add_product(v.hi.z, v.hi.z);
   s.add_product(-r, r);
   s.add(2 * (v.hi.x * v.lo.x + v.hi.y * v.lo.y + v.hi.z * v.lo.z) +
         (v.lo.x * v.lo.x + v.lo.y * v.lo.y + v.lo.z * v.lo.z));
+  if (radius.lo != 0) s.add(-(2 * r + radius.lo) * radius.lo);
   const exact::TwoTerm value = s.two_term();
   const double terms = v.hi.x * v.hi.x + v.hi.y * v.hi.y + v.hi.z * v.hi.z + r * r;
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms)
+  const double moved =
+      v.err == 0 && radius.err == 0
+          ? 0
+          : 4 * (v.err * (std::abs(v.hi.x) + std::abs(v.hi.y) + std::abs(v.hi.z) + v.err) +
+                 radius.err * (std::abs(r) + radius.err)) + 0x1p-1060;
+  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + moved)
     return {sign_of(value.hi), value.hi, value.lo};
-  return detail::exact_excess(v, r);
+  return detail::exact_excess(v, radius);
 }
 
 // x1·y1 + x2·y2 for exact two-term x and double y.
@@ -145,7 +188,14 @@ inline Certain certain_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoT
 // keeps its digits near tangency, where r² − d² computed from d would be made of rounding.
 // Double-double evaluation, with the exact expansion within 2^-40 of the terms (a chord of
 // less than 1e-6 of the radius): there a double-double no longer gives √(r² − d²) to an ulp.
-Certain certain_discriminant(Vec2 u, const ExactVec2& v, double r);
-Certain certain_discriminant(Vec3 u, const ExactVec3& v, double r);
+// u may be a decimal datum (its rest in u.lo, within u.err), as may r.
+Certain certain_discriminant(const ExactVec2& u, const ExactVec2& v, const DecimalScalar& r);
+Certain certain_discriminant(const ExactVec3& u, const ExactVec3& v, const DecimalScalar& r);
+inline Certain certain_discriminant(Vec2 u, const ExactVec2& v, const DecimalScalar& r) {
+  return certain_discriminant(as_exact(u), v, r);
+}
+inline Certain certain_discriminant(Vec3 u, const ExactVec3& v, const DecimalScalar& r) {
+  return certain_discriminant(as_exact(u), v, r);
+}
 
 }  // namespace epure::geo

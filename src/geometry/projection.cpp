@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/decimal_vec.h"
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
 #include "geometry/exponent.h"
@@ -61,19 +62,22 @@ Projection project(Point2 A, Point2 B, Point2 C) {
   return p;
 }
 
-EPURE_FMA_KERNEL Projection project_exact(Point2 A, Point2 B, Point2 C) {
+Projection project_exact(Point2 A, Point2 B, Point2 C) {
+  return project_exact(decimal_point(A), decimal_point(B), decimal_point(C));
+}
+
+EPURE_FMA_KERNEL Projection project_exact(const DPoint2& dA, const DPoint2& dB, const DPoint2& dC) {
+  const Point2 A = hi_point(dA), B = hi_point(dB), C = hi_point(dC);
   Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y});
   Projection p{};
   p.AB = B - A;
   p.AC = C - A;
-  // A segment only when A ≠ B; B − A rounds to zero exactly when they are equal (gradual
-  // underflow keeps every other difference non-zero).
-  if (!(p.AB.x != 0 || p.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
+  // A segment only when A ≠ B as numbers (two decimals may share their nearest double).
+  if (same_value(dA[0], dB[0]) && same_value(dA[1], dB[1])) throw DegenerateFigure("B", "degenerate segment, A = B");
   // t is a ratio: computed on the figure brought near unit size by a power of two (exact), so
   // that AB·AB neither underflows at 1e-200 nor overflows at 1e200.
   const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
-  const Point2 a = times_pow2(A, -e), b = times_pow2(B, -e), c = times_pow2(C, -e);
-  const ExactVec2 AB = exact_difference(b, a), AC = exact_difference(c, a);
+  const ExactVec2 AB = decimal_difference(dB, dA, e), AC = decimal_difference(dC, dA, e);
 
   // (AC − t·AB)·AB = 0  =>  t = AB·AC / AB·AB. The position is the sign of AB·AC (t < 0) and of
   // AB·BC = AB·AC − AB·AB (t > 1), each exact for the given doubles (predicates.h).
@@ -87,16 +91,17 @@ EPURE_FMA_KERNEL Projection project_exact(Point2 A, Point2 B, Point2 C) {
   p.ab_dot_ac = times_pow2(ab_dot_ac.value, 2 * e);
   p.ab_dot_ab = times_pow2(ab_dot_ab, 2 * e);
   // A + t·AB with AB exact: one rounding per coordinate beyond t's own
-  auto along = [&](Point2 from, const ExactVec2& by, double k) {
-    return Point2{from.x + std::fma(k, times_pow2(by.hi.x, e), k * times_pow2(by.lo.x, e)),
-                  from.y + std::fma(k, times_pow2(by.hi.y, e), k * times_pow2(by.lo.y, e))};
+  // (the decimal's rest of `from` added with AB's: nothing for doubles)
+  auto along = [&](const DPoint2& from, const ExactVec2& by, double k) {
+    return Point2{from[0].hi + (std::fma(k, times_pow2(by.hi.x, e), k * times_pow2(by.lo.x, e)) + from[0].lo),
+                  from[1].hi + (std::fma(k, times_pow2(by.hi.y, e), k * times_pow2(by.lo.y, e)) + from[1].lo)};
   };
   // Both signs and both quotients are computed whatever the case, and the case then selects
   // among them: the same values as taking each case's own path, without a hard-to-predict
   // branch between them (the figures come before, between and after alike).
   const double t = ratio(ab_dot_ac);
   // the sign of AB·BC places t against 1; t − 1 = AB·BC / AB·AB keeps its own digits near B
-  const Certain ab_dot_bc = certain_dot(AB, exact_difference(c, b));
+  const Certain ab_dot_bc = certain_dot(AB, decimal_difference(dC, dB, e));
   const double beyond = ratio(ab_dot_bc);
   if (ab_dot_ac.sign < 0) {
     p.position = Position::before;
@@ -121,7 +126,7 @@ EPURE_FMA_KERNEL Projection project_exact(Point2 A, Point2 B, Point2 C) {
   // computes it. A and B themselves where t is exactly 0 or 1.
   constexpr double kNearB = 0x1p-20;
   const bool near_b = ab_dot_ac.sign > 0 && !(t < 0.5) && std::abs(beyond) < kNearB;
-  p.P = along(near_b ? B : A, AB, near_b ? beyond : p.t);
+  p.P = along(near_b ? dB : dA, AB, near_b ? beyond : p.t);
   if (ab_dot_ac.sign == 0) p.P = A;
   else if (ab_dot_ac.sign > 0 && !(t < 0.5) && ab_dot_bc.sign == 0) p.P = B;
   return p;

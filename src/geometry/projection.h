@@ -1,6 +1,7 @@
 #pragma once
 // Exercise 1 of the course: the orthogonal projection P of a point C on the line (AB), by the
 // dot product alone.
+#include "geometry/decimal.h"
 #include "geometry/vec.h"
 
 namespace epure::geo {
@@ -22,15 +23,13 @@ struct Projection {
 // 0 or 1.
 Projection project(Point2 A, Point2 B, Point2 C);
 
-// The same projection with every decision exact for the given doubles, as `epure solve` states
-// it (README): no snapping. The position is the sign of AB·AC (before) and of AB·BC (after);
-// t = 0 exactly when AB·AC = 0, t = 1 when AB·BC = 0, and t never contradicts the position
-// (t < 0 before, t > 1 after). Degenerate only when A = B exactly.
-//
-// Two semantics, on purpose: `project` reads its data as the decimals a worksheet typed (a t
-// within rounding of an end is that end, C "above B" in decimals is above B), which the
-// worksheets rely on; `project_exact` answers for the doubles themselves, which a calculator
-// owes its user (issue 15). They agree on every figure more than ~1e-14 from a boundary.
+// The same projection with every decision exact for the numbers given (README, one meaning for
+// a number): decimals as written (decimal.h), or doubles as themselves. No snapping: the
+// position is the sign of AB·AC (before) and of AB·BC (after); t = 0 exactly when AB·AC = 0,
+// t = 1 when AB·BC = 0, and t never contradicts the position (t < 0 before, t > 1 after).
+// Degenerate only when A = B exactly. (`project`, the tolerant one, is the worksheets' drawing
+// aid only: it decides nothing a key or `epure solve` prints.)
+Projection project_exact(const DPoint2& A, const DPoint2& B, const DPoint2& C);
 Projection project_exact(Point2 A, Point2 B, Point2 C);
 
 const char* to_string(Position p);

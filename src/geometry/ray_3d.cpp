@@ -34,6 +34,15 @@ EPURE_FMA_KERNEL RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere
   return detail::intersect_ball_exact<RaySphere, Hit3>(ray, sphere.C, sphere.r);
 }
 
+EPURE_FMA_KERNEL RaySphere intersect_exact(const DPoint3& A, const DPoint3& u, const DPoint3& C, const Decimal& r) {
+  return detail::intersect_ball_exact<RaySphere, Hit3, Ray3>(A, u, C, r);
+}
+
+EPURE_FMA_KERNEL PrintedValues<Vec3, Point3> printed_values(const DPoint3& A, const DPoint3& u, const DPoint3& C,
+                                                            const Decimal& r, const RaySphere& res, double length) {
+  return detail::printed_values(A, u, C, r, res, length);
+}
+
 EPURE_FMA_KERNEL PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere,
                                                             const RaySphere& res, double length) {
   return detail::printed_values(ray, sphere.C, sphere.r, res, length);
@@ -42,7 +51,11 @@ EPURE_FMA_KERNEL PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, con
 EPURE_FMA_KERNEL RayCube intersect_canonical_cube_exact(const Ray3& ray) {
   const Point3 A = ray.origin;
   const Vec3 u = ray.direction;
-  return cube_result(detail::intersect_box_exact<3>({A.x, A.y, A.z}, {u.x, u.y, u.z}));
+  return cube_result(detail::intersect_box_exact<3>(std::array<double, 3>{A.x, A.y, A.z}, std::array<double, 3>{u.x, u.y, u.z}));
+}
+
+EPURE_FMA_KERNEL RayCube intersect_canonical_cube_exact(const DPoint3& A, const DPoint3& u) {
+  return cube_result(detail::intersect_box_exact<3>(A, u));
 }
 
 }  // namespace epure::geo

@@ -39,9 +39,15 @@ RayCube intersect_canonical_cube(const Ray3& ray);
 // Exact for the given doubles, as intersect_exact (ray_circle.h) and
 // intersect_canonical_square_exact (ray_square.h); at an edge or a corner, x then y first.
 RaySphere intersect_exact(const Ray3& ray, const Sphere& sphere);
+// The same for the numbers as written (decimal.h).
+RaySphere intersect_exact(const DPoint3& A, const DPoint3& u, const DPoint3& C, const Decimal& r);
+PrintedValues<Vec3, Point3> printed_values(const DPoint3& A, const DPoint3& u, const DPoint3& C, const Decimal& r,
+                                           const RaySphere& res, double length);
 // As printed_values for the circle (ray_circle.h).
 PrintedValues<Vec3, Point3> printed_values(const Ray3& ray, const Sphere& sphere, const RaySphere& res,
                                            double length);
 RayCube intersect_canonical_cube_exact(const Ray3& ray);
+// The same for the numbers as written (decimal.h): A and u (README, "What a number means").
+RayCube intersect_canonical_cube_exact(const DPoint3& A, const DPoint3& u);
 
 }  // namespace epure::geo

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/decimal_vec.h"
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
 #include "geometry/exponent.h"
@@ -144,13 +145,17 @@ Result intersect_ball(const Ray& ray, Point C, double r) {
 inline Vec2 as_vec(const ExactVec2& v) { return v.hi + v.lo; }
 inline Vec3 as_vec(const ExactVec3& v) { return v.hi + v.lo; }
 
-template <class Result, class Hit, class Ray, class Point>
-Result intersect_ball_exact(const Ray& ray, Point C, double r) {
+// The numbers as given: decimals as written (decimal.h), or doubles as themselves.
+template <class Result, class Hit, class Ray, class DPoint>
+Result intersect_ball_exact(const DPoint& dA, const DPoint& du, const DPoint& dC, const Decimal& dr) {
+  const double r = dr.hi;
   if (!(r > 0) || !std::isfinite(r)) throw DegenerateFigure("r", "must be > 0");
-  const double largest_u = max_abs(ray.direction);
+  const auto direction = hi_vec(du);
+  const double largest_u = max_abs(direction);
   if (!(largest_u > 0)) throw DegenerateFigure("u", "zero direction");
   if (!std::isfinite(largest_u)) throw DegenerateFigure("u", "not a finite direction");
-  const Point A = ray.origin;
+  const auto A = hi_point(dA), C = hi_point(dC);
+  const Ray ray{A, direction};
 
   Result res{};
   res.AC = C - A;
@@ -160,8 +165,10 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   const int e = binary_exponent(std::max({max_abs(A), max_abs(C), r}));
   const int f = binary_exponent(largest_u);
   const auto u = times_pow2(ray.direction, -f);
-  const double rs = times_pow2(r, -e);
-  const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
+  const auto U = decimal_vector(du, f);  // u with its decimals' rests, for the decisions
+  const DecimalScalar RS(dr, e);
+  const double rs = RS.hi;
+  const auto AC = decimal_difference(dC, dA, e);
   const double length_u = plain_norm(u);
   // ‖u‖² as the worksheet kernel takes it (length_u², the square root's rounding twice): a
   // key's solution is `epure solve`'s to the bit on every worksheet instance (tests/cli/
@@ -172,8 +179,8 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
 
   // Every decision below is the sign of a polynomial of the data, exact (predicates.h):
   // inside ‖AC‖² < r², behind u·AC < 0, miss ‖u‖²r² < ‖u ∧ AC‖² (d² > r²), tangent when equal.
-  const Certain excess = certain_excess(AC, rs);  // ‖AC‖² − r²
-  const Certain toward = certain_dot(as_exact(u), AC);  // u·AC
+  const Certain excess = certain_excess(AC, RS);  // ‖AC‖² − r²
+  const Certain toward = certain_dot(U, AC);  // u·AC
   // P = A + t_proj·u with (AC − t_proj·u)·u = 0; of u·AC's sign
   const double t_proj = toward.value / uu;
   res.t_proj = to_world_t(t_proj);
@@ -194,7 +201,9 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   // to its last digits, or exactly (predicates.h): no window snaps a near tangent to a tangent.
   const double d = offset.d;
   const double gap = rs - d;
-  const bool clear = std::abs(gap) > 8 * kEpsilon * (rs + d);
+  // (decimal data: d was found with u's double, off by ε‖AC‖ at most, and r's by ε·r)
+  const double rests = U.err == 0 && RS.err == 0 ? 0 : 2 * kEpsilon * (plain_norm(AC.hi) + rs);
+  const bool clear = std::abs(gap) > 8 * kEpsilon * (rs + d) + rests;
   if (clear && gap < 0) {
     res.reason = NoHit::miss;
     return res;
@@ -203,7 +212,7 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   const double size = times_pow2(std::max({max_abs(A), max_abs(C), r}), -e);
   double h = h_plain;  // PI = √(r² − d²)
   if (!(clear && d * d <= 4 * h_plain * size)) {
-    const Certain disc = certain_discriminant(u, AC, rs);
+    const Certain disc = certain_discriminant(U, AC, RS);
     if (disc.sign < 0) {
       res.reason = NoHit::miss;
       return res;
@@ -247,6 +256,12 @@ Result intersect_ball_exact(const Ray& ray, Point C, double r) {
   hit.N = radial_length > 0 ? radial / radial_length : -1.0 * (AC.hi / plain_norm(AC.hi));
   res.hit = hit;
   return res;
+}
+
+template <class Result, class Hit, class Ray, class Point>
+Result intersect_ball_exact(const Ray& ray, Point C, double r) {
+  return intersect_ball_exact<Result, Hit, Ray>(decimal_point(ray.origin), decimal_point(ray.direction),
+                                                decimal_point(C), Decimal::of(r));
 }
 
 
@@ -322,6 +337,9 @@ inline std::array<double, 3> parts(Point3 p) { return {p.x, p.y, p.z}; }
 inline Point2 point_from_parts(const std::array<double, 2>& a) { return {a[0], a[1]}; }
 inline Point3 point_from_parts(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
+inline double dot_parts(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double dot_parts(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
 // The a-priori bound: 8ε|w| (above) within 4 ulps, less a margin for the second-order terms.
 inline bool vouched(double w, double S) {
   return 8 * kEpsilon * std::abs(w) <= (4 - 0x1p-6) * ulp_at(std::max(S, std::abs(w)));
@@ -330,12 +348,17 @@ inline bool vouched(double w, double S) {
 // `length` is ‖ray.direction‖ as the caller rounds it; res is either kernel's result for the ray
 // and the ball (C, r). Both kernels' decisions are kept: the root is the one they chose, and a
 // tangent (no half chord) stays one.
-template <class Result, class Ray, class Point>
-auto printed_values(const Ray& ray, Point C, double r, const Result& res, double length) {
-  using Vec = decltype(ray.direction);
+// The data as given: decimals as written (decimal.h), their rests in every accurate value.
+template <class Result, class DPoint>
+auto printed_values(const DPoint& dA, const DPoint& du, const DPoint& dC, const Decimal& dr, const Result& res,
+                    double length) {
+  using Vec = decltype(hi_vec(du));
+  using Point = decltype(hi_point(dA));
+  const Point A = hi_point(dA), C = hi_point(dC);
+  const Vec direction = hi_vec(du);
+  const double r = dr.hi;
   PrintedValues<Vec, Point> out{res.t_proj * length, res.hit ? res.hit->t * length : 0.0,
                                 res.hit ? res.hit->I : Point{}, res.hit ? res.hit->N : Vec{}};
-  const Point A = ray.origin;
   const double S = std::max({max_abs(A), max_abs(C), r});
   // t = 0 is A itself (on the figure), a decision and not a rounding
   const bool check_t = res.hit && res.hit->t > 0;
@@ -343,14 +366,17 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
 
   // In the figure's units (2^-e), u near unit size: every product exact or compensated.
   const int e = binary_exponent(S);
-  const auto u = times_pow2(ray.direction, -binary_exponent(max_abs(ray.direction)));
-  const double rs = times_pow2(r, -e);
+  const int f = binary_exponent(max_abs(direction));
+  const auto u = times_pow2(direction, -f);
+  const auto U = decimal_vector(du, f);
+  const DecimalScalar RS(dr, e);
+  const double rs = RS.hi;
   const double Ss = times_pow2(S, -e);
-  const auto AC = exact_difference(times_pow2(C, -e), times_pow2(A, -e));
-  // ‖u‖², ‖u‖ and τ = u·AC / ‖u‖ to a few ε² of themselves
-  const DD uu = squared_norm(u);
+  const auto AC = decimal_difference(dC, dA, e);
+  // ‖u‖², ‖u‖ and τ = u·AC / ‖u‖ to a few ε² of themselves (u with its decimals' rests)
+  const DD uu = dd_sum(squared_norm(u), {2 * dot_parts(u, U.lo), 0});
   const DD length_u = dd_sqrt(uu);
-  const DD tau = dd_quotient(detail::compensated_dot(as_exact(u), AC), length_u);
+  const DD tau = dd_quotient(detail::compensated_dot(U, AC), length_u);
   // u·AC's error is 64ε² of its terms (predicates.h), at most ‖u‖·‖AC‖ ≤ 2√3‖u‖·S
   const double e_tau = 0x1p-90 * Ss + 0x1p-96 * std::abs(tau.hi);
   const double w_proj = times_pow2(out.t_proj, -e);
@@ -362,11 +388,11 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
   double e_h = 0;
   DD h{0, 0};
   if (*res.half_chord > 0) {
-    h = dd_sqrt(dd_quotient(as_dd(certain_discriminant(u, AC, rs)), uu));
+    h = dd_sqrt(dd_quotient(as_dd(certain_discriminant(U, AC, RS)), uu));
     e_h = 0x1p-58 * h.hi;
   }
   // ‖AC‖² − r² = (τ − h)(τ + h), within 64ε² of ‖AC‖² + r² ≤ 13·S² (predicates.h)
-  const DD excess = as_dd(certain_excess(AC, rs));
+  const DD excess = as_dd(certain_excess(AC, RS));
   const double e_excess = 0x1p-90 * Ss * Ss;
   // the root the kernel chose, each in its form without cancellation
   DD t;
@@ -392,11 +418,11 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
   // tangent a tangent: N stays a unit vector there). Each coordinate of I − C is within
   // e_t + 2^-96 (|t| + 2S) of itself, N within twice that over r; the bound is 4 ulps of
   // max(1, S/r) (N·r as a length, compare_jsonl.py).
-  const auto u_parts = parts(u), ac_hi = parts(AC.hi), ac_lo = parts(AC.lo);
+  const auto u_parts = parts(u), u_lo = parts(U.lo), ac_hi = parts(AC.hi), ac_lo = parts(AC.lo);
   std::array<DD, u_parts.size()> radial;
   DD radial2{0, 0};
   for (std::size_t i = 0; i < u_parts.size(); ++i) {
-    radial[i] = dd_sum(dd_quotient(dd_product(t, {u_parts[i], 0}), length_u), {-ac_hi[i], -ac_lo[i]});
+    radial[i] = dd_sum(dd_quotient(dd_product(t, exact::two_sum(u_parts[i], u_lo[i])), length_u), {-ac_hi[i], -ac_lo[i]});
     radial2 = dd_sum(radial2, dd_product(radial[i], radial[i]));
   }
   // each coordinate of I − C within this of itself
@@ -404,10 +430,10 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
   // I = C + (I − C): A + t·û rounds t·û, and t itself is a length of up to 4 ulps of S, so the
   // kernel's I can reach 5 ulps where t·û is large beside S (an origin inside, a long chord).
   // Each coordinate within the radial's error plus the sum's rounding.
-  const auto c_parts = parts(times_pow2(C, -e));
+  const auto c_parts = parts(times_pow2(C, -e)), c_lo = parts(times_pow2(lo_vec(dC), -e));
   auto I = parts(out.I);
   for (std::size_t i = 0; i < I.size(); ++i) {
-    const DD accurate = dd_sum({c_parts[i], 0}, radial[i]);
+    const DD accurate = dd_sum(exact::two_sum(c_parts[i], c_lo[i]), radial[i]);
     const double e_i = e_radial + 0x1p-100 * (std::abs(accurate.hi) + Ss);
     I[i] = times_pow2(checked(times_pow2(I[i], -e), accurate, e_i, Ss), e);
   }
@@ -421,6 +447,13 @@ auto printed_values(const Ray& ray, Point C, double r, const Result& res, double
     N[i] = checked_within(N[i], dd_quotient(radial[i], radial_length), e_n, allowed_n);
   out.N = from_parts(N);
   return out;
+}
+
+// Doubles as themselves.
+template <class Result, class Ray, class Point>
+auto printed_values(const Ray& ray, Point C, double r, const Result& res, double length) {
+  return printed_values(decimal_point(ray.origin), decimal_point(ray.direction), decimal_point(C), Decimal::of(r),
+                        res, length);
 }
 
 }  // namespace epure::geo::detail

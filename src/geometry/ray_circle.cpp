@@ -17,6 +17,15 @@ EPURE_FMA_KERNEL RayCircle intersect_exact(const Ray2& ray, const Circle& circle
   return detail::intersect_ball_exact<RayCircle, Hit2>(ray, circle.C, circle.r);
 }
 
+EPURE_FMA_KERNEL RayCircle intersect_exact(const DPoint2& A, const DPoint2& u, const DPoint2& C, const Decimal& r) {
+  return detail::intersect_ball_exact<RayCircle, Hit2, Ray2>(A, u, C, r);
+}
+
+EPURE_FMA_KERNEL PrintedValues<Vec2, Point2> printed_values(const DPoint2& A, const DPoint2& u, const DPoint2& C,
+                                                            const Decimal& r, const RayCircle& res, double length) {
+  return detail::printed_values(A, u, C, r, res, length);
+}
+
 EPURE_FMA_KERNEL PrintedValues<Vec2, Point2> printed_values(const Ray2& ray, const Circle& circle,
                                                             const RayCircle& res, double length) {
   return detail::printed_values(ray, circle.C, circle.r, res, length);

@@ -11,6 +11,7 @@
 // a line within the data's rounding of tangency, with PI = 0.
 #include <optional>
 
+#include "geometry/decimal.h"
 #include "geometry/ray.h"
 
 namespace epure::geo {
@@ -49,6 +50,8 @@ RayCircle intersect_canonical_circle(const Ray2& ray);
 // `intersect` reads the data as a worksheet's decimals (within rounding of tangency is tangent).
 RayCircle intersect_exact(const Ray2& ray, const Circle& circle);
 RayCircle intersect_canonical_circle_exact(const Ray2& ray);
+// The same for the numbers as written (decimal.h): A, u, C, r (README, one meaning for a number).
+RayCircle intersect_exact(const DPoint2& A, const DPoint2& u, const DPoint2& C, const Decimal& r);
 
 // The values `epure solve` prints that its kernels can leave beyond 4 ulps: t_proj·‖u‖ and, with
 // a hit, t·‖u‖, I and N, `length` being ‖u‖ as the caller rounds it and res either kernel's
@@ -64,5 +67,7 @@ struct PrintedValues {
 };
 PrintedValues<Vec2, Point2> printed_values(const Ray2& ray, const Circle& circle, const RayCircle& res,
                                            double length);
+PrintedValues<Vec2, Point2> printed_values(const DPoint2& A, const DPoint2& u, const DPoint2& C, const Decimal& r,
+                                           const RayCircle& res, double length);
 
 }  // namespace epure::geo

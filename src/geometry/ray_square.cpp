@@ -28,7 +28,11 @@ RaySquare intersect_canonical_square(const Ray2& ray) {
 EPURE_FMA_KERNEL RaySquare intersect_canonical_square_exact(const Ray2& ray) {
   const Point2 A = ray.origin;
   const Vec2 u = ray.direction;
-  return square_result(detail::intersect_box_exact<2>({A.x, A.y}, {u.x, u.y}));
+  return square_result(detail::intersect_box_exact<2>(std::array<double, 2>{A.x, A.y}, std::array<double, 2>{u.x, u.y}));
+}
+
+EPURE_FMA_KERNEL RaySquare intersect_canonical_square_exact(const DPoint2& A, const DPoint2& u) {
+  return square_result(detail::intersect_box_exact<2>(A, u));
 }
 
 }  // namespace epure::geo

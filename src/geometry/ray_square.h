@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "geometry/box_faces.h"
+#include "geometry/decimal.h"
 #include "geometry/ray.h"
 
 namespace epure::geo {
@@ -29,5 +30,7 @@ RaySquare intersect_canonical_square(const Ray2& ray);
 // planes' parameters and of the landing point against the side's ends; at a corner the x side
 // is taken first. The hit point lies on the square (coordinates kept within [-1, 1]).
 RaySquare intersect_canonical_square_exact(const Ray2& ray);
+// The same for the numbers as written (decimal.h): A and u (README, "What a number means").
+RaySquare intersect_canonical_square_exact(const DPoint2& A, const DPoint2& u);
 
 }  // namespace epure::geo

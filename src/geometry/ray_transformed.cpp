@@ -148,7 +148,7 @@ EPURE_FMA_KERNEL RayEllipse intersect_exact(const Ray2& ray, const Ellipse& elli
   return ellipse_by(ray, ellipse, intersect_canonical_circle_exact);
 }
 EPURE_FMA_KERNEL RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle) {
-  return rectangle_by(ray, rectangle, intersect_canonical_square_exact);
+  return rectangle_by(ray, rectangle, [](const Ray2& r) { return intersect_canonical_square_exact(r); });
 }
 
 }  // namespace epure::geo

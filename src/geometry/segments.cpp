@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/decimal_vec.h"
 #include "geometry/degenerate.h"
 #include "geometry/exact_vec.h"
 #include "geometry/exponent.h"
@@ -149,25 +150,28 @@ Parameter parameter(const Certain& n, const Certain& den, Complement m) {
 
 }  // namespace
 
-EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D) {
+SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D) {
+  return intersect_segments_exact(decimal_point(A), decimal_point(B), decimal_point(C), decimal_point(D));
+}
+
+EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(const DPoint2& dA, const DPoint2& dB, const DPoint2& dC,
+                                                              const DPoint2& dD) {
+  const Point2 A = hi_point(dA), B = hi_point(dB), C = hi_point(dC), D = hi_point(dD);
   Scale scale = Scale::of({A.x, A.y, B.x, B.y, C.x, C.y, D.x, D.y});
   SegmentIntersection s{};
   s.AB = B - A;
   s.CD = D - C;
   s.AC = C - A;
-  // A segment only when its ends differ; their difference rounds to zero exactly when they are
-  // equal (gradual underflow).
-  if (!(s.AB.x != 0 || s.AB.y != 0)) throw DegenerateFigure("B", "degenerate segment, A = B");
-  if (!(s.CD.x != 0 || s.CD.y != 0)) throw DegenerateFigure("D", "degenerate segment, C = D");
+  // A segment only when its ends differ as numbers (two decimals may share their double).
+  if (same_value(dA[0], dB[0]) && same_value(dA[1], dB[1])) throw DegenerateFigure("B", "degenerate segment, A = B");
+  if (same_value(dC[0], dD[0]) && same_value(dC[1], dD[1])) throw DegenerateFigure("D", "degenerate segment, C = D");
 
   // The parameters are ratios: computed on the figure brought near unit size by a power of two
   // (exact), so that the cross products neither overflow at 1e200 nor underflow at 1e-200.
   const int e = scale.value > 0 ? binary_exponent(scale.value) : 0;
-  auto down = [e](Point2 p) { return times_pow2(p, -e); };
-  const Point2 a = down(A), b = down(B), c = down(C), d = down(D);
-  const ExactVec2 AB = exact_difference(b, a);
-  const ExactVec2 CD = exact_difference(d, c);
-  const ExactVec2 AC = exact_difference(c, a);
+  const ExactVec2 AB = decimal_difference(dB, dA, e);
+  const ExactVec2 CD = decimal_difference(dD, dC, e);
+  const ExactVec2 AC = decimal_difference(dC, dA, e);
 
   // Cross products of the exact differences, their signs exact (predicates.h).
   const Certain ab_cross_cd = certain_cross(AB, CD);
@@ -185,9 +189,9 @@ EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(Point2 A, Point2 B
   // t_ab = AC∧CD / AB∧CD, 1 − t_ab = CB∧CD / AB∧CD (AB − AC = CB);
   // t_cd = AC∧AB / AB∧CD, 1 − t_cd = AB∧AD / AB∧CD (AB∧CD + AB∧AC = AB∧AD).
   const Parameter t_ab = parameter(ac_cross_cd, ab_cross_cd,
-                                   [&] { return certain_cross(exact_difference(b, c), CD); });
+                                   [&] { return certain_cross(decimal_difference(dB, dC, e), CD); });
   const Parameter t_cd = parameter(ac_cross_ab, ab_cross_cd,
-                                   [&] { return certain_cross(AB, exact_difference(d, a)); });
+                                   [&] { return certain_cross(AB, decimal_difference(dD, dA, e)); });
   s.t_ab = t_ab.t;
   s.t_cd = t_cd.t;
   if (t_ab.end != 0 || t_cd.end != 0) {
@@ -195,6 +199,7 @@ EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(Point2 A, Point2 B
     return s;
   }
   s.relation = SegmentRelation::intersects;
+  const Vec2 ab_hi = times_pow2(AB.hi, e);  // B − A rounded (with the decimals' rests: s.AB for doubles)
   // An end that the other segment touches is the intersection itself, to the last bit.
   if (t_ab.at_start) s.I = A;
   else if (t_ab.at_finish) s.I = B;
@@ -202,12 +207,13 @@ EPURE_FMA_KERNEL SegmentIntersection intersect_segments_exact(Point2 A, Point2 B
   else if (t_cd.at_finish) s.I = D;
   else if (constexpr double kNearB = 0x1p-20; std::abs(t_ab.back) < kNearB) {
     // within 2^-20 of B (no worksheet's crossing is): B − (1 − t_ab)·AB, where A + t_ab·AB would carry t_ab's rounding
-    s.I = Point2{B.x - std::fma(t_ab.back, s.AB.x, t_ab.back * times_pow2(AB.lo.x, e)),
-                 B.y - std::fma(t_ab.back, s.AB.y, t_ab.back * times_pow2(AB.lo.y, e))};
+    s.I = Point2{B.x - (std::fma(t_ab.back, ab_hi.x, t_ab.back * times_pow2(AB.lo.x, e)) - dB[0].lo),
+                 B.y - (std::fma(t_ab.back, ab_hi.y, t_ab.back * times_pow2(AB.lo.y, e)) - dB[1].lo)};
   } else {
-    // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own
-    s.I = Point2{A.x + std::fma(t_ab.t, s.AB.x, t_ab.t * times_pow2(AB.lo.x, e)),
-                 A.y + std::fma(t_ab.t, s.AB.y, t_ab.t * times_pow2(AB.lo.y, e))};
+    // A + t_ab·AB with AB exact: one rounding per coordinate beyond t_ab's own (and A's
+    // decimal rest with it)
+    s.I = Point2{A.x + (std::fma(t_ab.t, ab_hi.x, t_ab.t * times_pow2(AB.lo.x, e)) + dA[0].lo),
+                 A.y + (std::fma(t_ab.t, ab_hi.y, t_ab.t * times_pow2(AB.lo.y, e)) + dA[1].lo)};
   }
   return s;
 }

@@ -4,6 +4,7 @@
 //   t_ab = AC∧CD / AB∧CD   and   t_cd = AC∧AB / AB∧CD.
 #include <optional>
 
+#include "geometry/decimal.h"
 #include "geometry/vec.h"
 
 namespace epure::geo {
@@ -40,6 +41,8 @@ SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D);
 // exactly 0 or 1 only when the lines meet exactly at that end, and it never contradicts the
 // relation (within [0, 1] for `intersects`, beyond for the one that is, for `outside`).
 // Degenerate only when A = B or C = D exactly.
+// Decimals as written (decimal.h), doubles as themselves: one meaning for a number (README).
+SegmentIntersection intersect_segments_exact(const DPoint2& A, const DPoint2& B, const DPoint2& C, const DPoint2& D);
 SegmentIntersection intersect_segments_exact(Point2 A, Point2 B, Point2 C, Point2 D);
 
 const char* to_string(SegmentRelation r);

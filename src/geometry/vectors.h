@@ -1,5 +1,6 @@
 #pragma once
 // The preamble of the course: what the dot and cross products tell of two vectors.
+#include "geometry/decimal.h"
 #include "geometry/vec.h"
 
 namespace epure::geo {
@@ -14,6 +15,10 @@ struct VectorPair {
 
 // Throws DegenerateFigure("u" or "v") for a zero vector: it has no direction, so no angle.
 VectorPair compare_vectors(Vec2 u, Vec2 v);
+// The same for the numbers as written (decimal.h; README, "What a number means"): the signs of
+// u·v and u∧v exact for the decimals (u∧v = 0 for vectors parallel as written), their values to
+// about an ulp of the decimals' products.
+VectorPair compare_decimal_vectors(const DPoint2& u, const DPoint2& v);
 
 // The preamble in space (ℝ³): u∧v is a vector, and the angle is unsigned (no orientation of a
 // plane is given), in [0°, 180°].
@@ -33,6 +38,7 @@ inline constexpr double kCollinearSin = 1e-12;
 
 // Throws DegenerateFigure("u" or "v") for a zero vector.
 VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v);
+VectorPair3 compare_decimal_vectors_3d(const DPoint3& u, const DPoint3& v);
 
 // atan2(sin, cos) in degrees, in (−180, 180] and of the sine's sign: atan2(−0, −1) is −180, we
 // say 180; a negative sine whose angle rounds to −180 gives −179.99999999999997.

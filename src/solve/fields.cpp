@@ -31,17 +31,17 @@ const Value& Fields::get(std::string_view name) const {
   return *v;
 }
 
-double Fields::number(std::string_view name) const {
+const geo::Decimal& Fields::decimal(std::string_view name) const {
   const Value& v = get(name);
   return as_number(v.type, v.number, name, -1);
 }
 
-double Fields::as_number(Type type, double x, std::string_view name, int index) {
+const geo::Decimal& Fields::as_number(Type type, const geo::Decimal& x, std::string_view name, int index) {
   if (type != Type::number) {
     if (index < 0) fail(name, fmt::format("expected a number, got {}", type_name(type)));
     fail(name, fmt::format("expected numbers, got {} at index {}", type_name(type), index));
   }
-  if (!std::isfinite(x)) fail(name, "not a finite number");
+  if (!std::isfinite(x.hi)) fail(name, "not a finite number");
   return x;
 }
 

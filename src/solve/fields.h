@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "geometry/decimal.h"
 #include "geometry/vec.h"
 
 namespace epure::solve {
@@ -23,32 +24,22 @@ class InputError : public std::runtime_error {
 
 [[noreturn]] void fail(std::string_view field, std::string_view why);
 
-// How the numbers of a line are read.
-enum class Semantics {
-  // As the doubles they are, every decision exact (README, "epure solve"; issue 15): what the
-  // calculator owes its user.
-  exact,
-  // As the decimals a worksheet typed: a figure within the data's rounding of a boundary is on
-  // it (segments parallel as decimals are parallel, a t within rounding of an end is that end).
-  // The semantics the worksheets are drawn and their keys solved with (the generator's
-  // instances "parallel as decimals" are parallel in their keys).
-  worksheet,
-};
-
 // The JSON types, as far as the contract's checks tell them apart.
 enum class Type { null, boolean, number, string, array, object };
 const char* type_name(Type t);
 
 // One field's value, with what the checks need: a number, a string, or an array's size and its
-// first elements (no figure has a longer array: a longer one is refused on its size alone).
+// first elements (no figure has a longer array: a longer one is refused on its size alone). A
+// number is the decimal its text writes (geometry/decimal.h; README, "What a number means"):
+// every decision is exact for it.
 struct Value {
   static constexpr std::size_t kItems = 3;
   Type type = Type::null;
-  double number = 0;
+  geo::Decimal number;
   std::string_view string;
   std::size_t size = 0;
   std::array<Type, kItems> item_types{};
-  std::array<double, kItems> items{};
+  std::array<geo::Decimal, kItems> items{};
 };
 
 struct Field {
@@ -63,24 +54,34 @@ const Value* find(std::span<const Field> fields, std::string_view key);
 // Reads the figure's fields, with an error that names the field for anything off.
 class Fields {
  public:
-  Fields(std::span<const Field> figure, Semantics semantics) : figure_(figure), semantics_(semantics) {}
+  explicit Fields(std::span<const Field> figure) : figure_(figure) {}
 
-  bool exact() const { return semantics_ == Semantics::exact; }
   // The field, or null when the figure has none of that name.
   const Value* find(std::string_view name) const { return solve::find(figure_, name); }
 
   const Value& get(std::string_view name) const;
-  double number(std::string_view name) const;
+  double number(std::string_view name) const { return decimal(name).hi; }
+  // The number as written: what the decisions are exact for.
+  const geo::Decimal& decimal(std::string_view name) const;
   template <std::size_t N>
   std::array<double, N> numbers(std::string_view name) const {
+    const auto d = decimals<N>(name);
+    std::array<double, N> values{};
+    for (std::size_t i = 0; i < N; ++i) values[i] = d[i].hi;
+    return values;
+  }
+  template <std::size_t N>
+  std::array<geo::Decimal, N> decimals(std::string_view name) const {
     static_assert(N <= Value::kItems);
     const Value& v = get(name);
     if (v.type != Type::array) fail(name, fmt::format("expected an array of {} numbers", N));
     if (v.size != N) fail(name, fmt::format("expected {} numbers, got {}", N, v.size));
-    std::array<double, N> values{};
+    std::array<geo::Decimal, N> values{};
     for (std::size_t i = 0; i < N; ++i) values[i] = as_number(v.item_types[i], v.items[i], name, static_cast<int>(i));
     return values;
   }
+  geo::DPoint2 dpoint2(std::string_view name) const { return decimals<2>(name); }
+  geo::DPoint3 dpoint3(std::string_view name) const { return decimals<3>(name); }
   geo::Point2 point2(std::string_view name) const {
     auto v = numbers<2>(name);
     return {v[0], v[1]};
@@ -100,9 +101,8 @@ class Fields {
 
  private:
   // index < 0: the field itself; else the array's element at that index
-  static double as_number(Type type, double x, std::string_view name, int index);
+  static const geo::Decimal& as_number(Type type, const geo::Decimal& x, std::string_view name, int index);
   std::span<const Field> figure_;
-  Semantics semantics_;
 };
 
 }  // namespace epure::solve

@@ -1,8 +1,11 @@
 #include "solve/line_reader.h"
 
 #include <charconv>
+#include <new>
 #include <cstdint>
+#include <algorithm>
 #include <optional>
+#include <string>
 
 #include "support/portable.h"
 
@@ -23,31 +26,52 @@ Type type_of(const json& j) {
   }
 }
 
-Value value_of(const json& j) {
+// A number of a parsed document, as written: its text when the line's was kept (NumberTexts
+// below), else the shortest decimal that gives its double (an integer's own digits).
+geo::Decimal number_of(const json& j, const std::string* text) {
+  const double x = j.get<double>();
+  if (text) return geo::read_decimal(*text, x);
+  if (j.is_number_integer()) {
+    // an integer nlohmann read exactly: its digits, not its double's (2^63 − 1 is not a double)
+    char buffer[24];
+    const auto end = j.is_number_unsigned() ? std::to_chars(buffer, buffer + sizeof buffer, j.get<std::uint64_t>()).ptr
+                                            : std::to_chars(buffer, buffer + sizeof buffer, j.get<std::int64_t>()).ptr;
+    const geo::Decimal d = geo::read_decimal({buffer, static_cast<std::size_t>(end - buffer)}, x);
+    if (d.form != geo::Decimal::Form::long_decimal) return d;  // at most 19 digits: keeps no view
+  }
+  return geo::written(x);
+}
+
+Value value_of(const json& j, const NumberTexts::Texts* texts) {
   Value v;
   v.type = type_of(j);
-  if (v.type == Type::number) v.number = j.get<double>();
+  const auto text = [&](std::size_t i) -> const std::string* {
+    return texts && i < texts->size() && !(*texts)[i].empty() ? &(*texts)[i] : nullptr;
+  };
+  if (v.type == Type::number) v.number = number_of(j, text(0));
   if (v.type == Type::string) v.string = j.get_ref<const std::string&>();
   if (v.type == Type::array) {
     v.size = j.size();
     for (std::size_t i = 0; i < std::min(v.size, Value::kItems); ++i) {
       v.item_types[i] = type_of(j[i]);
-      if (v.item_types[i] == Type::number) v.items[i] = j[i].get<double>();
+      if (v.item_types[i] == Type::number) v.items[i] = number_of(j[i], text(i));
     }
   }
   return v;
 }
 
-// A JSON number of at most 15 significant digits and a power of ten within ±22, as a worksheet
-// writes them ("-2.5", "0.125", "3e2"): digits·10^k is then one exact double times or over
-// another, a single correctly rounded operation, so it is the double strtod gives (Clinger's
-// fast path). Nothing for anything longer: from_chars reads it.
-std::optional<double> short_decimal(const char* p, const char* end) {
-  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  const bool negative = p != end && *p == '-';
-  if (negative) ++p;
+// A JSON number's significant digits, when at most 19 (they fit 64 bits), and the power of ten
+// of the last: ±digits·10^power.
+struct Digits {
+  bool negative = false;
+  std::uint64_t digits = 0;
+  int count = 0;  // significant digits
+  int power = 0;
+};
+std::optional<Digits> digits_of(const char* p, const char* end) {
+  Digits d;
+  d.negative = p != end && *p == '-';
+  if (d.negative) ++p;
   std::uint64_t digits = 0;
   int count = 0, power = 0;
   for (; p != end && *p != 'e' && *p != 'E'; ++p) {
@@ -59,7 +83,7 @@ std::optional<double> short_decimal(const char* p, const char* end) {
     digits = 10 * digits + static_cast<std::uint64_t>(*p - '0');
     if (power < 0) --power;
   }
-  if (count > 15) return std::nullopt;  // below 10^15 < 2^53: exact as a double
+  if (count > 19) return std::nullopt;  // below 10^19 < 2^64
   if (power < 0) ++power;               // the '.' itself counted one
   if (p != end) {
     ++p;  // 'e'
@@ -70,10 +94,25 @@ std::optional<double> short_decimal(const char* p, const char* end) {
     for (; p != end; ++p) exponent = 10 * exponent + (*p - '0');
     power += minus ? -exponent : exponent;
   }
-  if (power < -22 || power > 22) return std::nullopt;
-  const double x = static_cast<double>(digits);
-  const double value = power < 0 ? x / kPowers[-power] : x * kPowers[power];
-  return negative ? -value : value;
+  d.digits = digits;
+  d.count = count;
+  d.power = power;
+  return d;
+}
+
+// A number of at most 15 significant digits and a power of ten within ±22, as a worksheet
+// writes them ("-2.5", "0.125", "3e2"): digits·10^k is then one exact double times or over
+// another, a single correctly rounded operation, so it is the double strtod gives (Clinger's
+// fast path). Nothing for anything longer: from_chars reads it.
+std::optional<double> short_decimal(const Digits& d) {
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (d.count > 15) return std::nullopt;  // below 10^15 < 2^53: exact as a double
+  if (d.power < -22 || d.power > 22) return std::nullopt;
+  const double x = static_cast<double>(d.digits);
+  const double value = d.power < 0 ? x / kPowers[-d.power] : x * kPowers[d.power];
+  return d.negative ? -value : value;
 }
 
 // Reads the shape of every well-formed solve line (one flat object whose values are numbers,
@@ -85,13 +124,14 @@ class FlatReader {
  public:
   static constexpr std::size_t kMaxFields = LineReader::kMaxFlatFields;
 
-  FlatReader(std::string_view line, std::array<Field, kMaxFields>& fields)
-      : p_(line.data()), end_(line.data() + line.size()), fields_(fields) {}
+  // `room` for kMaxFields fields, constructed as they are read.
+  FlatReader(std::string_view line, unsigned char* room)
+      : p_(line.data()), end_(line.data() + line.size()), fields_(reinterpret_cast<Field*>(room)), room_(room) {}
 
   // The fields in the order of the line, or nothing when the line is not of the flat shape.
   std::optional<std::span<const Field>> read() {
     if (!object()) return std::nullopt;
-    return std::span<const Field>(fields_.data(), count_);
+    return std::span<const Field>(std::launder(fields_), count_);
   }
 
  private:
@@ -102,7 +142,7 @@ class FlatReader {
     if (!eat('}')) {
       do {
         if (count_ == kMaxFields) return false;
-        Field& f = fields_[count_++];
+        Field& f = *new (room_ + sizeof(Field) * count_++) Field{};
         space();
         if (!string(f.key)) return false;
         space();
@@ -154,8 +194,19 @@ class FlatReader {
     return true;
   }
 
-  // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?, correctly rounded as strtod rounds it.
-  bool number(double& x) {
+  // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?: the decimal it writes (geometry/decimal.h),
+  // a view of the line's text, and its double correctly rounded as strtod rounds it.
+  bool number(geo::Decimal& d) {
+    const char* begin = p_;
+    double x = 0;
+    std::optional<Digits> digits;
+    if (!number(x, digits)) return false;
+    // the digits already read, or the text again (more than 19 digits)
+    d = digits ? geo::decimal_of_digits(digits->negative, digits->digits, digits->power, x)
+               : geo::read_decimal({begin, static_cast<std::size_t>(p_ - begin)}, x);
+    return true;
+  }
+  bool number(double& x, std::optional<Digits>& split) {
     const char* begin = p_;
     bool integer = true;
     eat('-');
@@ -169,7 +220,8 @@ class FlatReader {
       if (!eat('+')) eat('-');
       if (!digits()) return false;
     }
-    if (auto exact = short_decimal(begin, p_)) {
+    split = digits_of(begin, p_);
+    if (auto exact = split ? short_decimal(*split) : std::nullopt) {
       x = *exact;
     } else {
       // Out of range (1e400, 1e-400): nlohmann's own wording and value.
@@ -197,7 +249,8 @@ class FlatReader {
 
   const char* p_;
   const char* end_;
-  std::array<Field, kMaxFields>& fields_;
+  Field* fields_;
+  unsigned char* room_;
   std::size_t count_ = 0;
 };
 
@@ -210,9 +263,79 @@ std::string_view without_id(std::string_view what) {
 
 }  // namespace
 
-std::vector<Field> fields_of(const json& object) {
+// nlohmann's SAX interface: depth 1 is the object's fields, depth 2 an array's items.
+struct NumberTextsReader {
+  using json = nlohmann::json;
+  NumberTexts& out;
+  int depth = 0;
+  NumberTexts::Texts* current = nullptr;  // the texts of the field being read
+  std::size_t item = 0;
+
+  bool number(const std::string* text) {
+    if (!current) return true;
+    if (depth == 1 && text) (*current)[0] = *text;
+    if (depth == 2) {
+      if (item < Value::kItems && text) (*current)[item] = *text;
+      ++item;
+    }
+    return true;
+  }
+  bool other() {
+    if (depth == 2) ++item;
+    return true;
+  }
+  bool null() { return other(); }
+  bool boolean(bool) { return other(); }
+  bool number_integer(json::number_integer_t) { return number(nullptr); }
+  bool number_unsigned(json::number_unsigned_t) { return number(nullptr); }
+  bool number_float(json::number_float_t, const json::string_t& text) { return number(&text); }
+  bool string(json::string_t&) { return other(); }
+  bool binary(json::binary_t&) { return other(); }
+  bool start_object(std::size_t) {
+    other();
+    ++depth;
+    return true;
+  }
+  bool key(json::string_t& k) {
+    if (depth != 1) return true;
+    auto it = std::find_if(out.keys_.begin(), out.keys_.end(), [&](const auto& e) { return e.first == k; });
+    if (it == out.keys_.end()) it = out.keys_.insert(out.keys_.end(), {k, {}});
+    it->second = {};  // a key given twice: its last value
+    current = &it->second;
+    return true;
+  }
+  bool end_object() {
+    --depth;
+    return true;
+  }
+  bool start_array(std::size_t) {
+    other();
+    if (++depth == 2) item = 0;
+    return true;
+  }
+  bool end_array() {
+    --depth;
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const json::exception&) { return false; }
+};
+
+void NumberTexts::read(std::string_view line) {
+  keys_.clear();
+  NumberTextsReader reader{*this};
+  json::sax_parse(line.begin(), line.end(), &reader);
+}
+
+const NumberTexts::Texts* NumberTexts::of(std::string_view key) const {
+  for (const auto& [k, texts] : keys_)
+    if (k == key) return &texts;
+  return nullptr;
+}
+
+std::vector<Field> fields_of(const json& object, const NumberTexts* texts) {
   std::vector<Field> fields;
-  for (auto it = object.begin(); it != object.end(); ++it) fields.push_back({it.key(), value_of(*it)});
+  for (auto it = object.begin(); it != object.end(); ++it)
+    fields.push_back({it.key(), value_of(*it, texts ? texts->of(it.key()) : nullptr)});
   return fields;
 }
 
@@ -238,7 +361,9 @@ LineReader::LineReader(std::string_view line) {
     throw InputError(fmt::format("line: not valid JSON ({})", without_id(e.what())));
   }
   if (!document_.is_object()) throw InputError("line: expected a JSON object");
-  from_json_ = fields_of(document_);
+  // nlohmann keeps a number's double, not its text: a second reading keeps the texts (NumberTexts)
+  texts_.read(line);
+  from_json_ = fields_of(document_, &texts_);
   fields_ = from_json_;
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 #include <string_view>
 #include <vector>
 
@@ -20,9 +21,25 @@ namespace epure::solve {
 inline constexpr std::size_t kMaxLineBytes = std::size_t(1) << 20;  // 1 MiB
 inline constexpr int kMaxDepth = 32;
 
+// The texts of the numbers of a line's top-level fields (a number, or an array's first
+// numbers), which a parsed document has lost: nlohmann::json keeps a number's double. Read by
+// nlohmann's SAX parser, which hands over each float's text; a key given twice keeps its last.
+class NumberTexts {
+ public:
+  using Texts = std::array<std::string, Value::kItems>;  // "" where no float was written
+  // Reads a line nlohmann::json has already parsed (nothing is reported: it is valid).
+  void read(std::string_view line);
+  const Texts* of(std::string_view key) const;
+
+ private:
+  std::vector<std::pair<std::string, Texts>> keys_;
+  friend struct NumberTextsReader;
+};
+
 // The fields of a parsed JSON object (its keys are unique: nlohmann::json keeps the last value
-// of a key given twice). Views into `object`, which must outlive them.
-std::vector<Field> fields_of(const nlohmann::json& object);
+// of a key given twice), each number as its text in `texts` writes it, else as the shortest
+// decimal of its double. Views into `object` and `texts`, which must outlive them.
+std::vector<Field> fields_of(const nlohmann::json& object, const NumberTexts* texts = nullptr);
 
 // One line read. Throws InputError for a line that is not one JSON object within the limits:
 // "line: not valid JSON (…)", "line: expected a JSON object", "line: nested deeper than …".
@@ -39,8 +56,12 @@ class LineReader {
   std::span<const Field> fields() const { return fields_; }
 
  private:
-  std::array<Field, kMaxFlatFields> flat_;
+  // Room for the flat reading's fields, each constructed as it is read: a Field holds four
+  // decimals (geometry/decimal.h), and constructing sixteen per line cost a tenth of the time.
+  static_assert(std::is_trivially_destructible_v<Field>);
+  alignas(Field) unsigned char flat_[sizeof(Field) * kMaxFlatFields];
   nlohmann::json document_;        // only for a line the flat reading declined
+  NumberTexts texts_;              // its numbers' texts
   std::vector<Field> from_json_;
   std::span<const Field> fields_;
 };

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -89,12 +90,24 @@ std::pair<Ray, double> raw_ray(Point A, Vec u) {
   return {Ray{A, direction}, geo::norm(direction)};
 }
 
+// A direction as written, times the power of two that brings its largest coordinate into [1, 2)
+// (exact, as raw_ray), and its length.
+template <std::size_t N>
+std::pair<std::array<geo::Decimal, N>, double> raw_direction(std::array<geo::Decimal, N> u) {
+  double m = 0;
+  for (const auto& c : u) m = std::max(m, std::abs(c.hi));
+  if (m > 0 && std::isfinite(m)) {
+    const int k = -std::ilogb(m);
+    for (auto& c : u) c = geo::times_pow2(c, k);
+  }
+  return {u, geo::norm(geo::hi_vec(u))};
+}
+
 // A ray and a ball (circle, sphere): t_proj, d², inside, hit; then t, I, N; else the reason.
 // The same values for the keys and for `epure solve`, whichever kernel decided (geometry's
 // printed_values: within 4 ulps of the figure's scale).
-template <class Round, class Ray, class Ball>
-void write_round(const Round& c, const Ray& ray, const Ball& ball, Result& r, double length) {
-  const auto printed = printed_values(ray, ball, c, length);
+template <class Round, class Printed>
+void write_round(const Round& c, const Printed& printed, Result& r) {
   r.number("t_proj", printed.t_proj).number("d2", c.d2).boolean("inside", c.inside);
   r.boolean("hit", c.hit.has_value());
   if (c.hit) r.number("t", printed.t).point("I", printed.I).point("N", printed.N);

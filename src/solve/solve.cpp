@@ -48,8 +48,8 @@ const ExerciseKind* solver_for(std::string_view name, const Fields& figure) {
   return nullptr;
 }
 
-void solve(std::span<const Field> figure, fmt::memory_buffer& out, Semantics semantics) {
-  Fields fields(figure, semantics);
+void solve(std::span<const Field> figure, fmt::memory_buffer& out) {
+  Fields fields(figure);
   const Value& kind = fields.get("kind");
   if (kind.type != Type::string) fail("kind", fmt::format("expected a string, got {}", type_name(kind.type)));
   const std::string_view name = kind.string;
@@ -72,22 +72,18 @@ void solve(std::span<const Field> figure, fmt::memory_buffer& out, Semantics sem
 
 }  // namespace
 
-void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out, Semantics semantics) {
+void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out) {
   if (!figure.is_object()) throw InputError("line: expected a JSON object");
   // Views into `figure`, which outlives them.
-  solve(fields_of(figure), out, semantics);
+  solve(fields_of(figure), out);
 }
 
 std::string solve_line(std::string_view line, fmt::memory_buffer& out) {
-  return solve_line(line, out, Semantics::worksheet);
-}
-
-std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics semantics) {
   std::string message;
   const std::size_t start = out.size();
   try {
     const LineReader figure(line);
-    solve(figure.fields(), out, semantics);
+    solve(figure.fields(), out);
     return {};
   } catch (const InputError& e) {
     message = e.what();

@@ -17,15 +17,15 @@
 namespace epure::solve {
 
 // Solves one figure and appends its result object to `out`. Throws InputError (never anything
-// else for bad data) when the figure is not a valid solve input.
-void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out,
-                  Semantics semantics = Semantics::worksheet);
+// else for bad data) when the figure is not a valid solve input. A number is the shortest
+// decimal of its double here (a parsed document has lost its text); solve_line reads the text.
+void solve_figure(const nlohmann::json& figure, fmt::memory_buffer& out);
 
 // One line of JSON Lines: parses, solves and appends the result object, or {"error": "..."}.
-// Never throws. Returns the error message, empty when the line was solved. `epure solve` asks
-// for Semantics::exact; without it, a line is solved as a worksheet's (the answer keys' call).
+// Never throws. Returns the error message, empty when the line was solved. One semantics for
+// every caller (`epure solve`, the explorer, the keys): every decision exact for the decimals
+// the line writes (README, "What a number means").
 std::string solve_line(std::string_view line, fmt::memory_buffer& out);
-std::string solve_line(std::string_view line, fmt::memory_buffer& out, Semantics semantics);
 
 // The kinds the contract knows, in the registry's order (a contract kind two exercise kinds
 // share, `vectors` in the plane and in space, once).

@@ -151,7 +151,7 @@ TEST_CASE("explore: steps in the chosen language; a degenerate figure is an erro
 TEST_CASE("explore: solve is epure solve's line, exact semantics") {
   const std::string line = R"({"kind":"ray_circle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})";
   fmt::memory_buffer out;
-  epure::solve::solve_line(line, out, epure::solve::Semantics::exact);
+  epure::solve::solve_line(line, out);
   CHECK(ex::solve(line) == std::string(out.data(), out.size()));
 }
 

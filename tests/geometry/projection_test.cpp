@@ -231,7 +231,7 @@ TEST_SUITE_END();
 
 TEST_CASE("geometry/projection_exact: no snapping, the doubles as they are") {
   SUBCASE("1. issue 15: C 1e-15 before A is before, t < 0") {
-    const Projection p = project_exact({0, 0}, {1, 0}, {-1e-15, 5});
+    const Projection p = project_exact(Point2{0, 0}, Point2{1, 0}, Point2{-1e-15, 5});
     CHECK(p.position == Position::before);
     CHECK(p.t < 0);
     CHECK(p.t == doctest::Approx(-1e-15).epsilon(kEps));
@@ -250,17 +250,17 @@ TEST_CASE("geometry/projection_exact: no snapping, the doubles as they are") {
     CHECK(exactly(project(A, B, C).t, 1));
   }
   SUBCASE("3. the exact ends: t exactly 0 at A's foot, 1 at B's, P the end itself") {
-    const Projection a = project_exact({1, 2}, {5, 2}, {1, 7});
+    const Projection a = project_exact(Point2{1, 2}, Point2{5, 2}, Point2{1, 7});
     CHECK(exactly(a.t, 0));
     CHECK(exactly(a.P.x, 1));
-    const Projection b = project_exact({1, 2}, {5, 2}, {5, -7});
+    const Projection b = project_exact(Point2{1, 2}, Point2{5, 2}, Point2{5, -7});
     CHECK(exactly(b.t, 1));
     CHECK(exactly(b.P.x, 5));
     CHECK(b.position == Position::between);
   }
   SUBCASE("4. A = B exactly is refused; an ulp apart is a segment") {
-    CHECK_THROWS_AS(project_exact({1, 1}, {1, 1}, {0, 0}), DegenerateFigure);
-    CHECK(project_exact({1, 1}, {1, std::nextafter(1.0, 2.0)}, {0, 0}).position == Position::before);
+    CHECK_THROWS_AS(project_exact(Point2{1, 1}, Point2{1, 1}, Point2{0, 0}), DegenerateFigure);
+    CHECK(project_exact(Point2{1, 1}, Point2{1, std::nextafter(1.0, 2.0)}, Point2{0, 0}).position == Position::before);
   }
 }
 

@@ -368,19 +368,19 @@ TEST_SUITE_END();
 
 TEST_CASE("geometry/segments_exact: issue 15's lines, decided exactly") {
   SUBCASE("1. near the parallel cut-off: outside, t_ab = 1, t_cd = −1 (no snapping window)") {
-    const SegmentIntersection s = intersect_segments_exact({0, 0}, {1, 0}, {2, 1e-14}, {3, 2e-14});
+    const SegmentIntersection s = intersect_segments_exact(Point2{0, 0}, Point2{1, 0}, Point2{2, 1e-14}, Point2{3, 2e-14});
     CHECK(s.relation == SegmentRelation::outside);
     CHECK(*s.t_ab == doctest::Approx(1).epsilon(4 * kEps));
     CHECK(*s.t_cd == doctest::Approx(-1).epsilon(4 * kEps));
   }
   SUBCASE("2. I = D = (4.5, 5), on both segments") {
     const SegmentIntersection s =
-        intersect_segments_exact({7, 5}, {4, 5}, {7.5, 4.999999999999943}, {4.5, 5});
+        intersect_segments_exact(Point2{7, 5}, Point2{4, 5}, Point2{7.5, 4.999999999999943}, Point2{4.5, 5});
     CHECK(s.intersects());
     check_point(*s.I, {4.5, 5});
   }
   SUBCASE("3. 1e-14 off the line is not collinear: they meet at C") {
-    const SegmentIntersection s = intersect_segments_exact({0, 0}, {4, 0}, {1, 0}, {3, 1e-14});
+    const SegmentIntersection s = intersect_segments_exact(Point2{0, 0}, Point2{4, 0}, Point2{1, 0}, Point2{3, 1e-14});
     CHECK(s.intersects());
     CHECK(exactly(*s.t_cd, 0));
     check_point(*s.I, {1, 0});

@@ -18,11 +18,13 @@ N·ulp(max(S, √d2))·2·max(S, √d2); N within N·max(ulp(1), ulp(S)/size) (N
 size the radius or the smallest radius or half-size); cos and sin within N·ulp(1); dot, cross within N ulps of
 the sum of the magnitudes of their products; norms within N·ulp of themselves; angle_deg within
 N·ulp(180). Ellipses and rectangles whose carried ray is rounded (an angle not a multiple of
-90°, a size not a power of two, or A − C inexact) are measured, not bounded, decisions included
+90°, a size not a power of two, A − C inexact, or a number written that is not its double) are
+measured, not bounded, decisions included
 (the contract states why): they are counted apart. --stats prints the largest error in ulps
 per kind and field.
 """
 import math
+from fractions import Fraction
 import json
 import re
 import sys
@@ -102,12 +104,33 @@ def is_power_of_two(x):
     return x > 0 and math.frexp(x)[0] == 0.5
 
 
+def binary_text(x):
+    """Whether a number of the line (read as its text, TextNumber) is its double exactly: the
+    turned figures carry the doubles nearest the decimals (README, "What a number means")."""
+    if isinstance(x, list):
+        return all(binary_text(y) for y in x)
+    if isinstance(x, TextNumber):
+        return not math.isfinite(x) or Fraction(x.text) == Fraction(float(x))
+    return True
+
+
+class TextNumber(float):
+    """A JSON float that keeps its text."""
+    def __new__(cls, text):
+        n = super().__new__(cls, text)
+        n.text = text
+        return n
+
+
 def bounded(fig):
     """Whether the contract makes this line's decisions exact and bounds its values in ulps:
     every kind but an ellipse or a rectangle whose ray, carried into the canonical frame, is
-    rounded (an angle not a multiple of 90°, a size not a power of two, A − C inexact)."""
+    rounded (an angle not a multiple of 90°, a size not a power of two, A − C inexact, or a
+    number written that is not its double)."""
     if fig.get("kind") in ("ray_ellipse", "ray_rectangle"):
         try:
+            if not all(binary_text(v) for v in fig.values()):
+                return False
             sizes = fig.get("radii") or fig.get("half")
             A, C = fig["A"], fig["C"]
             exact_offset = all(float(a) - float(c) + float(c) == float(a) and
@@ -204,7 +227,7 @@ def main():
         fig = None
         if inputs is not None and n <= len(inputs):
             try:
-                fig = json.loads(inputs[n - 1])
+                fig = json.loads(inputs[n - 1], parse_float=TextNumber)
             except ValueError:
                 fig = None
         if ulps is not None and isinstance(fig, dict) and not bounded(fig):

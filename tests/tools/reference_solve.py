@@ -5,8 +5,9 @@ usage: reference_solve.py [FILE]     (JSON Lines on FILE or stdin; results on st
 Exit status 1 when some line is bad, as `epure solve`.
 
 Written from the contract (issue 3, README "epure solve"), not from epure's C++. Every input
-double is taken as the exact rational it denotes (fractions.Fraction) and every branch is decided
-on exact rationals: "strictly inside", "behind", "tangent", "parallel" mean exactly what they say,
+number is taken as the exact decimal it writes (fractions.Fraction of the JSON number's text,
+"0.1" is one tenth: README, one meaning for a number) and every branch is decided on exact
+rationals: "strictly inside", "behind", "tangent", "parallel" mean exactly what they say,
 without tolerance. Square roots (lengths, the half chord) and the cosine and sine of a rotation
 that is not a multiple of 90° are the only inexact steps: they are carried in decimal.Decimal at
 80 significant digits, far beyond the double each result is rounded to at the end.
@@ -35,8 +36,16 @@ class BadLine(Exception):
 
 # ---- reading fields --------------------------------------------------------------------------
 
+def written(text):
+    """A JSON number's text as the exact decimal it writes; beyond the doubles, not finite."""
+    if not math.isfinite(float(text)):
+        return float("inf")
+    return Fraction(text)
+
+
 def exact(value, field):
-    """A JSON number as the exact rational it denotes (a double, as epure reads it)."""
+    """A JSON number as the exact rational it denotes (lines are read with `written`; a float
+    given by a caller is the double itself)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, Fraction)):
         raise BadLine(f"field '{field}': expected a number, got {type(value).__name__}")
     if isinstance(value, Fraction):
@@ -404,7 +413,7 @@ def solve_line(line):
     """(result text, ok) for one non-blank line."""
     try:
         try:
-            figure = json.loads(line)
+            figure = json.loads(line, parse_float=written, parse_int=written)
         except ValueError as e:
             raise BadLine(f"line: not valid JSON ({e})") from None
         result = solve_object(figure)

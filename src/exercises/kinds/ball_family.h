@@ -192,10 +192,14 @@ struct Family {
   }
 
   // The solve contract: t_proj, d2, inside, hit; then t, I, N; else the reason.
-  static void contract(const Data& d, bool exact, solve::Result& r) {
-    const auto [ray, length] = solve::raw_ray<typename S::Ray>(d.A, d.u);
-    const typename S::Ball ball{d.C, d.r};
-    solve::write_round(exact ? geo::intersect_exact(ray, ball) : geo::intersect(ray, ball), ray, ball, r, length);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto A = f.decimals<Dim>("A");
+    const auto u = f.decimals<Dim>("u");
+    const auto C = f.decimals<Dim>("C");
+    const geo::Decimal& radius = f.decimal("r");
+    const auto [direction, length] = solve::raw_direction(u);
+    const auto c = geo::intersect_exact(A, direction, C, radius);
+    solve::write_round(c, geo::printed_values(A, direction, C, radius, c, length), r);
   }
 };
 

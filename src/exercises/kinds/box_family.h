@@ -350,13 +350,14 @@ struct Family {
   }
 
   // The solve contract: faces, inside, hit; then t, I, N.
-  static void contract(const Data& d, bool exact, solve::Result& r) {
-    const auto [ray, length] = solve::raw_ray<typename S::Ray>(d.A, d.u);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto A = f.decimals<Dim>("A");
+    const auto [u, length] = solve::raw_direction(f.decimals<Dim>("u"));
     if constexpr (Dim == 2) {
-      auto s = exact ? geo::intersect_canonical_square_exact(ray) : geo::intersect_canonical_square(ray);
+      auto s = geo::intersect_canonical_square_exact(A, u);
       r.faces(s.faces).boolean("inside", s.inside).hit(s.hit, length);
     } else {
-      auto c = exact ? geo::intersect_canonical_cube_exact(ray) : geo::intersect_canonical_cube(ray);
+      auto c = geo::intersect_canonical_cube_exact(A, u);
       r.faces(c.faces).boolean("inside", c.inside).hit(c.hit, length);
     }
   }

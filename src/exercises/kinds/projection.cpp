@@ -61,13 +61,13 @@ struct ProjectionMethod {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, bool exact, solve::Result& r) {
-    auto p = exact ? geo::project_exact(d.A, d.B, d.C) : geo::project(d.A, d.B, d.C);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto p = geo::project_exact(f.dpoint2("A"), f.dpoint2("B"), f.dpoint2("C"));
     r.number("t", p.t).point("P", p.P).string("position", geo::to_string(p.position));
   }
 
   static CoreAnswers core(const Data& d) {
-    const auto p = geo::project(d.A, d.B, d.C);
+    const auto p = geo::project_exact(geo::written_point(d.A), geo::written_point(d.B), geo::written_point(d.C));
     CoreAnswers a;
     a.number("t", p.t).point("P", p.P).choice("position", geo::to_string(p.position));
     return a;
@@ -108,7 +108,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
       x.C = {grid_value(rng, 0, 10, level), grid_value(rng, 0, 8, level)};
       if (x.B.x < 0 || x.B.x > 10 || x.B.y < 0 || x.B.y > 8) return std::nullopt;
       if (geo::norm(AB) < min_length) return std::nullopt;
-      const auto p = geo::project(x.A, x.B, x.C);
+      const auto p = geo::project_exact(geo::written_point(x.A), geo::written_point(x.B), geo::written_point(x.C));
       if (geo::norm(x.C - p.P) < min_distance) return std::nullopt;
       const double t = p.t;
       bool ok = false;
@@ -128,7 +128,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto p = geo::project(d.A, d.B, d.C);
+    const auto p = geo::project_exact(geo::written_point(d.A), geo::written_point(d.B), geo::written_point(d.C));
 
     const auto sheet_figure = [&](const KeySolution&) { return render::Figure{question_scene(d, ctx), 0.55}; };
     Begun begun = begin_sections(d, ctx, sheet_figure);
@@ -159,7 +159,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
   }
 
   render::Scene question_scene(const Data& d, const ExerciseContext& ctx) const {
-    const auto p = geo::project(d.A, d.B, d.C);
+    const auto p = geo::project_exact(geo::written_point(d.A), geo::written_point(d.B), geo::written_point(d.C));
     render::Scene s;
     s.title = ctx.texts.get("projection.title");
     s.description = ctx.texts.format("projection.figure.question", {});

@@ -76,7 +76,7 @@ struct RayEllipse : Family<RayEllipse> {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, bool exact, solve::Result& r) { solve_contract(d, ellipse_of(d), exact, r); }
+  static void contract(const Data& d, const solve::Fields&, solve::Result& r) { solve_contract(d, ellipse_of(d), r); }
 
   static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), ellipse_of(d))); }
   static constexpr Shape kShape = Shape::ellipse;

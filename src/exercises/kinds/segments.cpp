@@ -114,8 +114,8 @@ struct SegmentsMethod {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, bool exact, solve::Result& r) {
-    auto s = exact ? geo::intersect_segments_exact(d.A, d.B, d.C, d.D) : geo::intersect_segments(d.A, d.B, d.C, d.D);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto s = geo::intersect_segments_exact(f.dpoint2("A"), f.dpoint2("B"), f.dpoint2("C"), f.dpoint2("D"));
     r.boolean("intersects", s.intersects());
     if (!s.intersects()) r.string("reason", geo::to_string(s.relation));
     if (s.t_ab) r.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
@@ -123,7 +123,7 @@ struct SegmentsMethod {
   }
 
   static CoreAnswers core(const Data& d) {
-    const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
+    const auto s = geo::intersect_segments_exact(geo::written_point(d.A), geo::written_point(d.B), geo::written_point(d.C), geo::written_point(d.D));
     CoreAnswers a;
     a.boolean("intersects", s.intersects());
     if (s.t_ab) a.number("t_ab", *s.t_ab).number("t_cd", *s.t_cd);
@@ -248,7 +248,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
       }
       if (geo::norm(x.B - x.A) < min_length || geo::norm(x.D - x.C) < min_length) return std::nullopt;
 
-      const auto s = geo::intersect_segments(x.A, x.B, x.C, x.D);
+      const auto s = geo::intersect_segments_exact(geo::written_point(x.A), geo::written_point(x.B), geo::written_point(x.C), geo::written_point(x.D));
       if (s.relation != wanted) return std::nullopt;
       if (crossing) {
         if (std::abs(s.ab_cross_cd) < min_sin * geo::norm(s.AB) * geo::norm(s.CD)) return std::nullopt;
@@ -273,7 +273,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto s = geo::intersect_segments(d.A, d.B, d.C, d.D);
+    const auto s = geo::intersect_segments_exact(geo::written_point(d.A), geo::written_point(d.B), geo::written_point(d.C), geo::written_point(d.D));
     const bool crossing = s.t_ab.has_value();
 
     const auto sheet_figure = [&](const KeySolution&) { return render::Figure{question_scene(d, ctx), 0.55}; };

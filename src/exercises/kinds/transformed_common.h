@@ -114,11 +114,12 @@ CoreAnswers core_answers(const Result& r) {
   return a;
 }
 
-// The solve contract: inside, hit; then t, I, N (the figure's own intersection, exact or not).
+// The solve contract: inside, hit; then t, I, N (the figure's own intersection), decided exactly
+// for the data's doubles (README, "What a number means": a turned figure's decimals are not yet).
 template <class Figure>
-void solve_contract(const Data& d, const Figure& figure, bool exact, solve::Result& r) {
+void solve_contract(const Data& d, const Figure& figure, solve::Result& r) {
   const auto [ray, length] = solve::raw_ray<geo::Ray2>(d.A, d.u);
-  auto e = exact ? geo::intersect_exact(ray, figure) : geo::intersect(ray, figure);
+  const auto e = geo::intersect_exact(ray, figure);
   r.boolean("inside", e.inside).hit(e.hit, length);
 }
 

@@ -111,8 +111,8 @@ struct VectorsMethod {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, bool, solve::Result& r) {
-    auto v = geo::compare_vectors(d.u, d.v);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto v = geo::compare_decimal_vectors(f.dpoint2("u"), f.dpoint2("v"));
     r.number("dot", v.dot).number("cross", v.cross).number("norm_u", v.norm_u).number("norm_v", v.norm_v);
     r.number("cos", v.cos).number("sin", v.sin).number("angle_deg", v.angle_deg);
   }

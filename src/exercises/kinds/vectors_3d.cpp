@@ -82,8 +82,8 @@ struct Vectors3dMethod {
   }
 
   // the solve contract (solve/solve.h): `vectors` with three components
-  static void contract(const Data& d, bool, solve::Result& r) {
-    auto w = geo::compare_vectors_3d(d.u, d.v);
+  static void contract(const Data&, const solve::Fields& f, solve::Result& r) {
+    const auto w = geo::compare_decimal_vectors_3d(f.dpoint3("u"), f.dpoint3("v"));
     r.number("dot", w.dot).point("cross", w.cross).number("norm_u", w.norm_u).number("norm_v", w.norm_v);
     r.number("cos", w.cos).number("sin", w.sin).number("angle_deg", w.angle_deg);
     r.boolean("collinear", w.collinear).boolean("orthogonal", w.orthogonal);

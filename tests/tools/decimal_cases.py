@@ -1,0 +1,236 @@
+#!/usr/bin/env python3
+"""Figures degenerate as the decimals written, and not as their doubles (issue 35).
+
+usage: decimal_cases.py SEED N      (prints N lines of JSON Lines)
+
+A number means the decimal written ("0.1" is one tenth: README, one meaning for a number). Every
+figure here is exactly on a boundary as decimals: segments parallel or collinear, meeting at
+t = 0 or t = 1 exactly, a projection foot on an end, a ray tangent to a circle or a sphere, an
+origin on the circle or the sphere, a ray through a corner of the square or an edge of the
+cube, vectors collinear or orthogonal, at every scale from 1e-8 to 1e8 and far from the origin.
+Their doubles are rounded, so that the same figure in binary is off the boundary (most lines) or
+on it by chance: an answer that decides on the doubles gets them wrong.
+
+Deterministic for a seed (random.Random(SEED)). The coordinates are integers on a decimal grid
+10^(s-d) (d decimals at the scale 10^s), written exactly ("-4.217e-6", "812.5").
+"""
+import json
+import random
+import sys
+from fractions import Fraction
+
+
+def text(x):
+    """The exact decimal text of a Fraction whose denominator divides a power of ten."""
+    x = Fraction(x)
+    if x == 0:
+        return "0"
+    sign = "-" if x < 0 else ""
+    x = abs(x)
+    k = 0
+    while (x * 10**k).denominator != 1:
+        k += 1
+        if k > 60:
+            raise ValueError(f"not a decimal: {x}")
+    digits = str(int(x * 10**k))
+    # digits·10^-k, written with an exponent when that is shorter
+    exponent = -k
+    while digits.endswith("0") and len(digits) > 1:
+        digits = digits[:-1]
+        exponent += 1
+    if -25 <= exponent <= 0 and len(digits) + (-exponent) < 30:
+        if exponent == 0:
+            return sign + digits
+        if len(digits) > -exponent:
+            return sign + digits[:exponent] + "." + digits[exponent:]
+        return sign + "0." + "0" * (-exponent - len(digits)) + digits
+    if 0 < exponent <= 8:
+        return sign + digits + "0" * exponent
+    mantissa = digits[0] + ("." + digits[1:] if len(digits) > 1 else "")
+    return f"{sign}{mantissa}e{exponent + len(digits) - 1}"
+
+
+def is_double(x):
+    return Fraction(float(x)) == x
+
+
+class Gen:
+    def __init__(self, seed):
+        self.rng = random.Random(seed)
+
+    def scale(self):
+        # the grid step: 10^(s - d), s the figure's decade, d its decimals (1 to 4)
+        s = self.rng.randint(-8, 8)
+        d = self.rng.randint(1, 4)
+        return Fraction(10) ** (s - d), Fraction(10) ** s
+
+    def integer(self, n):
+        return self.rng.randint(-n, n)
+
+    def grid_point(self, step, dim, n=99999):
+        return tuple(step * self.integer(n) for _ in range(dim))
+
+    def far(self, step, dim):
+        # the figure far from the origin one time in four: 1e4 grid steps beyond it
+        if self.rng.random() < 0.25:
+            return tuple(step * self.integer(10**7) for _ in range(dim))
+        return (0,) * dim
+
+    def vector(self, step, dim, n=999):
+        while True:
+            v = tuple(step * self.integer(n) for _ in range(dim))
+            if any(c != 0 for c in v):
+                return v
+
+
+def add(p, v, k=1):
+    return tuple(a + k * b for a, b in zip(p, v))
+
+
+def line(kind, **fields):
+    parts = [f'"kind":"{kind}"']
+    for name, value in fields.items():
+        if isinstance(value, tuple):
+            parts.append(f'"{name}":[' + ",".join(text(c) for c in value) + "]")
+        else:
+            parts.append(f'"{name}":{text(value)}')
+    return "{" + ",".join(parts) + "}"
+
+
+def segments(g):
+    step, _ = g.scale()
+    o = g.far(step, 2)
+    A = add(o, g.grid_point(step, 2))
+    w = g.vector(step, 2)
+    B = add(A, w, g.rng.randint(1, 9))
+    case = g.rng.choice(["parallel", "collinear", "t0", "t1", "cd0"])
+    if case == "parallel":
+        C = add(A, g.vector(step, 2))
+        D = add(C, w, g.rng.choice([-3, -2, -1, 1, 2, 3]) * Fraction(g.rng.randint(1, 9), 10))
+    elif case == "collinear":
+        C = add(A, w, g.rng.randint(-5, 5))
+        D = add(C, w, g.rng.choice([-2, -1, 1, 2]) * Fraction(g.rng.randint(1, 9), 10))
+    else:
+        # a second line through A (t_ab = 0), through B (t_ab = 1), or from C on AB (t_cd = 0)
+        v = g.vector(step, 2)
+        while v[0] * w[1] - v[1] * w[0] == 0:
+            v = g.vector(step, 2)
+        at = A if case == "t0" else B if case == "t1" else add(A, w, Fraction(g.rng.randint(1, 9), 10))
+        if case == "cd0":
+            C, D = at, add(at, v, g.rng.randint(1, 5))
+        else:
+            k = g.rng.randint(1, 5)
+            C, D = add(at, v, -k), add(at, v, g.rng.randint(1, 5))
+    if C == D:
+        D = add(C, w)
+    return line("segments", A=A, B=B, C=C, D=D)
+
+
+def projection(g):
+    step, _ = g.scale()
+    o = g.far(step, 2)
+    A = add(o, g.grid_point(step, 2))
+    w = g.vector(step, 2)
+    B = add(A, w, g.rng.randint(1, 5))
+    foot = A if g.rng.random() < 0.5 else B
+    n = (-w[1], w[0])
+    C = add(foot, n, Fraction(g.rng.randint(-30, 30), 10))
+    return line("projection", A=A, B=B, C=C)
+
+
+# Pythagorean directions: unit vectors with rational (decimal, once times 5, 13, 3 or 7) coordinates
+UNIT2 = [(Fraction(3, 5), Fraction(4, 5)), (Fraction(5, 13), Fraction(12, 13)), (Fraction(1), Fraction(0))]
+UNIT3 = [(Fraction(1, 3), Fraction(2, 3), Fraction(2, 3)), (Fraction(2, 7), Fraction(3, 7), Fraction(6, 7)),
+         (Fraction(0), Fraction(0), Fraction(1))]
+
+
+def signed(g, v):
+    v = list(v)
+    g.rng.shuffle(v)
+    return tuple(c * g.rng.choice([-1, 1]) for c in v)
+
+
+def ball(g, dim):
+    step, _ = g.scale()
+    o = g.far(step, dim)
+    C = add(o, g.grid_point(step, dim))
+    # r a multiple of 5·13·3·7 grid steps: r times a Pythagorean unit vector is on the grid
+    r = step * 1365 * g.rng.randint(1, 40)
+    n = signed(g, g.rng.choice(UNIT2 if dim == 2 else UNIT3))
+    case = g.rng.choice(["tangent", "on", "on_out"])
+    if case == "tangent":
+        # the ray along t ⟂ n through the point C + r·n
+        if dim == 2:
+            t = (-n[1], n[0])
+        else:
+            # a vector orthogonal to n with rational coordinates: n × e_k
+            e = min(range(3), key=lambda k: abs(n[k]))
+            ek = tuple(Fraction(1 if i == e else 0) for i in range(3))
+            t = (n[1] * ek[2] - n[2] * ek[1], n[2] * ek[0] - n[0] * ek[2], n[0] * ek[1] - n[1] * ek[0])
+        T = add(C, n, r)
+        s = Fraction(g.rng.randint(2, 40), 10) * r
+        A = add(T, t, -s)
+        u = tuple(c * step * g.rng.randint(1, 999) * 21 for c in t)  # on the grid: 21 = 3·7
+    else:
+        A = add(C, n, r)
+        inward = tuple(-c for c in n) if case == "on" else n
+        u = tuple(step * (g.integer(99) + 400 * c) for c in inward)
+    u = tuple(Fraction(round(c / step * 10**4)) * step / 10**4 for c in u)  # decimals, every one
+    if all(c == 0 for c in u):
+        u = (step,) + (0,) * (dim - 1)
+    return line("ray_circle" if dim == 2 else "ray_sphere", A=A, u=u, C=C, r=r)
+
+
+def box(g, dim):
+    # a ray through a corner (an edge point in 3D) of [-1, 1]^dim, from outside, on a decimal grid
+    step = Fraction(1, 10 ** g.rng.randint(1, 6))
+    corner = tuple(Fraction(g.rng.choice([-1, 1])) for _ in range(dim))
+    if dim == 3 and g.rng.random() < 0.5:
+        k = g.rng.randrange(3)
+        corner = tuple(Fraction(g.rng.randint(-9, 9), 10) if i == k else c for i, c in enumerate(corner))
+    away = tuple(c * step * g.rng.randint(1, 9999) for c in corner)
+    away = tuple(a if a != 0 else step for a in away)
+    A = add(corner, away)
+    u = tuple(-a * g.rng.randint(1, 9) for a in away)
+    return line("ray_square" if dim == 2 else "ray_cube", A=A, u=u)
+
+
+def vectors(g):
+    step, _ = g.scale()
+    u = g.vector(step, 3 if g.rng.random() < 0.5 else 2)
+    dim = len(u)
+    if dim == 2 or g.rng.random() < 0.5:
+        v = tuple(c * Fraction(g.rng.randint(-99, 99) or 7, 10) for c in u)  # collinear
+    else:
+        w = g.vector(step, 3)
+        v = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])  # orthogonal
+        if all(c == 0 for c in v):
+            v = (u[1], -u[0], 0) if (u[0], u[1]) != (0, 0) else (1, 0, 0)
+    return line("vectors", u=u, v=v)
+
+
+MAKERS = [segments, projection, lambda g: ball(g, 2), lambda g: ball(g, 3), lambda g: box(g, 2),
+          lambda g: box(g, 3), vectors]
+
+
+def lines(seed, count):
+    g = Gen(seed)
+    out = []
+    while len(out) < count:
+        text_line = MAKERS[len(out) % len(MAKERS)](g)
+        # keep the figures whose doubles are not all the decimals: those test the semantics
+        numbers = json.loads(text_line, parse_float=Fraction, parse_int=Fraction)
+        values = [x for v in numbers.values() if not isinstance(v, str) for x in (v if isinstance(v, list) else [v])]
+        if all(is_double(x) for x in values) and g.rng.random() < 0.9:
+            continue
+        out.append(text_line)
+    return out
+
+
+def main():
+    seed, count = int(sys.argv[1]), int(sys.argv[2])
+    sys.stdout.write("".join(l + "\n" for l in lines(seed, count)))
+
+
+if __name__ == "__main__":
+    main()
