@@ -20,7 +20,8 @@
 
 namespace epure::explore {
 
-// What `epure solve` prints for that line (exact semantics), without the newline.
+// What `epure solve` prints for that line (its one semantics: the decimals written), without the
+// newline.
 std::string solve(std::string_view line);
 
 // The kinds that have a view (every exercise kind, the preamble in space too, whose instances

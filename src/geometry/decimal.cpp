@@ -145,6 +145,14 @@ double to_double(const std::string& text) {
 
 }  // namespace
 
+// value − hi rounded, never zero when it is not: a rest below the smallest double (a decimal
+// between two subnormals, or below them all) is kept as ±2^-1074 for its sign (Decimal::error
+// bounds it then).
+static double exact_rest(const Decimal& d, double hi) {
+  const exact::TwoTerm rest = exact::two_term(exact::exact_value(d) - exact::exact_value(hi));
+  return rest.hi != 0 ? rest.hi : rest.lo;
+}
+
 Decimal read_decimal(std::string_view text, double hi) {
   Decimal d = Decimal::of(hi);
   const Parts parts = split(text);
@@ -169,7 +177,7 @@ Decimal read_decimal(std::string_view text, double hi) {
     d.text = text;
   }
   // the rest exactly, in big integers (long decimals, powers of ten beyond 10^±22)
-  d.lo = exact::two_term(exact::exact_value(d) - exact::exact_value(hi)).hi;
+  d.lo = exact_rest(d, hi);
   return d;
 }
 
@@ -188,7 +196,7 @@ Decimal decimal_of_digits(bool negative, std::uint64_t digits, int exponent, dou
     d.lo = negative ? -*rest : *rest;
     return d;
   }
-  d.lo = exact::two_term(exact::exact_value(d) - exact::exact_value(hi)).hi;
+  d.lo = exact_rest(d, hi);
   return d;
 }
 

@@ -34,8 +34,8 @@ struct SegmentIntersection {
 // 0 or 1 is reported as exactly that bound (a segment touching the other at an end intersects).
 SegmentIntersection intersect_segments(Point2 A, Point2 B, Point2 C, Point2 D);
 
-// The same with every decision exact for the given doubles (`epure solve`, README; the two
-// semantics as for project_exact): parallel means AB∧CD = 0 exactly, collinear that and
+// The same with every decision exact for the numbers given (`epure solve`, README, "What a
+// number means"; as for project_exact): parallel means AB∧CD = 0 exactly, collinear that and
 // AC∧AB = 0; the place of each parameter against 0 and 1 is the sign of its numerator against
 // its denominator (AC∧CD, CB∧CD for t_ab; AC∧AB, AB∧AD for t_cd). No snapping: a parameter is
 // exactly 0 or 1 only when the lines meet exactly at that end, and it never contradicts the

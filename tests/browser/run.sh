@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The explorer in headless Chromium (explore_test.mjs): epure.solve against `epure solve` on
 # the adversarial lines (tests/tools/adversarial_cases.py, fixed seed, and the kept ones of
-# tests/solve/) and the contract's examples; every view dragged, by mouse, touch and keyboard;
+# tests/solve/), decimal-degenerate figures (tests/tools/decimal_cases.py) and the contract's examples; every view dragged, by mouse, touch and keyboard;
 # a set's links; timings. Needs `npm ci` in tests/browser (the bootstrap does it in test mode).
 # Screenshots and timings.json go to $EPURE_BROWSER_OUT (default: a temporary directory).
 set -u
@@ -12,6 +12,8 @@ out=${EPURE_BROWSER_OUT:-$tmp/shots}
 
 python3 "$here/tools/adversarial_cases.py" "${EPURE_ADVERSARIAL_SEED:-20240611}" "${EPURE_BROWSER_LINES:-2000}" >"$tmp/lines.jsonl" || exit 1
 cat "$here/solve/adversarial.input.jsonl" "$here/solve/examples/solve.input.jsonl" >>"$tmp/lines.jsonl"
+# figures degenerate as the decimals written, not as their doubles (one meaning for a number)
+python3 "$here/tools/decimal_cases.py" 35 700 >>"$tmp/lines.jsonl" || exit 1
 # the generator has few vectors lines: 300 more, from integers to extreme and subnormal scales
 python3 - >>"$tmp/lines.jsonl" <<'PY'
 import json, random

@@ -21,4 +21,8 @@ echo "decimal lines: $(tail -n 1 "$tmp/cmp")"
 # The example: parallel as written.
 echo '{"kind":"segments","A":[9.217,-2.43],"B":[8.593,-1.674],"C":[8.547,-2.17],"D":[7.247,-0.595]}' |
   "$EPURE" solve | grep -q '"reason":"parallel"' || { echo "FAIL: the issue's example is not parallel"; exit 1; }
+# The exact arithmetic's cases (tests/geometry/decimal_arithmetic_test.cpp) are still the ones
+# Python's exact integers and fractions write.
+python3 "$tools/decimal_arithmetic.py" 35 200 | cmp -s - "$EPURE_SOURCE_DIR/tests/geometry/decimal_arithmetic.txt" ||
+  { echo "FAIL: decimal_arithmetic.py no longer writes tests/geometry/decimal_arithmetic.txt"; exit 1; }
 echo "solve decimal: ok"

@@ -148,11 +148,14 @@ TEST_CASE("explore: steps in the chosen language; a degenerate figure is an erro
   CHECK(view_of(R"({"kind":"no_such"})").contains("error"));
 }
 
-TEST_CASE("explore: solve is epure solve's line, exact semantics") {
+TEST_CASE("explore: solve is epure solve's line, its one semantics (the decimals written)") {
   const std::string line = R"({"kind":"ray_circle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})";
   fmt::memory_buffer out;
   epure::solve::solve_line(line, out);
   CHECK(ex::solve(line) == std::string(out.data(), out.size()));
+  // issue 35's segments, parallel as written (not as their doubles): parallel in the page too
+  CHECK(ex::solve(R"({"kind":"segments","A":[9.217,-2.43],"B":[8.593,-1.674],"C":[8.547,-2.17],"D":[7.247,-0.595]})") ==
+        R"({"kind":"segments","intersects":false,"reason":"parallel"})");
 }
 
 namespace {
