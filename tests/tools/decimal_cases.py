@@ -182,6 +182,14 @@ def ball(g, dim):
 
 
 def box(g, dim):
+    if g.rng.random() < 0.3:
+        # A a decimal hair (1e-17 to 1e-25) off a side, whose double is on it: a candidate side
+        # or not, inside or outside, as written
+        k = g.rng.randrange(dim)
+        hair = Fraction(g.rng.choice([-1, 1]), 10 ** g.rng.randint(17, 25))
+        A = tuple(g.rng.choice([-1, 1]) + hair if i == k else Fraction(g.rng.randint(-9, 9), 10) for i in range(dim))
+        u = tuple(Fraction(g.rng.randint(-9, 9) or 1, 10 ** g.rng.randint(0, 3)) for _ in range(dim))
+        return line("ray_square" if dim == 2 else "ray_cube", A=A, u=u)
     # a ray through a corner (an edge point in 3D) of [-1, 1]^dim, from outside, on a decimal grid
     step = Fraction(1, 10 ** g.rng.randint(1, 6))
     corner = tuple(Fraction(g.rng.choice([-1, 1])) for _ in range(dim))
