@@ -1,5 +1,7 @@
 #include "geometry/decimal.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -162,6 +164,10 @@ Decimal read_decimal(std::string_view text, double hi) {
     return d;
   }
   d.negative = parts.negative;
+  if (s.digits.size() > Decimal::kMaxDigits || s.exponent < Decimal::kMinExponent) {
+    d.form = Decimal::Form::beyond;  // nothing computed: the reader refuses it
+    return d;
+  }
   if (s.digits.size() <= 19 && s.exponent >= -2'000'000'000 && s.exponent <= 2'000'000'000) {
     d.form = Decimal::Form::short_decimal;
     std::uint64_t D = 0;
@@ -202,9 +208,11 @@ Decimal decimal_of_digits(bool negative, std::uint64_t digits, int exponent, dou
 
 Decimal written(double x) {
   if (!std::isfinite(x)) return Decimal::of(x);
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-  // at most 17 significant digits: a short decimal, which keeps no view of the text
+  // fmt's shortest round trip (Dragonbox), the digits the JSON writer prints: emscripten's libc++
+  // has no std::to_chars for doubles. At most 17 significant digits: a short decimal, which keeps
+  // no view of the text.
+  char buffer[40];
+  const auto end = fmt::format_to_n(buffer, sizeof buffer, "{}", x).out;
   return read_decimal({buffer, static_cast<std::size_t>(end - buffer)}, x);
 }
 
@@ -240,7 +248,8 @@ ExactDecimal exact_value(double x) {
 namespace {
 ExactDecimal written_value(const Decimal& d) {
   switch (d.form) {
-    case Decimal::Form::binary: return exact_value(d.hi);
+    case Decimal::Form::binary:
+    case Decimal::Form::beyond: return exact_value(d.hi);
     case Decimal::Form::short_decimal: return {BigInteger::from_unsigned(d.digits, d.negative), d.exponent};
     case Decimal::Form::long_decimal: {
       const Parts p = split(d.text);

@@ -24,7 +24,11 @@ struct Decimal {
   double lo = 0;  // the rest, value − hi, rounded to nearest: zero exactly when the value is hi
   // The exact value: hi itself (binary), ±digits·10^exponent (short), or the text (long: more
   // than 19 significant digits, read again in the slow path; the text outlives the number).
-  enum class Form : std::uint8_t { binary, short_decimal, long_decimal };
+  // beyond: more than kMaxDigits significant digits, or a last digit below 10^kMinExponent: its
+  // exact arithmetic would grow without bound (1e-838478), so its reader refuses it.
+  enum class Form : std::uint8_t { binary, short_decimal, long_decimal, beyond };
+  static constexpr int kMaxDigits = 1000;
+  static constexpr int kMinExponent = -1500;
   Form form = Form::binary;
   bool negative = false;
   std::int32_t exponent = 0;

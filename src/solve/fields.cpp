@@ -42,6 +42,9 @@ const geo::Decimal& Fields::as_number(Type type, const geo::Decimal& x, std::str
     fail(name, fmt::format("expected numbers, got {} at index {}", type_name(type), index));
   }
   if (!std::isfinite(x.hi)) fail(name, "not a finite number");
+  if (x.form == geo::Decimal::Form::beyond)
+    fail(name, fmt::format("more than {} significant digits, or a digit below 1e{}: beyond exact decisions",
+                           geo::Decimal::kMaxDigits, geo::Decimal::kMinExponent));
   return x;
 }
 

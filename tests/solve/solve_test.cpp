@@ -96,5 +96,13 @@ TEST_CASE("solve: a line reads to the same fields flat and through nlohmann::jso
   CHECK(solved(R"({"kind":"ray_c\u0069rcle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})") ==
         solved(R"({"kind":"ray_circle","A":[-5,1],"u":[2,0],"C":[0,0],"r":3})"));
   CHECK(solved("[1,2]") == R"({"error":"line: expected a JSON object"})");
+  // a number whose exact arithmetic would grow without bound is refused, at once (the fuzzer's
+  // slow unit: 56e-0838478), flat or not; 1e-1400 is still a number
+  const std::string beyond =
+      R"({"error":"field 'C': more than 1000 significant digits, or a digit below 1e-1500: beyond exact decisions"})";
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[1,0],"C":[3,56e-0838478],"r":1})") == beyond);
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[1,0],"C":[3,56e-0838478],"r":1,"x":"\u00e9"})") == beyond);
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[1,0],"C":[3,0.)" + std::string(1200, '1') + R"(],"r":1})") == beyond);
+  CHECK(solved(R"({"kind":"ray_circle","A":[0,0],"u":[1,0],"C":[3,1e-1400],"r":1})").find("\"hit\":true") != std::string::npos);
   CHECK(solved("{").rfind(R"({"error":"line: not valid JSON)", 0) == 0);
 }
