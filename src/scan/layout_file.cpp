@@ -140,9 +140,11 @@ SetLayout read_layout(std::string_view text, const std::string& source) {
     throw LayoutError(fmt::format("{}: not JSON: {}", source, e.what()));
   }
   Reader r{source, {}};
-  if (!root.is_object() || root.value("format", "") != "epure-layout")
+  // json::value() throws its own type_error when the member is of another type: compare in place
+  const auto format = root.is_object() ? root.find("format") : root.end();
+  if (!root.is_object() || format == root.end() || *format != "epure-layout")
     r.fail("not a layout.json (\"format\": \"epure-layout\" is missing)");
-  if (!root.contains("version") || !root["version"].is_number_integer() || root["version"].get<int>() != 1)
+  if (!root.contains("version") || root["version"] != 1)
     r.fail("a layout.json of another version: this epure reads version 1");
   SetLayout out;
   if (root.contains("title") && root["title"].is_string()) out.title = root["title"].get<std::string>();

@@ -62,6 +62,12 @@ TEST_CASE("layout.json: a bad file is refused with where and why") {
   };
   CHECK(message("[1, 2") .rfind("layout.json: not JSON", 0) == 0);
   CHECK(message("{}") == "layout.json: not a layout.json (\"format\": \"epure-layout\" is missing)");
+  // a member of another type is refused the same way, not by the JSON library's own type_error
+  // (the fuzzer's {"format": 1, ...})
+  CHECK(message(replaced(good, "\"format\": \"epure-layout\"", "\"format\": 1")) ==
+        "layout.json: not a layout.json (\"format\": \"epure-layout\" is missing)");
+  CHECK(message(replaced(good, "\"version\": 1", "\"version\": \"1\"")) ==
+        "layout.json: a layout.json of another version: this epure reads version 1");
   CHECK(message(replaced(good, "\"version\": 1", "\"version\": 2")) == "layout.json: a layout.json of another version: this epure reads version 1");
   CHECK(message(replaced(good, "\"type\": \"tick\"", "\"type\": \"circle\"")) ==
         "layout.json: sheet 1000-0005-000S, page 1, field 2.position: 'type' must be \"comb\" or \"tick\", not \"circle\"");
