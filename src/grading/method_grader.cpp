@@ -224,7 +224,7 @@ class KeyRuns {
  public:
   const Answers& run(const ExerciseKind& kind, const std::any& data, method::Switches switches, int decimals) const {
     std::lock_guard lock(mutex_);
-    const auto key = std::pair{std::string(switches.mistake), std::string(switches.road)};
+    const auto key = std::pair{switches.mistake, switches.road};
     auto it = runs_.find(key);
     if (it == runs_.end()) it = runs_.emplace(key, kind.evaluate(data, nullptr, switches, decimals)).first;
     return it->second;  // a std::map's elements stay where they are
@@ -232,7 +232,10 @@ class KeyRuns {
 
  private:
   mutable std::mutex mutex_;
-  mutable std::map<std::pair<std::string, std::string>, Answers> runs_;
+  // Keyed by views, not copies (a lookup per review must not allocate): a mistake's and a
+  // road's names are views into the kind's static tables (ExerciseKind::mistakes(), roads()) or
+  // the empty literal, which outlive every key.json read.
+  mutable std::map<std::pair<std::string_view, std::string_view>, Answers> runs_;
 };
 
 // What prepare() makes of an instance: the kind's reading of it, and the runs on its data alone.
