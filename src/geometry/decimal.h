@@ -74,6 +74,7 @@ inline DPoint2 decimal_point(Vec2 v) { return {Decimal::of(v.x), Decimal::of(v.y
 inline DPoint3 decimal_point(Point3 p) { return {Decimal::of(p.x), Decimal::of(p.y), Decimal::of(p.z)}; }
 inline DPoint3 decimal_point(Vec3 v) { return {Decimal::of(v.x), Decimal::of(v.y), Decimal::of(v.z)}; }
 inline DPoint2 written_point(Point2 p) { return {written(p.x), written(p.y)}; }
+inline DPoint3 written_point(Vec3 v) { return {written(v.x), written(v.y), written(v.z)}; }
 inline Point2 hi_point(const DPoint2& p) { return {p[0].hi, p[1].hi}; }
 inline Vec2 hi_vec(const DPoint2& p) { return {p[0].hi, p[1].hi}; }
 inline Point3 hi_point(const DPoint3& p) { return {p[0].hi, p[1].hi, p[2].hi}; }

@@ -10,6 +10,21 @@
 
 namespace epure::geo {
 
+namespace detail {
+
+// The world normal by the inverse transpose, up to a positive factor: (M⁻¹)ᵀ = adj(M)ᵀ / det
+// and det > 0 (positive sizes, a rotation), so [d −c; −b a]·n from the forward matrix points the
+// same way. The forward matrix stays finite whatever the sizes, where M⁻¹ of radii near 1e-300
+// overflows and left nothing to normalise. Throws for a figure beyond what doubles can draw.
+Vec2 world_normal(const Transform2& world, Vec2 n, const char* size_field) {
+  const Affine2Matrix& m = world.matrix();
+  const auto N = normalized(Vec2{m.d * n.x - m.c * n.y, m.a * n.y - m.b * n.x});
+  if (!N) throw DegenerateFigure(size_field, "figure too small or too large for a normal in doubles");
+  return *N;
+}
+
+}  // namespace detail
+
 namespace {
 
 Transform2 place(Point2 C, double sx, double sy, double angle_deg) {
@@ -38,17 +53,6 @@ constexpr const char* size_field() {
   return std::is_same_v<Canonical, RaySquare> ? "half" : "radii";
 }
 
-// The world normal by the inverse transpose, up to a positive factor: (M⁻¹)ᵀ = adj(M)ᵀ / det
-// and det > 0 (positive sizes, a rotation), so [d −c; −b a]·n from the forward matrix points the
-// same way. The forward matrix stays finite whatever the sizes, where M⁻¹ of radii near 1e-300
-// overflows and left nothing to normalise. Throws for a figure beyond what doubles can draw.
-Vec2 world_normal(const Transform2& world, Vec2 n, const char* size_field) {
-  const Affine2Matrix& m = world.matrix();
-  const auto N = normalized(Vec2{m.d * n.x - m.c * n.y, m.a * n.y - m.b * n.x});
-  if (!N) throw DegenerateFigure(size_field, "figure too small or too large for a normal in doubles");
-  return *N;
-}
-
 // The canonical solution carried back: t names the same point in both frames, N goes by the
 // inverse transpose.
 template <class Canonical>
@@ -57,7 +61,7 @@ RayTransformed<Canonical> carry_back(const Transform2& world, Point2 centre, con
   RayTransformed<Canonical> res{world, canonical_ray, canonical, canonical.inside, std::nullopt};
   if (canonical.hit) {
     const double t = canonical.hit->t;
-    const Vec2 N = world_normal(world, canonical.hit->N, size_field<Canonical>());
+    const Vec2 N = detail::world_normal(world, canonical.hit->N, size_field<Canonical>());
     // I is A itself at t = 0; otherwise A + t·u or T(I_c) = C + M·I_c, whichever rounds less:
     // the second keeps the digits of a small figure seen from far away.
     const Vec2 reach = world.apply(to_vec(canonical.hit->I));
@@ -99,7 +103,7 @@ void refine_from_nearby(RayTransformed<Canonical>& res, Point2 centre, double si
   if constexpr (requires { res.canonical.face; })
     if (again.face != res.canonical.face) return;
   res.hit = Hit2{t0 + again.hit->t, centre + res.to_world.apply(to_vec(again.hit->I)),
-                 world_normal(res.to_world, again.hit->N, size_field<Canonical>())};
+                 detail::world_normal(res.to_world, again.hit->N, size_field<Canonical>())};
 }
 
 }  // namespace

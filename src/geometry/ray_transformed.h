@@ -53,4 +53,10 @@ RayRectangle intersect(const Ray2& ray, const Rectangle& rectangle);
 RayEllipse intersect_exact(const Ray2& ray, const Ellipse& ellipse);
 RayRectangle intersect_exact(const Ray2& ray, const Rectangle& rectangle);
 
+namespace detail {
+// The world normal at the canonical normal n, by the inverse transpose, unit (turned_written.cpp
+// rebuilds hits with it). Throws DegenerateFigure(size_field) beyond what doubles can draw.
+Vec2 world_normal(const Transform2& world, Vec2 n, const char* size_field);
+}  // namespace detail
+
 }  // namespace epure::geo

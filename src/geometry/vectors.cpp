@@ -68,8 +68,8 @@ EPURE_FMA_KERNEL VectorPair3 compare_decimal_vectors_3d(const DPoint3& du, const
   r.cos = std::clamp((d.value + d.lo) / lengths, -1.0, 1.0);
   r.sin = std::clamp(norm(w) / lengths, 0.0, 1.0);
   r.angle_deg = angle_degrees(r.cos, r.sin);
-  r.collinear = r.sin <= kCollinearSin;
-  r.orthogonal = std::abs(r.cos) <= kCollinearSin;
+  r.collinear = cx.sign == 0 && cy.sign == 0 && cz.sign == 0;
+  r.orthogonal = d.sign == 0;
   return r;
 }
 

@@ -28,15 +28,14 @@ struct VectorPair3 {
   double norm_u, norm_v;
   double cos, sin;   // u·v = ‖u‖‖v‖cos θ, ‖u∧v‖ = ‖u‖‖v‖sin θ (sin ≥ 0)
   double angle_deg;  // θ in [0, 180]
-  bool collinear;    // ‖u∧v‖ ≤ kCollinearSin·‖u‖‖v‖
-  bool orthogonal;   // |u·v| ≤ kCollinearSin·‖u‖‖v‖
+  bool collinear;    // u∧v = 0 exactly
+  bool orthogonal;   // u·v = 0 exactly
 };
 
-// The products of data on a decimal grid are exact but for the rounding of the decimals in binary
-// (about 1e-16 relative): a sine or cosine below this is zero.
-inline constexpr double kCollinearSin = 1e-12;
-
-// Throws DegenerateFigure("u" or "v") for a zero vector.
+// Throws DegenerateFigure("u" or "v") for a zero vector. The decisions are exact: for the doubles
+// given as such, or for the numbers as written (decimal.h; README, "What a number means"): u∧v = 0
+// for vectors collinear as written (0.3·(0.1, 0.2, 0.3)), u·v = 0 for orthogonal ones, whatever
+// their rounding in binary.
 VectorPair3 compare_vectors_3d(Vec3 u, Vec3 v);
 VectorPair3 compare_decimal_vectors_3d(const DPoint3& u, const DPoint3& v);
 

@@ -9,7 +9,7 @@
 set -u
 tools=$EPURE_SOURCE_DIR/tests/tools
 seed=${EPURE_DECIMAL_SEED:-35}
-count=${EPURE_DECIMAL_LINES:-3500}
+count=${EPURE_DECIMAL_LINES:-4500}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 python3 "$tools/decimal_cases.py" "$seed" "$count" >"$tmp/in.jsonl" || { echo "FAIL: generator"; exit 1; }
 python3 "$tools/reference_solve.py" "$tmp/in.jsonl" >"$tmp/expected" || { echo "FAIL: reference"; exit 1; }

@@ -33,9 +33,17 @@ TEST_CASE("vectors in space: collinear, orthogonal, degenerate") {
   const VectorPair3 opposite = compare_vectors_3d({1, 2, 2}, {-2, -4, -4});
   CHECK(opposite.collinear);
   CHECK(opposite.angle_deg == 180);
-  const VectorPair3 same = compare_vectors_3d({0.3, 0.6, 0.9}, {0.1, 0.2, 0.3});  // collinear up to binary rounding
+  // collinear as written, whatever the rounding in binary; their doubles as such are not
+  const VectorPair3 same = compare_decimal_vectors_3d(written_point(Vec3{0.3, 0.6, 0.9}), written_point(Vec3{0.1, 0.2, 0.3}));
   CHECK(same.collinear);
   CHECK(same.angle_deg < 1e-9);
+  CHECK_FALSE(compare_vectors_3d({0.3, 0.6, 0.9}, {0.1, 0.2, 0.3}).collinear);
+  // a hair off collinear or orthogonal as written is neither (no tolerance)
+  const Decimal hair = read_decimal("0.30000000000000000001", 0.3);
+  CHECK_FALSE(compare_decimal_vectors_3d({hair, written(0.6), written(0.9)}, written_point(Vec3{0.1, 0.2, 0.3})).collinear);
+  const Decimal off = read_decimal("0.50000000000000000001", 0.5);
+  CHECK_FALSE(compare_decimal_vectors_3d({written(2), written(-1), off}, written_point(Vec3{1, 3, 2})).orthogonal);
+  CHECK(compare_decimal_vectors_3d(written_point(Vec3{2, -1, 0.5}), written_point(Vec3{1, 3, 2})).orthogonal);
   const VectorPair3 right = compare_vectors_3d({2, -1, 0.5}, {1, 3, 2});
   CHECK(right.orthogonal);
   CHECK(right.angle_deg == doctest::Approx(90).epsilon(1e-15));

@@ -208,17 +208,174 @@ def vectors(g):
     u = g.vector(step, 3 if g.rng.random() < 0.5 else 2)
     dim = len(u)
     if dim == 2 or g.rng.random() < 0.5:
-        v = tuple(c * Fraction(g.rng.randint(-99, 99) or 7, 10) for c in u)  # collinear
+        k = Fraction(g.rng.randint(-99, 99) or 7, 10)  # one factor for every component
+        v = tuple(c * k for c in u)  # collinear
     else:
         w = g.vector(step, 3)
         v = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])  # orthogonal
         if all(c == 0 for c in v):
             v = (u[1], -u[0], 0) if (u[0], u[1]) != (0, 0) else (1, 0, 0)
+    if dim == 3 and g.rng.random() < 0.3:
+        # a hair (1e-17 to 1e-20 of |v|, below the doubles' ε) off collinear or orthogonal: neither,
+        # as written (a smaller one leaves a dot product within ε² of its terms: 1e-9 of itself)
+        k = g.rng.randrange(3)
+        size = max(abs(c) for c in v)
+        v = tuple(c + (size * Fraction(g.rng.choice([-1, 1]), 10 ** g.rng.randint(17, 20)) if i == k else 0)
+                  for i, c in enumerate(v))
     return line("vectors", u=u, v=v)
 
 
+# Quarter turns as written, some beyond one turn or negative: R(θ) is a permutation with signs.
+QUARTER_TURNS = [0, 90, 180, 270, -90, -180, 360, 450, 630, -270, 720]
+
+
+def turn(v, degrees):
+    """R(θ)·v for θ a whole number of quarter turns, exactly."""
+    x, y = v
+    return {0: (x, y), 1: (-y, x), 2: (-x, -y), 3: (y, -x)}[(degrees // 90) % 4]
+
+
+def near(g, step):
+    """0, or a shift far below the grid (1e-9 to 1e-14 of a step) of either sign: figures on a
+    boundary, or just off it on a side the doubles cannot see."""
+    if g.rng.random() < 0.6:
+        return Fraction(0)
+    return step * Fraction(g.rng.choice([-1, 1]), 10 ** g.rng.randint(9, 14))
+
+
+def ellipse(g):
+    """A turned ellipse on a boundary as written: a quarter turn with the ray tangent at a vertex,
+    or A on the ellipse at a vertex (heading in, out or along it); or equal radii at any angle,
+    tangent or A on it at a Pythagorean point. Sometimes a hair off the boundary."""
+    step, _ = g.scale()
+    C = add(g.far(step, 2), g.grid_point(step, 2))
+    if g.rng.random() < 0.35:
+        # a circle written as an ellipse: r on the grid of ball()'s Pythagorean points
+        r = step * 1365 * g.rng.randint(1, 40)
+        angle = g.rng.choice([g.rng.randint(0, 179), Fraction(g.rng.randint(-3600, 3600), 10)])
+        n = signed(g, g.rng.choice(UNIT2))
+        t = (-n[1], n[0])
+        T = add(add(C, n, r), (near(g, step), 0) if abs(n[0]) > abs(n[1]) else (0, near(g, step)))
+        if g.rng.random() < 0.5:
+            A = add(T, t, -Fraction(g.rng.randint(2, 40), 10) * r)
+            u = tuple(c * step * g.rng.randint(1, 999) * 21 for c in t)
+        else:
+            A = T
+            u = tuple(step * (g.integer(99) + 400 * c * g.rng.choice([-1, 1])) for c in n)
+        u = tuple(Fraction(round(c / step * 10**4)) * step / 10**4 for c in u)
+        if all(c == 0 for c in u):
+            u = (step, 0)
+        return line("ray_ellipse", A=A, u=u, C=C, radii=(r, r), angle=angle)
+    a, b = step * g.rng.randint(1, 9999), step * g.rng.randint(1, 9999)
+    angle = g.rng.choice(QUARTER_TURNS)
+    # in the ellipse's own frame: a vertex V, the tangent direction there
+    k = g.rng.randrange(2)
+    sign = g.rng.choice([-1, 1])
+    V = (sign * a, 0) if k == 0 else (0, sign * b)
+    tangent = (0, 1) if k == 0 else (1, 0)
+    outward = (sign, 0) if k == 0 else (0, sign)
+    V = add(V, outward, near(g, step))
+    if g.rng.random() < 0.5:
+        A_local = add(V, tangent, -step * g.rng.randint(1, 99999))
+        u_local = tuple(c * step * g.rng.randint(1, 999) for c in tangent)
+    else:
+        A_local = V
+        direction = g.rng.choice([-1, 0, 1])  # inward, along, outward
+        u_local = tuple(direction * 400 * o + g.integer(99) * t for o, t in zip(outward, tangent))
+        u_local = tuple(step * c for c in u_local)
+        if all(c == 0 for c in u_local):
+            u_local = tuple(step * t for t in tangent)
+    A = add(C, turn(A_local, angle))
+    u = turn(u_local, angle)
+    return line("ray_ellipse", A=A, u=u, C=C, radii=(a, b), angle=angle)
+
+
+def ellipse_special(g):
+    """An ellipse turned by a multiple of 45° or 30° with A exactly on it as written (cos and sin
+    irrational, the decisions not: the angle's field), sometimes a hair off, and at 45° the ray
+    along the tangent there (from A, or from behind it: a tangent line)."""
+    step, _ = g.scale()
+    L = step * g.rng.randint(1, 999)
+    C = add(g.far(step, 2), g.grid_point(step, 2))
+    if g.rng.random() < 0.5:
+        # 45°: b²(x+y)²/2 + a²(y−x)²/2 = a²b² with x + y = ±7L, a = 5L, b = 5|y − x| (1 + 49 = 2·25)
+        angle = g.rng.choice([45, 135, 225, 315, -45, 405])
+        dx = step * g.integer(9999)
+        dy = g.rng.choice([-7, 7]) * L - dx
+        a, b = 5 * L, 5 * abs(dy - dx)
+        if b == 0:
+            b = 5 * L
+            dx, dy = 0, g.rng.choice([-7, 7]) * L  # y − x = ±7L: b = 35L, a² = ...: recompute below
+            a, b = 5 * L, 35 * L
+            # (x + y)² = 49L², (y − x)² = 49L²: b²·49L²/2 + a²·49L²/2 = a²b² holds for a = 5L, b = 35L
+        if angle in (135, 315, -45):  # the figure's axes swap roles: the same point, radii swapped
+            a, b = b, a
+        grad = (b * b * (dx + dy) - a * a * (dy - dx), b * b * (dx + dy) + a * a * (dy - dx))
+        if angle in (135, 315, -45):
+            grad = (a * a * (dx + dy) - b * b * (dy - dx), a * a * (dx + dy) + b * b * (dy - dx))
+        tangent = (-grad[1], grad[0])
+        A = add(C, (dx + near(g, step), dy))
+        case = g.rng.choice(["along", "before", "any"])
+        if case == "along":
+            u = tangent
+        elif case == "before":
+            A = add(A, tangent, -Fraction(g.rng.randint(1, 9), 10))
+            u = tangent
+        else:
+            u = (step * g.integer(999), step * g.integer(999))
+    else:
+        # 30°-type (30, 150, 210, 330): A − C = (x, 0) with x²(3b² + a²)/4 = a²b²; 60°-type the
+        # same with a and b swapped: (a, b, x) = (7, 28, 8) or (91, 21, 39), times L
+        a, b, x = g.rng.choice([(7, 28, 8), (91, 21, 39)])
+        angle = g.rng.choice([30, 150, 210, 330, -30, 390, 60, 120, 240, 300, -60])
+        if angle % 180 in (60, 120):
+            a, b = b, a
+        a, b, x = a * L, b * L, g.rng.choice([-1, 1]) * x * L
+        A = add(C, (x + near(g, step), 0))
+        u = (step * g.integer(999), step * g.integer(999))
+    if all(c == 0 for c in u):
+        u = (step, 0)
+    return line("ray_ellipse", A=A, u=u, C=C, radii=(a, b), angle=angle)
+
+
+def rectangle(g):
+    """A rectangle turned by quarter turns: a ray through a corner from outside, A on a side or
+    a corner, or a ray along a side; sometimes a hair off."""
+    step, _ = g.scale()
+    C = add(g.far(step, 2), g.grid_point(step, 2))
+    half = (step * g.rng.randint(1, 9999), step * g.rng.randint(1, 9999))
+    angle = g.rng.choice(QUARTER_TURNS)
+    corner = tuple(g.rng.choice([-1, 1]) * h for h in half)
+    case = g.rng.choice(["corner", "on", "along"])
+    if case == "corner":
+        away = tuple((1 if c > 0 else -1) * step * g.rng.randint(1, 9999) for c in corner)
+        A_local = add(add(corner, away), (near(g, step), near(g, step)))
+        u_local = tuple(-a * g.rng.randint(1, 9) for a in away)
+    elif case == "on":
+        k = g.rng.randrange(2)
+        A_local = tuple(corner[i] + (near(g, step) if i == k else 0) if i == k
+                        else (corner[i] if g.rng.random() < 0.3 else step * g.rng.randint(-1, 1) * g.rng.randint(0, 9999) % half[i])
+                        for i in range(2))
+        u_local = (step * g.integer(999), step * g.integer(999))
+        if all(c == 0 for c in u_local):
+            u_local = (step, 0)
+    else:
+        k = g.rng.randrange(2)  # along the side x_k = corner_k, from beyond the other axis
+        j = 1 - k
+        A_local = [0, 0]
+        A_local[k] = corner[k] + near(g, step)
+        A_local[j] = corner[j] + (1 if corner[j] > 0 else -1) * step * g.rng.randint(1, 9999)
+        A_local = tuple(A_local)
+        u_local = [0, 0]
+        u_local[j] = -(1 if corner[j] > 0 else -1) * step * g.rng.randint(1, 999)
+        u_local = tuple(u_local)
+    A = add(C, turn(A_local, angle))
+    u = turn(u_local, angle)
+    return line("ray_rectangle", A=A, u=u, C=C, half=half, angle=angle)
+
+
 MAKERS = [segments, projection, lambda g: ball(g, 2), lambda g: ball(g, 3), lambda g: box(g, 2),
-          lambda g: box(g, 3), vectors]
+          lambda g: box(g, 3), vectors, ellipse, ellipse_special, rectangle]
 
 
 def lines(seed, count):

@@ -92,17 +92,86 @@ def positive(x, name):
 
 # ---- arithmetic ------------------------------------------------------------------------------
 
+class Surd:
+    """p + q·√k exactly (p, q Fractions, k = 2 or 3): cos and sin of a multiple of 45° or 30°
+    with the data, so that a figure turned by such an angle is decided exactly."""
+
+    def __init__(self, p, q=0, k=2):
+        self.p, self.q, self.k = Fraction(p), Fraction(q), k
+
+    def _of(self, x):
+        return x if isinstance(x, Surd) else Surd(x, 0, self.k)
+
+    def __add__(self, o):
+        o = self._of(o)
+        return Surd(self.p + o.p, self.q + o.q, self.k)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Surd(-self.p, -self.q, self.k)
+
+    def __sub__(self, o):
+        return self + -self._of(o)
+
+    def __rsub__(self, o):
+        return self._of(o) - self
+
+    def __mul__(self, o):
+        o = self._of(o)
+        return Surd(self.p * o.p + self.k * self.q * o.q, self.p * o.q + self.q * o.p, self.k)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        o = self._of(o)
+        norm = o.p * o.p - o.k * o.q * o.q  # rational, nonzero for o ≠ 0 (√k irrational)
+        return self * Surd(o.p / norm, -o.q / norm, self.k)
+
+    def __rtruediv__(self, o):
+        return self._of(o) / self
+
+    def sign(self):
+        sp, sq = (self.p > 0) - (self.p < 0), (self.q > 0) - (self.q < 0)
+        if sq == 0 or sp == sq:
+            return sp or sq
+        if sp == 0:
+            return sq
+        d = self.p * self.p - self.k * self.q * self.q
+        return sp * ((d > 0) - (d < 0))
+
+    def _cmp(self, o):
+        return (self - self._of(o)).sign()
+
+    def __lt__(self, o): return self._cmp(o) < 0
+    def __le__(self, o): return self._cmp(o) <= 0
+    def __gt__(self, o): return self._cmp(o) > 0
+    def __ge__(self, o): return self._cmp(o) >= 0
+    def __eq__(self, o): return self._cmp(o) == 0
+    def __ne__(self, o): return self._cmp(o) != 0
+    __hash__ = None
+
+    def decimal(self):
+        return dec(self.p) + dec(self.q) * Decimal(self.k).sqrt()
+
+    def __float__(self):
+        return float(self.decimal())
+
+
 def dec(x):
-    """Fraction, int or Decimal as a Decimal (rounded to the context's 80 digits)."""
+    """Fraction, int, Surd or Decimal as a Decimal (rounded to the context's 80 digits)."""
     if isinstance(x, Decimal):
         return x
+    if isinstance(x, Surd):
+        return x.decimal()
     if isinstance(x, Fraction):
         return Decimal(x.numerator) / Decimal(x.denominator)
     return Decimal(x)
 
 
 def sqrt(x):
-    return dec(x).sqrt()
+    # an exact Surd ≥ 0 may round below 0 in 80 digits when it is 0
+    return max(dec(x), Decimal(0)).sqrt()
 
 
 def out(x):
@@ -153,9 +222,8 @@ def solve_vectors_3d(f):
         angle = math.degrees(math.atan2(out(sin), out(cos)))
     return {"dot": out(d), "cross": outs(w), "norm_u": out(nu), "norm_v": out(nv), "cos": out(cos),
             "sin": out(sin), "angle_deg": angle,
-            # the contract's decisions: sin, resp. |cos|, at most 1e-12 (decimal data are exact
-            # only up to their rounding in binary: 0.3·(0.1, 0.2, 0.3) is collinear)
-            "collinear": sin <= Decimal("1e-12"), "orthogonal": abs(cos) <= Decimal("1e-12")}
+            # the contract's decisions, exact on the decimals: 0.3·(0.1, 0.2, 0.3) is collinear
+            "collinear": all(c == 0 for c in w), "orthogonal": d == 0}
 
 
 def solve_vectors(f):
@@ -297,11 +365,22 @@ PI = Decimal("3.1415926535897932384626433832795028841971693993751058209749445923
 
 
 def cos_sin_degrees(angle):
-    """cos and sin of an angle in degrees: exact Fractions for multiples of 90°, else Decimals."""
+    """cos and sin of an angle in degrees: exact Fractions for multiples of 90°, exact Surds for
+    multiples of 45° and 30°, else Decimals."""
     a = angle % 360  # exact on rationals
     if a % 90 == 0:
         return {0: (Fraction(1), Fraction(0)), 90: (Fraction(0), Fraction(1)),
                 180: (Fraction(-1), Fraction(0)), 270: (Fraction(0), Fraction(-1))}[int(a)]
+    h = Fraction(1, 2)
+    if a % 45 == 0:
+        cs, ss = (1 if a in (45, 315) else -1), (1 if a < 180 else -1)
+        return Surd(0, cs * h, 2), Surd(0, ss * h, 2)
+    if a % 30 == 0:
+        r3 = {30: (Surd(0, h, 3), Surd(h, 0, 3)), 60: (Surd(h, 0, 3), Surd(0, h, 3))}
+        first = a if a < 90 else 180 - a if a < 180 else a - 180 if a < 270 else 360 - a
+        c, s = r3[int(first)]
+        cs, ss = (1 if a < 90 or a > 270 else -1), (1 if a < 180 else -1)
+        return cs * c, ss * s
     if a > 180:
         a -= 360
     x = dec(a) * PI / 180
@@ -321,7 +400,7 @@ def to_frame(f):
     A, u, C = vector(f, "A", 2), nonzero(vector(f, "u", 2), "u"), vector(f, "C", 2)
     angle = number(f, "angle")
     c, s = cos_sin_degrees(angle)
-    conv = (lambda x: x) if isinstance(c, Fraction) else dec
+    conv = (lambda x: x) if isinstance(c, (Fraction, Surd)) else dec
     A, u, C = tuple(map(conv, A)), tuple(map(conv, u)), tuple(map(conv, C))
     p = sub(A, C)
     local = lambda v: (c * v[0] + s * v[1], -s * v[0] + c * v[1])
@@ -340,8 +419,14 @@ def solve_ellipse(f):
     radii = vector(f, "radii", 2)
     positive(radii[0], "radii")
     positive(radii[1], "radii")
+    if radii[0] == radii[1]:
+        # equal radii: a circle whatever the angle, decided exactly on the decimals (an 80-digit
+        # cosine would turn a tangent line into a near one)
+        number(f, "angle")
+        circle = solve_ball({"A": f["A"], "u": f["u"], "C": f["C"], "r": radii[0]}, 2)
+        return {k: v for k, v in circle.items() if k in ("inside", "hit", "t", "I", "N")}
     A, u, p, q, world = to_frame(f)
-    conv = (lambda x: x) if isinstance(p[0], Fraction) else dec
+    conv = (lambda x: x) if isinstance(p[0], (Fraction, Surd)) else dec
     a2, b2 = conv(radii[0]) ** 2, conv(radii[1]) ** 2
     # (p + s q) on x²/a² + y²/b² = 1:  α s² + 2β s + γ = 0
     alpha = q[0] * q[0] / a2 + q[1] * q[1] / b2
@@ -373,7 +458,7 @@ def solve_rectangle(f):
     positive(half[0], "half")
     positive(half[1], "half")
     A, u, p, q, world = to_frame(f)
-    conv = (lambda x: x) if isinstance(p[0], Fraction) else dec
+    conv = (lambda x: x) if isinstance(p[0], (Fraction, Surd)) else dec
     inside, s, axis, sign = slab(p, q, tuple(map(conv, half)))
     res = {"inside": inside, "hit": s is not None}
     if s is None:

@@ -76,7 +76,9 @@ struct RayEllipse : Family<RayEllipse> {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, const solve::Fields&, solve::Result& r) { solve_contract(d, ellipse_of(d), r); }
+  static void contract(const Data& d, const solve::Fields& f, solve::Result& r) {
+    solve_contract(d, ellipse_of(d), kSizes, f, r);
+  }
 
   static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), ellipse_of(d))); }
   static constexpr Shape kShape = Shape::ellipse;

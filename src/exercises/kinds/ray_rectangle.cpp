@@ -115,7 +115,9 @@ struct RayRectangle : Family<RayRectangle> {
   }
 
   // the solve contract (solve/solve.h)
-  static void contract(const Data& d, const solve::Fields&, solve::Result& r) { solve_contract(d, rectangle_of(d), r); }
+  static void contract(const Data& d, const solve::Fields& f, solve::Result& r) {
+    solve_contract(d, rectangle_of(d), kSizes, f, r);
+  }
 
   static CoreAnswers core(const Data& d) { return core_answers(geo::intersect(world_ray(d), rectangle_of(d))); }
   static constexpr Shape kShape = Shape::rectangle;

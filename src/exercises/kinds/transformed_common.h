@@ -25,6 +25,7 @@
 #include "exercises/kinds/ray_branch.h"
 #include "geometry/affine.h"
 #include "geometry/ray_transformed.h"
+#include "geometry/turned_written.h"
 #include "support/portable.h"
 
 namespace epure::kinds::transformed {
@@ -114,12 +115,17 @@ CoreAnswers core_answers(const Result& r) {
   return a;
 }
 
-// The solve contract: inside, hit; then t, I, N (the figure's own intersection), decided exactly
-// for the data's doubles (README, "What a number means": a turned figure's decimals are not yet).
+// The solve contract: inside, hit; then t, I, N (the figure's own intersection), decided on the
+// decimals written where turned_written.h can (a whole number of quarter turns, equal radii),
+// otherwise exactly for the ray carried in doubles (README, "What a number means").
 template <class Figure>
-void solve_contract(const Data& d, const Figure& figure, solve::Result& r) {
+void solve_contract(const Data& d, const Figure& figure, std::string_view sizes, const solve::Fields& f,
+                    solve::Result& r) {
   const auto [ray, length] = solve::raw_ray<geo::Ray2>(d.A, d.u);
-  const auto e = geo::intersect_exact(ray, figure);
+  const auto direction = solve::raw_direction(f.dpoint2("u")).first;
+  const geo::DPoint2 size = f.dpoint2(sizes);
+  const geo::WrittenTurned written{f.dpoint2("A"), f.dpoint2("u"), f.dpoint2("C"), size[0], size[1], f.decimal("angle")};
+  const auto e = geo::intersect_written(written, direction, ray, figure);
   r.boolean("inside", e.inside).hit(e.hit, length);
 }
 

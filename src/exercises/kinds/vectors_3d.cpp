@@ -29,6 +29,12 @@ struct Data {
 using method::AnswerType;
 constexpr method::Names3 kCross = {"cross.x", "cross.y", "cross.z"};
 
+// The student's method decides on its rounded sine and cosine: collinear or orthogonal when
+// they are zero up to this (the core decides exactly, vectors.h). Data on a one-decimal grid
+// within ±10 that are not collinear have sin θ ≥ 0.01/300 (u∧v has hundredths, ‖u‖‖v‖ ≤ 300),
+// far above it, and the method's exact evaluator gets exactly zero for collinear data.
+constexpr double kCollinearSin = 1e-12;
+
 // A factor of a product as the key writes it: negative numbers in parentheses.
 std::string factor(const NumberStyle& n, double x) { return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x); }
 
@@ -76,7 +82,7 @@ struct Vectors3dMethod {
     const auto s = m.number("sin", m.round("sin", nw / nn));
     const auto theta = method::atan2_degrees(s, c);
     m.number("angle_deg", m.mistake("angle_radians", theta, theta * m.in(std::numbers::pi / 180)));
-    const auto eps = m.in(geo::kCollinearSin);
+    const auto eps = m.in(kCollinearSin);
     m.boolean("collinear", less_equal(s, eps));
     m.boolean("orthogonal", less_equal(method::magnitude(c), eps));
   }
@@ -90,7 +96,7 @@ struct Vectors3dMethod {
   }
 
   static CoreAnswers core(const Data& d) {
-    const auto r = geo::compare_vectors_3d(d.u, d.v);
+    const auto r = geo::compare_decimal_vectors_3d(geo::written_point(d.u), geo::written_point(d.v));
     CoreAnswers a;
     a.number("dot", r.dot).vec(kCross, r.cross).number("norm_u", r.norm_u).number("norm_v", r.norm_v);
     a.number("cos", r.cos).number("sin", r.sin).number("angle_deg", r.angle_deg);
@@ -158,7 +164,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
       if (!fits(x.v) || geo::norm(x.v) < min_norm) return std::nullopt;
       if (level == Difficulty::easy && !(whole_norm(x.u) && whole_norm(x.v))) return std::nullopt;
       if (level == Difficulty::standard && whole_norm(x.u) && whole_norm(x.v)) return std::nullopt;
-      const auto r = geo::compare_vectors_3d(x.u, x.v);
+      const auto r = geo::compare_decimal_vectors_3d(geo::written_point(x.u), geo::written_point(x.v));
       if (branch_of(r) != branch) return std::nullopt;
       if (branch == "general") {
         if (r.angle_deg < min_angle || r.angle_deg > 180 - min_angle) return std::nullopt;
@@ -174,7 +180,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto r = geo::compare_vectors_3d(d.u, d.v);
+    const auto r = geo::compare_decimal_vectors_3d(geo::written_point(d.u), geo::written_point(d.v));
     const std::string branch = branch_of(r);
 
     const auto sheet_figure = [&](const KeySolution&) { return render::Figure{scene(d, r, ctx, false), 0.8}; };

@@ -1,0 +1,362 @@
+#include "geometry/turned_written.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <type_traits>
+
+#include "geometry/bounded.h"
+#include "geometry/quadratic.h"
+#include "geometry/ray_circle.h"
+
+namespace epure::geo {
+
+namespace {
+
+using exact::ExactDecimal;
+
+// The sign of a polynomial: certain from its bounded value, or none (NotCertain thrown, then
+// the same polynomial is evaluated on exact decimals); exact decimals' own sign.
+struct NotCertain {};
+int sign(const Bounded& x) {
+  if (x.mid == 0 && x.err == 0) return 0;  // a datum that is zero exactly
+  const int s = x.certain_sign();
+  if (s == 0) throw NotCertain{};
+  return s;
+}
+int sign(const ExactDecimal& x) { return x.sign(); }
+template <int K>
+int sign(const exact::Quadratic<K>& x) { return x.sign(); }
+// Within 2^40 of its error bound (about 2^-12 of its terms): a chord that short has the carried
+// ray's rounding magnified in it, so the hit is redone from the decimals.
+bool near_zero(const Bounded& x) { return std::abs(x.mid) <= 0x1p40 * x.err; }
+template <class Exact>
+bool near_zero(const Exact&) { return true; }
+
+double to_double(const ExactDecimal& x) {
+  const exact::TwoTerm v = exact::two_term(x);
+  return v.hi + v.lo;
+}
+template <int K>
+double to_double(const exact::Quadratic<K>& x) { return x.value(); }
+
+// A datum, and p + q·√k (a cosine or sine of the table below), in each kind of number.
+Bounded number(const Decimal& d, Bounded*) { return Bounded::of(d); }
+ExactDecimal number(const Decimal& d, ExactDecimal*) { return exact::exact_value(d); }
+template <int K>
+exact::Quadratic<K> number(const Decimal& d, exact::Quadratic<K>*) { return {exact::exact_value(d), {}}; }
+Bounded trig(double p, double q, int k, Bounded*) {
+  const double x = p + q * std::sqrt(static_cast<double>(k));  // √k correctly rounded, then one sum
+  return {x, 0x1p-51 * std::abs(x) + 0x1p-1070};
+}
+ExactDecimal trig(double p, double, int, ExactDecimal*) { return exact::exact_value(p); }
+template <int K>
+exact::Quadratic<K> trig(double p, double q, int, exact::Quadratic<K>*) {
+  return {exact::exact_value(p), exact::exact_value(q)};
+}
+
+// An angle as written whose cos and sin are p + q·√k with p, q in {0, ±½, ±1}: a whole number
+// of quarter turns (k = 1), of 45° (k = 2) or of 30° (k = 3).
+struct SpecialAngle {
+  int k = 1;
+  int quarter = 0;                         // k = 1: R(θ) is that many quarter turns
+  double cp = 1, cq = 0, sp = 0, sq = 0;   // cos θ = cp + cq·√k, sin θ = sp + sq·√k
+};
+std::optional<SpecialAngle> special_angle(const Decimal& angle_deg) {
+  // the decimal is its double exactly (lo = 0), a whole number of degrees (fmod is exact)
+  const double a = angle_deg.hi;
+  if (angle_deg.lo != 0 || !(std::abs(a) <= 0x1p53) || std::fmod(a, 15.0) != 0) return std::nullopt;
+  double m = std::fmod(a, 360.0);
+  if (m < 0) m += 360;
+  const int degrees = static_cast<int>(m);
+  const double c_sign = degrees < 90 || degrees > 270 ? 1 : -1, s_sign = degrees < 180 ? 1 : -1;
+  const int in_quadrant = degrees % 90;  // the angle to the previous axis
+  const int from_x = degrees % 180 < 90 ? in_quadrant : 90 - in_quadrant;  // |θ| folded to [0, 90]
+  if (in_quadrant == 0) return SpecialAngle{1, degrees / 90};
+  if (in_quadrant == 45) return SpecialAngle{2, 0, 0, c_sign * 0.5, 0, s_sign * 0.5};
+  if (from_x == 30) return SpecialAngle{3, 0, 0, c_sign * 0.5, s_sign * 0.5, 0};
+  if (from_x == 60) return SpecialAngle{3, 0, c_sign * 0.5, 0, 0, s_sign * 0.5};
+  return std::nullopt;  // 15°, 75°: √6 ± √2, not worth a field of degree 4
+}
+
+// f(tag) with the exact number type of the angle's field.
+template <class F>
+auto on_exact(int k, F&& f) {
+  if (k == 2) return f(static_cast<exact::Quadratic<2>*>(nullptr));
+  if (k == 3) return f(static_cast<exact::Quadratic<3>*>(nullptr));
+  return f(static_cast<ExactDecimal*>(nullptr));
+}
+
+// The data in the figure's own frame: X = R(−θ)(A − C), U = R(−θ)u, exactly (a quarter turn is a
+// permutation with signs: R(−90°)(x, y) = (y, −x)), the sizes s along its axes.
+template <class Num>
+struct Turned {
+  std::array<Num, 2> X, U, s;
+};
+template <class Num>
+std::array<Num, 2> turn_back(const Num& x, const Num& y, int q) {
+  switch (q) {
+    case 1: return {y, -x};
+    case 2: return {-x, -y};
+    case 3: return {-y, x};
+    default: return {x, y};
+  }
+}
+template <class Num>
+Turned<Num> turned(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle) {
+  Num* tag = nullptr;
+  const Num dx = number(w.A[0], tag) - number(w.C[0], tag), dy = number(w.A[1], tag) - number(w.C[1], tag);
+  const Num ux = number(direction[0], tag), uy = number(direction[1], tag);
+  const std::array<Num, 2> s{number(w.sx, tag), number(w.sy, tag)};
+  if (angle.k == 1) return {turn_back(dx, dy, angle.quarter), turn_back(ux, uy, angle.quarter), s};
+  const Num c = trig(angle.cp, angle.cq, angle.k, tag), sn = trig(angle.sp, angle.sq, angle.k, tag);
+  // R(−θ)v = (c·x + s·y, c·y − s·x)
+  return {{c * dx + sn * dy, c * dy - sn * dx}, {c * ux + sn * uy, c * uy - sn * ux}, s};
+}
+
+// What decides a ray and a figure, as the kernels decide it.
+struct Decisions {
+  bool inside = false;
+  bool hit = false;
+  bool at_origin = false;    // the hit is A itself (t = 0)
+  std::optional<Face> face;  // the rectangle's side hit
+  bool tangent = false;      // the ellipse's line tangent: a hit with no chord
+  bool near_tangent = false;  // or within 2^-12 of it (not compared: it names no branch)
+  bool operator==(const Decisions& o) const {
+    return inside == o.inside && hit == o.hit && at_origin == o.at_origin && face == o.face;
+  }
+};
+
+// The ellipse x²/a² + y²/b² = 1 in its frame, as ray_circle decides the canonical circle
+// (ray_circle.h), each polynomial multiplied by a power of a²b² > 0: inside ‖A_c‖² < 1, behind
+// A_c·u_c > 0 from outside or on it, miss ‖u_c‖² < (u_c ∧ A_c)², tangent when equal.
+template <class Num>
+Decisions decide_ellipse(const Turned<Num>& f) {
+  const auto& [X, U, s] = f;
+  const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
+  const int excess = sign(b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2);
+  Decisions d;
+  d.inside = excess < 0;
+  const auto chord_polynomial = [&] {
+    const Num cross = U[0] * X[1] - U[1] * X[0];
+    return b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]) - cross * cross;
+  };
+  if (d.inside) {
+    d.hit = true;
+    d.near_tangent = near_zero(chord_polynomial());  // a chord that short from inside too
+    return d;
+  }
+  if (sign(b2 * (X[0] * U[0]) + a2 * (X[1] * U[1])) > 0) return d;  // behind
+  const Num chord_value = chord_polynomial();
+  const int chord = sign(chord_value);
+  d.near_tangent = near_zero(chord_value);
+  d.hit = chord >= 0;
+  d.tangent = chord == 0;
+  d.at_origin = d.hit && excess == 0;
+  return d;
+}
+
+// The rectangle |x| ≤ w, |y| ≤ h in its frame, as the box kernel decides the canonical square
+// (ray_box.h: candidate sides, the side met first or last, the landing point on the side, the x
+// side first at a corner), each comparison multiplied by the sizes it divides by.
+template <class Num>
+Decisions decide_rectangle(const Turned<Num>& f) {
+  const auto& [X, U, s] = f;
+  const std::array<int, 2> sign_u{sign(U[0]), sign(U[1])};
+  Decisions d;
+  bool candidate[2][2] = {};  // [axis][σ = +1 ? 0 : 1]: σ·X_k ≥ s_k
+  for (int k = 0; k < 2; ++k) {
+    candidate[k][0] = sign(X[k] - s[k]) >= 0;
+    candidate[k][1] = sign(X[k] + s[k]) <= 0;
+  }
+  d.inside = !(candidate[0][0] || candidate[0][1] || candidate[1][0] || candidate[1][1]);
+  // The gap to side (k, σ) in units of s_k: s_k − σX_k inside, σX_k − s_k from a candidate side.
+  auto gap = [&](Face face) {
+    const Num g = s[face.axis] - (face.sign > 0 ? X[face.axis] : -X[face.axis]);
+    return d.inside ? g : -g;
+  };
+  auto abs_u = [&](int k) { return sign_u[k] < 0 ? -U[k] : U[k]; };
+  // side j met before side k: gap_j·|u_k| < gap_k·|u_j| (over s_j·s_k > 0)
+  auto earlier = [&](Face j, Face k) { return sign(gap(j) * abs_u(k.axis) - gap(k) * abs_u(j.axis)) < 0; };
+  if (d.inside) {
+    for (int k = 0; k < 2; ++k) {
+      if (sign_u[k] == 0) continue;
+      const Face face{k, sign_u[k]};
+      if (!d.face || earlier(face, *d.face)) d.face = face;
+    }
+    d.hit = true;
+    return d;
+  }
+  for (int sigma : {+1, -1})
+    for (int n = 0; n < 2; ++n) {
+      const Face face{n, sigma};
+      if (!candidate[n][sigma > 0 ? 0 : 1] || !(sigma * sign_u[n] < 0)) continue;
+      const Num g = gap(face);
+      const int j = 1 - n;
+      // on the side: (s_j ∓ X_j)·|u_n| ∓ gap·u_j ≥ 0 for both signs (over s_j·s_n)
+      bool on_side = true;
+      for (int side : {+1, -1}) {
+        const Num room = side > 0 ? s[j] - X[j] : s[j] + X[j];
+        const Num along = side > 0 ? g * U[j] : -(g * U[j]);
+        if (sign(room * abs_u(n) - along) < 0) on_side = false;
+      }
+      if (!on_side) continue;
+      if (d.face) {
+        const bool later = earlier(*d.face, face);
+        const bool tie = !later && !earlier(face, *d.face);
+        if (!later && !(tie && face.axis < d.face->axis)) continue;
+      }
+      d.face = face;
+      d.at_origin = sign(g) == 0;
+    }
+  d.hit = d.face.has_value();
+  return d;
+}
+
+// The decisions, and whether the floating-point filter took them all (the figure clear of every
+// boundary by far more than the carried ray's rounding) or the exact numbers had to.
+struct Decided {
+  Decisions decisions;
+  bool filtered;
+};
+template <class Decide>
+Decided decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on) {
+  try {
+    return {decide_on(turned<Bounded>(w, direction, angle)), true};
+  } catch (const NotCertain&) {
+    return on_exact(angle.k, [&](auto* tag) {
+      using Num = std::remove_pointer_t<decltype(tag)>;
+      return Decided{decide_on(turned<Num>(w, direction, angle)), false};
+    });
+  }
+}
+
+// The kernels' decisions, as Decisions says them.
+template <class Result>
+Decisions kernel_decisions(const Result& e) {
+  Decisions d{e.inside, e.hit.has_value(), e.hit && !(e.hit->t > 0), std::nullopt};
+  if constexpr (requires { e.canonical.face; })
+    if (e.hit) d.face = e.canonical.face;
+  return d;
+}
+
+// The hit rebuilt from exact decisions that the carried ray's doubles did not take (within their
+// rounding of a boundary): t from the carried ray, of the sign and branch decided, the point on
+// the figure, the normal by the inverse transpose. I is A at t = 0, else A + t·u.
+Point2 world_point(const Ray2& ray, double t) { return t > 0 ? ray.at(t) : ray.origin; }
+
+// t of the ellipse's hit decided, from the exact decimals: the point X + t·U of its frame on
+// b²x² + a²y² = a²b², α t² + 2β t + γ = 0; the near root from outside, the far one from inside,
+// −β/α at tangency, each written without cancellation. Within a few ulps, of the sign decided.
+template <class Num>
+double ellipse_t(const Turned<Num>& f, const Decisions& d) {
+  const auto& [X, U, s] = f;
+  const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
+  const Num alpha_exact = b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]);
+  const double alpha = to_double(alpha_exact);
+  const Num beta_exact = b2 * (X[0] * U[0]) + a2 * (X[1] * U[1]);
+  const Num gamma_exact = b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2;
+  const double beta = to_double(beta_exact), gamma = to_double(gamma_exact);
+  if (d.tangent) return -beta / alpha;
+  const double root = std::sqrt(std::max(0.0, to_double(beta_exact * beta_exact - alpha_exact * gamma_exact)));
+  if (d.inside) return beta <= 0 ? (root - beta) / alpha : -gamma / (beta + root);
+  return gamma / (root - beta);
+}
+
+template <class Num>
+RayEllipse rebuilt(RayEllipse e, const Decisions& d, const Turned<Num>& f, const Ray2& ray) {
+  e.inside = e.canonical.inside = d.inside;
+  e.hit.reset();
+  e.canonical.hit.reset();
+  if (!d.hit) {
+    e.canonical.reason = e.canonical.t_proj < 0 && !d.inside ? NoHit::behind : NoHit::miss;
+    return e;
+  }
+  e.canonical.reason.reset();
+  const double t = d.at_origin ? 0.0 : ellipse_t(f, d);
+  const Vec2 Ic = to_vec(e.canonical_ray.origin) + t * e.canonical_ray.direction;
+  const Vec2 Nc = normalized(Ic).value_or(Vec2{1, 0});
+  e.canonical.hit = Hit2{t, to_point(Ic), Nc};
+  e.hit = Hit2{t, world_point(ray, t), detail::world_normal(e.to_world, Nc, "radii")};
+  return e;
+}
+
+template <class Num>
+RayRectangle rebuilt(RayRectangle e, const Decisions& d, const Turned<Num>& f, const Ray2& ray) {
+  e.inside = e.canonical.inside = d.inside;
+  e.hit.reset();
+  e.canonical.hit.reset();
+  e.canonical.face = d.face;
+  if (!d.hit) return e;
+  const Vec2 Ac = to_vec(e.canonical_ray.origin), uc = e.canonical_ray.direction;
+  const int n = d.face->axis, j = 1 - n;
+  const double sigma = d.face->sign;
+  const std::array<double, 2> a{Ac.x, Ac.y}, u{uc.x, uc.y};
+  // t = gap / |u_n| from the exact decimals (within about an ulp, of the sign decided)
+  const Num gap = d.inside ? (d.face->sign > 0 ? f.s[n] - f.X[n] : f.s[n] + f.X[n])
+                                    : (d.face->sign > 0 ? f.X[n] - f.s[n] : -f.X[n] - f.s[n]);
+  const double t = d.at_origin ? 0.0 : std::abs(to_double(gap) / to_double(f.U[n]));
+  std::array<double, 2> I{};
+  I[n] = sigma;
+  I[j] = std::clamp(a[j] + t * u[j], -1.0, 1.0);
+  Vec2 Nc{0, 0};
+  (n == 0 ? Nc.x : Nc.y) = sigma;
+  e.canonical.hit = Hit2{t, {I[0], I[1]}, Nc};
+  e.hit = Hit2{t, world_point(ray, t), detail::world_normal(e.to_world, Nc, "half")};
+  return e;
+}
+
+}  // namespace
+
+std::optional<int> quarter_turns(const Decimal& angle_deg) {
+  const auto angle = special_angle(angle_deg);
+  if (!angle || angle->k != 1) return std::nullopt;
+  return angle->quarter;
+}
+
+namespace {
+
+// The kernels' result, or the one rebuilt from the exact decisions where they differ or the line
+// is near tangency (the filter left a chord within 2^-12: the carried ray's chord there is made
+// of its rounding).
+template <class Result, class Decide>
+Result on_the_decimals(Result e, const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
+                       const SpecialAngle& angle, Decide decide_on) {
+  const Decided exact = decide(w, direction, angle, decide_on);
+  if (exact.filtered && exact.decisions == kernel_decisions(e) && !exact.decisions.near_tangent) return e;
+  return on_exact(angle.k, [&](auto* tag) {
+    using Num = std::remove_pointer_t<decltype(tag)>;
+    return rebuilt(e, exact.decisions, turned<Num>(w, direction, angle), ray);
+  });
+}
+
+}  // namespace
+
+RayEllipse intersect_written(const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
+                             const Ellipse& ellipse) {
+  RayEllipse e = intersect_exact(ray, ellipse);
+  if (same_value(w.sx, w.sy)) {
+    // a circle: ray_circle's decisions on the decimals, its hit where they differ or where the
+    // chord is shorter than 2^-12 of the radius (the carried ray's rounding is magnified there)
+    const RayCircle c = intersect_exact(w.A, direction, w.C, w.sx);
+    const Decisions circle{c.inside, c.hit.has_value(), c.hit && !(c.hit->t > 0), std::nullopt};
+    const bool near_tangent = c.half_chord && *c.half_chord <= 0x1p-12 * w.sx.hi;
+    if (circle == kernel_decisions(e) && !near_tangent) return e;
+    e.inside = c.inside;
+    e.hit = c.hit;
+    return e;
+  }
+  const auto angle = special_angle(w.angle_deg);
+  if (!angle) return e;
+  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_ellipse(f); });
+}
+
+RayRectangle intersect_written(const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
+                               const Rectangle& rectangle) {
+  RayRectangle e = intersect_exact(ray, rectangle);
+  const auto angle = special_angle(w.angle_deg);
+  if (!angle) return e;
+  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_rectangle(f); });
+}
+
+}  // namespace epure::geo
