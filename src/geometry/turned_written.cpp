@@ -27,11 +27,6 @@ int sign(const Bounded& x) {
 int sign(const ExactDecimal& x) { return x.sign(); }
 template <int K>
 int sign(const exact::Quadratic<K>& x) { return x.sign(); }
-// Within 2^40 of its error bound (about 2^-12 of its terms): a chord that short has the carried
-// ray's rounding magnified in it, so the hit is redone from the decimals.
-bool near_zero(const Bounded& x) { return std::abs(x.mid) <= 0x1p40 * x.err; }
-template <class Exact>
-bool near_zero(const Exact&) { return true; }
 
 double to_double(const ExactDecimal& x) {
   const exact::TwoTerm v = exact::two_term(x);
@@ -121,11 +116,19 @@ struct Decisions {
   bool at_origin = false;    // the hit is A itself (t = 0)
   std::optional<Face> face;  // the rectangle's side hit
   bool tangent = false;      // the ellipse's line tangent: a hit with no chord
-  bool near_tangent = false;  // or within 2^-12 of it (not compared: it names no branch)
   bool operator==(const Decisions& o) const {
     return inside == o.inside && hit == o.hit && at_origin == o.at_origin && face == o.face;
   }
 };
+
+// ‖u_c‖² − (u_c ∧ A_c)² times a²b²: the ellipse's line through a chord (+), tangent (0) or beside.
+template <class Num>
+Num ellipse_chord(const Turned<Num>& f) {
+  const auto& [X, U, s] = f;
+  const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
+  const Num cross = U[0] * X[1] - U[1] * X[0];
+  return b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]) - cross * cross;
+}
 
 // The ellipse x²/a² + y²/b² = 1 in its frame, as ray_circle decides the canonical circle
 // (ray_circle.h), each polynomial multiplied by a power of a²b² > 0: inside ‖A_c‖² < 1, behind
@@ -137,19 +140,12 @@ Decisions decide_ellipse(const Turned<Num>& f) {
   const int excess = sign(b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2);
   Decisions d;
   d.inside = excess < 0;
-  const auto chord_polynomial = [&] {
-    const Num cross = U[0] * X[1] - U[1] * X[0];
-    return b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]) - cross * cross;
-  };
   if (d.inside) {
     d.hit = true;
-    d.near_tangent = near_zero(chord_polynomial());  // a chord that short from inside too
     return d;
   }
   if (sign(b2 * (X[0] * U[0]) + a2 * (X[1] * U[1])) > 0) return d;  // behind
-  const Num chord_value = chord_polynomial();
-  const int chord = sign(chord_value);
-  d.near_tangent = near_zero(chord_value);
+  const int chord = sign(ellipse_chord(f));
   d.hit = chord >= 0;
   d.tangent = chord == 0;
   d.at_origin = d.hit && excess == 0;
@@ -213,20 +209,16 @@ Decisions decide_rectangle(const Turned<Num>& f) {
   return d;
 }
 
-// The decisions, and whether the floating-point filter took them all (the figure clear of every
-// boundary by far more than the carried ray's rounding) or the exact numbers had to.
-struct Decided {
-  Decisions decisions;
-  bool filtered;
-};
+// The decisions: by the floating-point filter where it tells every sign (the figure clear of every
+// boundary by far more than the carried ray's rounding), else on the exact numbers.
 template <class Decide>
-Decided decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on) {
+Decisions decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on) {
   try {
-    return {decide_on(turned<Bounded>(w, direction, angle)), true};
+    return decide_on(turned<Bounded>(w, direction, angle));
   } catch (const NotCertain&) {
     return on_exact(angle.k, [&](auto* tag) {
       using Num = std::remove_pointer_t<decltype(tag)>;
-      return Decided{decide_on(turned<Num>(w, direction, angle)), false};
+      return decide_on(turned<Num>(w, direction, angle));
     });
   }
 }
@@ -316,17 +308,17 @@ std::optional<int> quarter_turns(const Decimal& angle_deg) {
 
 namespace {
 
-// The kernels' result, or the one rebuilt from the exact decisions where they differ or the line
-// is near tangency (the filter left a chord within 2^-12: the carried ray's chord there is made
-// of its rounding).
+// The kernels' result where their decisions are the exact ones (their values to the bit: the keys
+// do not move), else the one rebuilt from the exact decisions; also where `redo` says the
+// kernels' values are not to be kept.
 template <class Result, class Decide>
 Result on_the_decimals(Result e, const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
-                       const SpecialAngle& angle, Decide decide_on) {
-  const Decided exact = decide(w, direction, angle, decide_on);
-  if (exact.filtered && exact.decisions == kernel_decisions(e) && !exact.decisions.near_tangent) return e;
+                       const SpecialAngle& angle, Decide decide_on, bool redo = false) {
+  const Decisions exact = decide(w, direction, angle, decide_on);
+  if (exact == kernel_decisions(e) && !redo) return e;
   return on_exact(angle.k, [&](auto* tag) {
     using Num = std::remove_pointer_t<decltype(tag)>;
-    return rebuilt(e, exact.decisions, turned<Num>(w, direction, angle), ray);
+    return rebuilt(e, exact, turned<Num>(w, direction, angle), ray);
   });
 }
 
@@ -348,7 +340,12 @@ RayEllipse intersect_written(const WrittenTurned& w, const DPoint2& direction, c
   }
   const auto angle = special_angle(w.angle_deg);
   if (!angle) return e;
-  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_ellipse(f); });
+  // a line within 2^-12 of tangency (its chord polynomial within 2^40 of its error bound): the
+  // carried ray's rounding is magnified in the kernels' chord, so the hit is redone
+  const Bounded chord = ellipse_chord(turned<Bounded>(w, direction, *angle));
+  const bool near_tangent = !(std::abs(chord.mid) > 0x1p40 * chord.err);
+  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_ellipse(f); },
+                         near_tangent);
 }
 
 RayRectangle intersect_written(const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,

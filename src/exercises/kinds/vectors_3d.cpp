@@ -35,6 +35,17 @@ constexpr method::Names3 kCross = {"cross.x", "cross.y", "cross.z"};
 // far above it, and the method's exact evaluator gets exactly zero for collinear data.
 constexpr double kCollinearSin = 1e-12;
 
+// The core's comparison of the data: the values of their doubles (the key's numbers, as they
+// were), the decisions exact on the decimals the sheet prints (collinear or orthogonal as written,
+// whatever the doubles: vectors.h).
+geo::VectorPair3 compared(const Data& d) {
+  geo::VectorPair3 r = geo::compare_vectors_3d(d.u, d.v);
+  const geo::VectorPair3 written = geo::compare_decimal_vectors_3d(geo::written_point(d.u), geo::written_point(d.v));
+  r.collinear = written.collinear;
+  r.orthogonal = written.orthogonal;
+  return r;
+}
+
 // A factor of a product as the key writes it: negative numbers in parentheses.
 std::string factor(const NumberStyle& n, double x) { return x < 0 ? fmt::format("({})", n.datum(x)) : n.datum(x); }
 
@@ -96,7 +107,7 @@ struct Vectors3dMethod {
   }
 
   static CoreAnswers core(const Data& d) {
-    const auto r = geo::compare_decimal_vectors_3d(geo::written_point(d.u), geo::written_point(d.v));
+    const auto r = compared(d);
     CoreAnswers a;
     a.number("dot", r.dot).vec(kCross, r.cross).number("norm_u", r.norm_u).number("norm_v", r.norm_v);
     a.number("cos", r.cos).number("sin", r.sin).number("angle_deg", r.angle_deg);
@@ -164,7 +175,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
       if (!fits(x.v) || geo::norm(x.v) < min_norm) return std::nullopt;
       if (level == Difficulty::easy && !(whole_norm(x.u) && whole_norm(x.v))) return std::nullopt;
       if (level == Difficulty::standard && whole_norm(x.u) && whole_norm(x.v)) return std::nullopt;
-      const auto r = geo::compare_decimal_vectors_3d(geo::written_point(x.u), geo::written_point(x.v));
+      const auto r = compared(x);
       if (branch_of(r) != branch) return std::nullopt;
       if (branch == "general") {
         if (r.angle_deg < min_angle || r.angle_deg > 180 - min_angle) return std::nullopt;
@@ -180,7 +191,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
   ExerciseInstance build(const Data& d, const ExerciseContext& ctx) const override {
     const auto& T = ctx.texts;
     const auto& N = ctx.numbers;
-    const auto r = geo::compare_decimal_vectors_3d(geo::written_point(d.u), geo::written_point(d.v));
+    const auto r = compared(d);
     const std::string branch = branch_of(r);
 
     const auto sheet_figure = [&](const KeySolution&) { return render::Figure{scene(d, r, ctx, false), 0.8}; };
