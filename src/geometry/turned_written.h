@@ -3,10 +3,11 @@
 // means"). The figure's kernels (ray_transformed.h) carry the ray into the canonical frame in
 // doubles; here the decisions that carrying rounds are taken again, exactly, wherever they can be:
 //
-// - an angle that is a whole number of quarter turns as written (0, 90, -90, 450.0: the decimal,
-//   not its double) turns by a permutation with signs, so every decision is the sign of a
-//   polynomial of the decimals (the sizes multiplied out: inside the ellipse is
-//   b²x'² + a²y'² < a²b², x' and y' the turned A − C);
+// - an angle that is a whole multiple of 90°, 45° or 30° as written (0, 90, -90, 450.0, 135, -60:
+//   the decimal, not its double) has cos and sin in {0, ±1, ±½, ±½√2, ±½√3}: a quarter turn is a
+//   permutation with signs, the others exact numbers p + q√2 or p + q√3 (quadratic.h), so every
+//   decision is the sign of a polynomial of the decimals in that field (the sizes multiplied
+//   out: inside the ellipse is b²x'² + a²y'² < a²b², x' and y' the turned A − C);
 // - an ellipse whose radii are the same decimal is a circle, whatever its angle: its decisions
 //   are ray_circle's on the decimals.
 //
@@ -16,9 +17,10 @@
 // values, to the bit); otherwise the hit is rebuilt from the exact decisions, its values from the
 // carried ray (within rounding of the boundary the figure is, so they are as accurate).
 //
-// Other angles (cos and sin irrational, Niven) with unequal sizes keep the kernels' decisions on
-// the carried doubles: within about 1e-15 of the figure's size from a boundary such a figure is
-// decided as its rounded ray lies (README states that limit).
+// Other angles with unequal sizes keep the kernels' decisions on the carried doubles: within
+// about 1e-15 of the figure's size from a boundary such a figure is decided as its rounded ray
+// lies (README states that limit; at 15° or 36°, where cos 2θ is a quadratic irrational, decimal
+// figures exactly on a boundary exist and are not recognised).
 #include <optional>
 
 #include "geometry/decimal.h"

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "geometry/quadratic.h"
 #include "geometry/turned_written.h"
 
 using namespace epure::geo;
@@ -105,4 +106,36 @@ TEST_CASE("turned rectangle at a quarter turn: corners and sides as written") {
   CHECK(above.hit->t > 0);
   const auto below = rectangle(line(p("0.7", "0.49999999999999999999"), p("0", "-1"), p("0.7", "0.2"), "0.3", "0.1", "90"));
   CHECK(below.inside);
+}
+
+TEST_CASE("turned ellipse at multiples of 30° and 45°: exact in Q(√3) and Q(√2)") {
+  // radii (7, 28) turned by 30°: x'²(3b² + a²)/4 = a²b² at x' = 8 along the world's x-axis, so
+  // A = C + (8, 0) is on it (1 + 3·16 = 49 = 7²)
+  const auto in = ellipse(line(p("8", "0"), p("-1", "0.3"), p("0", "0"), "7", "28", "30"));
+  CHECK_FALSE(in.inside);
+  REQUIRE(in.hit);
+  CHECK(in.hit->t == 0);
+  CHECK_FALSE(ellipse(line(p("8", "0"), p("1", "0.3"), p("0", "0"), "7", "28", "390")).hit);  // heading out
+  CHECK(ellipse(line(p("7.99999999999999999999", "0"), p("1", "0.3"), p("0", "0"), "7", "28", "-330")).inside);
+  CHECK_FALSE(ellipse(line(p("8.00000000000000000001", "0"), p("1", "0.3"), p("0", "0"), "7", "28", "30")).hit);
+  // 60°: the same with the radii swapped
+  CHECK_FALSE(ellipse(line(p("8", "0"), p("-1", "0.3"), p("0", "0"), "28", "7", "60")).inside);
+  // 45°: b²(x + y)²/2 + a²(y − x)²/2 = a²b², which (x, y) = (1, 6), a = 5, b = 25 satisfy
+  // (625·49/2 + 25·25/2 = 15,625); heading in along −(1, 1), it hits at t = 0
+  const auto diagonal = ellipse(line(p("1", "6"), p("-0.1", "-0.1"), p("0", "0"), "5", "25", "45"));
+  CHECK_FALSE(diagonal.inside);
+  REQUIRE(diagonal.hit);
+  CHECK(diagonal.hit->t == 0);
+}
+
+TEST_CASE("quadratic numbers: exact signs of p + q√K") {
+  using exact::Quadratic;
+  const auto q2 = [](double p, double q) { return Quadratic<2>{exact::exact_value(p), exact::exact_value(q)}; };
+  CHECK(q2(1.4142135623730951, -1).sign() == 1);  // the double above √2
+  CHECK(q2(-1.4142135623730951, 1).sign() == -1);
+  CHECK(q2(1.4142135623730950, -1).sign() == -1);  // the one below
+  CHECK(q2(0, 0).sign() == 0);
+  const auto half = q2(0, 0.5);
+  CHECK((half * half - q2(0.5, 0)).sign() == 0);  // (½√2)² = ½ exactly
+  CHECK((half * half).value() == 0.5);
 }
