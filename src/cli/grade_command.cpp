@@ -45,6 +45,7 @@ struct GradeCliOptions {
   std::string report;
   std::string json;
   std::string feedback;
+  std::string crops;
   std::string histogram;
   std::string language;
   std::string delimiter;
@@ -201,7 +202,14 @@ int run_grade(const GradeCliOptions& o) {
     session.add_sink(*json);
   }
   if (!o.feedback.empty()) {
-    sheets.emplace(o.feedback, *key, text, scale);
+    // scan --crops writes them beside its answers.json: found there without a flag
+    std::filesystem::path crops = o.crops;
+    if (crops.empty()) {
+      const auto beside = std::filesystem::path(o.answers).parent_path() / "crops";
+      std::error_code ec;
+      if (std::filesystem::is_directory(beside, ec)) crops = beside;
+    }
+    sheets.emplace(o.feedback, *key, text, scale, grading::ScannedCrops(crops));
     session.add_sink(*sheets);
   }
   if (!o.class_report.empty()) {
@@ -244,6 +252,10 @@ void add_grade_command(CLI::App& app, int& status) {
   cmd->add_option("--report,-r", o->report, "Write one CSV row per submission: sheet, student, score, max, points per question");
   cmd->add_option("--json", o->json, "Write every mark as JSON: expected, given, verdict, points, feedback, mistake code");
   cmd->add_option("--feedback", o->feedback, "Write a feedback sheet per student (<id>.svg and <id>.pdf) and class.svg into this directory");
+  cmd->add_option("--crops", o->crops,
+                  "The scanned fields' crops (epure scan --crops writes DIR/crops): each feedback line shows what was read; "
+                  "default: the crops directory beside --answers, if there is one")
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--histogram", o->histogram, "Write the class's score histogram (SVG)");
   auto* ft = cmd->add_flag("--follow-through", o->follow_through, "Credit answers right from a wrong earlier answer (overrides the spec)");
   auto* nft = cmd->add_flag("--no-follow-through", o->no_follow_through, "Do not credit follow-through (overrides the spec)");

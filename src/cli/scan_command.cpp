@@ -31,6 +31,7 @@ struct ScanCliOptions {
   std::string corrections;
   int jobs = 0;
   int dpi = 200;
+  bool crops = false;
   bool quiet = false;
 };
 
@@ -80,9 +81,11 @@ int run_scan(const ScanCliOptions& o) {
   scan::ScanOptions options;
   options.jobs = o.jobs;
   options.render_dpi = o.dpi;
+  options.all_crops = o.crops;
   scan::ScanResult result = scan::scan_inputs(o.inputs, layout, options, scan::DigitClassifier::builtin());
   result.problems.insert(result.problems.end(), correction_problems.begin(), correction_problems.end());
   if (corrections) scan::apply_corrections(result, *corrections, texts);
+  if (o.crops) scan::write_crops(o.out, result);  // its problems are said below with the others
   scan::write_scan_outputs(o.out, result, layout);
 
   int status = 0;
@@ -127,6 +130,9 @@ void add_scan_command(CLI::App& app, int& status) {
   cmd->add_option("--corrections", opts->corrections, "A corrections file (saved from review.html; the one epure grade --corrections reads)")->check(CLI::ExistingFile);
   cmd->add_option("--jobs", opts->jobs, "Threads reading pages (0: every core)")->check(CLI::Range(0, 256));
   cmd->add_option("--dpi", opts->dpi, "Resolution at which PDF pages without one embedded image are rendered")->check(CLI::Range(72, 600));
+  cmd->add_flag("--crops", opts->crops,
+                "Also write every field as scanned into OUT/crops/<sheet>/<question>.png: epure grade's feedback sheets "
+                "show each under its question, so a student sees what was read");
   cmd->add_flag("-q,--quiet", opts->quiet, "No summary on standard output");
   cmd->callback([opts, &status] { status = run_reporting("scan", [&] { return run_scan(*opts); }); });
 }

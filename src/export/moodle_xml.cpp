@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/markup_escape.h"
+#include "support/base64.h"
 
 namespace epure::exporting {
 
@@ -21,21 +22,6 @@ constexpr std::string_view kGrades[] = {"100",      "90", "83.33333", "80",     
 // answer, which would otherwise show the answer's length (R/exams' exams2moodle adds such an
 // answer for the same reason).
 constexpr std::string_view kWideWrong = "%0%999999999999999999999999:0";
-
-std::string base64(std::string_view bytes) {
-  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const auto b = [&](std::size_t k) { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0u; };
-    const unsigned v = (b(i) << 16) | (b(i + 1) << 8) | b(i + 2);
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
-  }
-  return out;
-}
 
 // Statement text in the question text: outside a part the importer reads nothing, but a brace
 // is written as an entity all the same, so that no text can ever look like a part.

@@ -76,7 +76,7 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
 }
 
 render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
-                                   KeyDiagrams* diagrams, const MarkScale& scale) {
+                                   KeyDiagrams* diagrams, const MarkScale& scale, const ScannedCrops* crops) {
   const Texts& T = text.texts();
   render::Document doc;
   doc.title = T.format("grading.sheet.title", {{"title", key.info.title}});
@@ -150,15 +150,18 @@ render::Document feedback_document(const Submission& s, const AnswerKey& key, co
       answer += fmt::format("  ({}/{})", text.points(m.points), text.points(qk.points));
       if (!right) answer += fmt::format(" — {} {}", T.get("grading.sheet.expected"), text.expected(qk));
       if (const std::string why = text.explanation(qk, m); !why.empty()) answer += (right ? " — " : ". ") + why;
-      section.add(render::AnswerLine{qk.id, prompt, answer});
+      render::AnswerLine line{qk.id, prompt, answer};
+      if (crops && s.sheet) line.shown = crops->crop(s.sheet->id, qk.id);
+      section.add(std::move(line));
     }
     doc.sections.push_back(std::move(section));
   }
   return doc;
 }
 
-FeedbackSheets::FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale)
-    : dir_(std::move(dir)), key_(key), text_(text), scale_(scale), diagrams_(key, text.texts().language()),
+FeedbackSheets::FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale,
+                               ScannedCrops crops)
+    : dir_(std::move(dir)), key_(key), text_(text), scale_(scale), diagrams_(key, text.texts().language()), crops_(std::move(crops)),
       pdf_date_(render::source_date_epoch()) {
   std::filesystem::create_directories(dir_);
 }
@@ -168,7 +171,7 @@ void FeedbackSheets::submission(const Submission& s) {
   if (!s.marked()) name = fmt::format("line{}", s.line);
   else if (s.flagged("duplicate")) name = fmt::format("{}-line{}", s.sheet->id, s.line);
   else name = s.sheet->id;
-  const render::Document doc = feedback_document(s, key_, text_, &diagrams_, scale_);
+  const render::Document doc = feedback_document(s, key_, text_, &diagrams_, scale_, crops_.any() ? &crops_ : nullptr);
   // Laid out once, drawn twice: the SVG for a screen, the PDF to print or hand back.
   const std::vector<render::LaidOutPage> pages = render::layout_document(doc);
   output::write_file_atomically(dir_ / (name + ".svg"), render::pages_to_svg(pages, doc));

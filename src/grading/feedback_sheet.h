@@ -13,14 +13,16 @@
 #include "grading/feedback_text.h"
 #include "grading/key_diagrams.h"
 #include "grading/mark_scale.h"
+#include "grading/scanned_crops.h"
 #include "grading/submission.h"
 #include "render/document.h"
 
 namespace epure::grading {
 
 // The marked sheet of one submission, as a document (separate from the files, for tests).
+// `crops`: the scanned fields (epure scan --crops), each drawn under its question's prompt.
 render::Document feedback_document(const Submission& s, const AnswerKey& key, const FeedbackText& text,
-                                   KeyDiagrams* diagrams, const MarkScale& scale);
+                                   KeyDiagrams* diagrams, const MarkScale& scale, const ScannedCrops* crops = nullptr);
 
 // Grows a panel's view to hold p (a student's point) when it is near enough to be drawn in the
 // same frame (within twice the view's size); false, and the view unchanged, when it is not.
@@ -32,7 +34,8 @@ void overlay_answers(render::Scene& scene, const ExerciseKey& ex, const Exercise
 
 class FeedbackSheets final : public SubmissionSink {
  public:
-  FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale);
+  FeedbackSheets(std::filesystem::path dir, const AnswerKey& key, const FeedbackText& text, MarkScale scale,
+                 ScannedCrops crops = ScannedCrops({}));
   void submission(const Submission& s) override;
   void finish(const ClassStatistics& stats, const Outcome& outcome) override;
   int written() const { return written_; }
@@ -43,6 +46,7 @@ class FeedbackSheets final : public SubmissionSink {
   const FeedbackText& text_;
   MarkScale scale_;
   KeyDiagrams diagrams_;
+  ScannedCrops crops_;
   std::optional<std::int64_t> pdf_date_;  // SOURCE_DATE_EPOCH, read once
   int written_ = 0;
 };

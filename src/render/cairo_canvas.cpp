@@ -2,6 +2,8 @@
 
 #include <pango/pangocairo.h>
 
+#include <cstring>
+
 #include <fmt/format.h>
 
 #include "render/font_metrics.h"
@@ -101,6 +103,45 @@ void CairoCanvas::path(const Path& path, const Paint& paint) {
   if (path.empty()) return;
   trace(cr_, path);
   fill_and_stroke(paint);
+}
+
+namespace {
+
+// cairo reads a PNG through a callback: this one from bytes in memory.
+struct PngBytes {
+  const std::string* bytes;
+  std::size_t at = 0;
+};
+
+cairo_status_t read_png_bytes(void* closure, unsigned char* data, unsigned int length) {
+  auto* in = static_cast<PngBytes*>(closure);
+  if (in->bytes->size() - in->at < length) return CAIRO_STATUS_READ_ERROR;
+  std::memcpy(data, in->bytes->data() + in->at, length);
+  in->at += length;
+  return CAIRO_STATUS_SUCCESS;
+}
+
+}  // namespace
+
+// Bytes cairo cannot decode draw nothing: the crop is an aid beside the verdict, and a page is
+// not lost for it (the reader, support/png_size.h, has already refused what is not a PNG).
+void CairoCanvas::image(const Raster& raster, const Box& box) {
+  if (raster.empty()) return;
+  PngBytes in{raster.png.get()};
+  cairo_surface_t* png = cairo_image_surface_create_from_png_stream(read_png_bytes, &in);
+  if (cairo_surface_status(png) == CAIRO_STATUS_SUCCESS) {
+    const int w = cairo_image_surface_get_width(png), h = cairo_image_surface_get_height(png);
+    if (w > 0 && h > 0) {
+      cairo_save(cr_);
+      cairo_translate(cr_, box.x_min, box.y_min);
+      cairo_scale(cr_, box.width() / w, box.height() / h);
+      cairo_set_source_surface(cr_, png, 0, 0);
+      cairo_pattern_set_filter(cairo_get_source(cr_), CAIRO_FILTER_GOOD);
+      cairo_paint(cr_);
+      cairo_restore(cr_);
+    }
+  }
+  cairo_surface_destroy(png);
 }
 
 void CairoCanvas::disc(P2 centre, double radius, const Paint& paint) {

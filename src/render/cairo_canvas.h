@@ -40,6 +40,7 @@ class CairoCanvas final : public Canvas {
   void path(const Path& path, const Paint& paint) override;
   void disc(P2 centre, double radius, const Paint& paint) override;
   void text(const TextLine& line) override;
+  void image(const Raster& raster, const Box& box) override;
 
   // The advance width pango sets `run` at, `size` points: font_metrics.h's widths must be these
   // (the tests compare them), or the PDF's text would not be where layout measured it.

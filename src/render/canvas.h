@@ -86,6 +86,8 @@ class Canvas {
   virtual void path(const Path& path, const Paint& paint) = 0;
   virtual void disc(P2 centre, double radius, const Paint& paint) = 0;
   virtual void text(const TextLine& line) = 0;
+  // The raster's pixels scaled into `box` (page coordinates).
+  virtual void image(const Raster& raster, const Box& box) = 0;
 };
 
 }  // namespace epure::render

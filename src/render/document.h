@@ -45,6 +45,9 @@ struct AnswerLine {
   std::string question_id;
   RichText prompt;
   RichText answer;  // "≈ 2.17 (exact: 5 − 2√2)"
+  // What was read for it, drawn under the prompt (a feedback sheet's crop of the scanned
+  // field, so that a student sees why a 7 was read as 1); empty: none.
+  Raster shown{};
 };
 
 struct Figure {

@@ -21,6 +21,10 @@ constexpr double kStackIndent = 12;
 // Wider than any line a page holds: what wrapping gives for this width is the text's own lines
 // (only its '\n' break it).
 constexpr double kUnbounded = 1e9;
+// A crop of what was read (AnswerLine::shown) is set two lines high, or as high as it was on
+// paper (a column of tick boxes) up to four.
+constexpr double kShownLines = 2;
+constexpr double kShownMaxLines = 4;
 
 // A comb's width: its sign cell, integer and decimal cells, and the separator's gap.
 double comb_width(const LayoutStyle& s, const AnswerField& f) {
@@ -329,7 +333,25 @@ void SectionAtoms::answer_line(int si, int bi, const AnswerLine& l, bool follows
                    size, Ink::answer);
   }
   if (id_w > 0) a.content.text_right(std::move(id), right_, y, s_.id_size, Ink::muted);
-  a.height = static_cast<double>(std::max<std::size_t>({rows, answer_rows, 1})) * body_line_ + 2 * pad;
+  double text_h = static_cast<double>(std::max<std::size_t>({rows, answer_rows, 1})) * body_line_;
+  if (!l.shown.empty()) {
+    // What was read, two lines high (large enough to tell a 7 from a 1), under the prompt; one
+    // too wide for the prompt's column (a row of tick boxes) goes under the whole row, with
+    // the row's width, and so does every crop when the answer is set under the prompt.
+    const double gap = 0.25 * body_line_;
+    double h = std::clamp(l.shown.natural_height_pt, kShownLines * body_line_, kShownMaxLines * body_line_);
+    double w = h * l.shown.width_px / l.shown.height_px;
+    const bool under_row = stacked || w > prompt_w;
+    if (const double room = under_row ? right_ - left_ - id_room : prompt_w; w > room) {
+      w = room;
+      h = w * l.shown.height_px / l.shown.width_px;
+    }
+    const std::size_t above = under_row ? std::max<std::size_t>({rows, answer_rows, 1}) : std::max<std::size_t>(rows, 1);
+    const double top = pad + static_cast<double>(above) * body_line_ + gap;
+    a.content.image({{left_, top, w, h}, l.shown});
+    text_h = std::max(text_h, top - pad + h);
+  }
+  a.height = text_h + 2 * pad;
   // A table: a rule above the first row and under every row.
   if (!follows_line) a.content.rules.push_back({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
   a.content.rules.push_back({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});

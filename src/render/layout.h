@@ -111,6 +111,12 @@ struct PlacedQr {
   QrCode code;
 };
 
+// A raster image in its rectangle (a scanned answer's crop).
+struct PlacedImage {
+  PageRect rect;
+  Raster raster;
+};
+
 // Where a block (or its part on this page) sits; section and block index the Document, -1 for
 // the page furniture (header, name fields, the note under them).
 struct PlacedBlock {
@@ -129,6 +135,7 @@ struct LaidOutPage {
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
   std::vector<PlacedQr> codes;
+  std::vector<PlacedImage> images;
   std::vector<PlacedBlock> blocks;
   // The corner marks (solid squares) a scan registers the page on: top-left, top-right,
   // bottom-right, bottom-left; empty for a page without scan furniture.

@@ -41,6 +41,7 @@ struct Fragment {
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
   std::vector<PlacedQr> codes;
+  std::vector<PlacedImage> images;
   // A layout option only measured (its height, whether it fits a column) keeps no text: the
   // options tried for a figure and its neighbours would otherwise copy every run of every line
   // again for each one. What the fit test needs of the texts is kept as two extents.
@@ -49,6 +50,10 @@ struct Fragment {
   double text_right_edge = -1e300;  // the right end of the furthest text that is not muted
   double muted_left = 1e300;        // the left end of the first muted text (a question id)
   double box_right_edge = -1e300;   // the right end of the furthest box
+
+  void image(PlacedImage i) {
+    if (keep_texts) images.push_back(std::move(i));
+  }
 
   void box(PlacedBox b) {
     box_right_edge = std::max(box_right_edge, b.rect.right());
@@ -101,6 +106,10 @@ struct Fragment {
       t.baseline.y += dy;
       texts.push_back(std::move(t));
     }
+    for (auto& i : other.images) {
+      i.rect.y += dy;
+      images.push_back(std::move(i));
+    }
     text_right_edge = std::max(text_right_edge, other.text_right_edge);
     box_right_edge = std::max(box_right_edge, other.box_right_edge);
     muted_left = std::min(muted_left, other.muted_left);
@@ -127,6 +136,10 @@ struct Fragment {
     for (auto& q : codes) {
       q.rect.y += dy;
       page.codes.push_back(std::move(q));
+    }
+    for (auto& i : images) {
+      i.rect.y += dy;
+      page.images.push_back(std::move(i));
     }
   }
 };

@@ -110,6 +110,12 @@ void paint_page(Canvas& canvas, const LaidOutPage& page, const PageStyle& style)
     for (const PageRect& m : page.marks) canvas.path(rectangle(m), Paint{std::nullopt, style.ink(Ink::text), 1});
     canvas.end_group();
   }
+  if (!page.images.empty()) {
+    canvas.begin_group("images");
+    for (const PlacedImage& i : page.images)
+      canvas.image(i.raster, Box{i.rect.x, i.rect.y, i.rect.right(), i.rect.bottom()});
+    canvas.end_group();
+  }
   for (const PlacedQr& q : page.codes) {
     canvas.begin_group("qr-code");
     paint_qr(canvas, q, style);

@@ -4,6 +4,7 @@
 // Exercises build Scenes; backends draw them. Every drawable says what it *is* (a data point, a
 // construction line, a result), through its Role; the backend's style sheet turns roles into
 // colour, stroke width and dash pattern, so that a sheet stays legible in grayscale print.
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -129,6 +130,16 @@ struct Box {
   double x_min = 0, y_min = 0, x_max = 1, y_max = 1;
   double width() const { return x_max - x_min; }
   double height() const { return y_max - y_min; }
+};
+
+// A raster image as PNG bytes (a scanned answer's crop on a feedback sheet), with its size in
+// pixels: the backends embed the bytes as they are, scaled into the rectangle they are given.
+// Shared, so that the layout's copies of a row (replays, options tried) do not copy the bytes.
+struct Raster {
+  std::shared_ptr<const std::string> png;
+  int width_px = 0, height_px = 0;
+  double natural_height_pt = 0;  // its height where it was taken (a field on the printed page); 0: unknown
+  bool empty() const { return !png || png->empty() || width_px <= 0 || height_px <= 0; }
 };
 
 // One framed drawing with its own coordinate system.

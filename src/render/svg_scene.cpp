@@ -2,6 +2,8 @@
 
 #include <string_view>
 
+#include "support/base64.h"
+
 namespace epure::render {
 namespace {
 
@@ -102,6 +104,19 @@ void SvgCanvas::disc(P2 centre, double radius, const Paint& paint) {
   w_.attribute("cy", centre.y);
   w_.attribute("r", radius);
   paint_attributes(paint);
+  w_.close_empty();
+}
+
+// The PNG inline as a data: URI, so that a page stays one file that opens offline.
+void SvgCanvas::image(const Raster& raster, const Box& box) {
+  if (raster.empty()) return;
+  w_.open("image");
+  w_.attribute("x", box.x_min);
+  w_.attribute("y", box.y_min);
+  w_.attribute("width", box.width());
+  w_.attribute("height", box.height());
+  w_.attribute("preserveAspectRatio", "none");
+  w_.plain_attribute("href", "data:image/png;base64," + base64(*raster.png));
   w_.close_empty();
 }
 

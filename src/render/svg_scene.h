@@ -27,6 +27,7 @@ class SvgCanvas final : public Canvas {
   void path(const Path& path, const Paint& paint) override;
   void disc(P2 centre, double radius, const Paint& paint) override;
   void text(const TextLine& line) override;
+  void image(const Raster& raster, const Box& box) override;
 
  private:
   void paint_attributes(const Paint& paint);

@@ -9,6 +9,8 @@
 #include "exercises/texts.h"
 #include "output/atomic_file.h"
 #include "render/markup_escape.h"
+#include "support/base64.h"
+#include "support/safe_file_name.h"
 
 namespace epure::scan {
 
@@ -24,21 +26,6 @@ std::string csv_cell(std::string_view s, char delimiter) {
     out += c;
   }
   return out + "\"";
-}
-
-std::string base64(std::string_view bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const auto b = [&](std::size_t k) { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0u; };
-    const unsigned v = b(i) << 16 | b(i + 1) << 8 | b(i + 2);
-    out += kDigits[v >> 18 & 63];
-    out += kDigits[v >> 12 & 63];
-    out += i + 1 < bytes.size() ? kDigits[v >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? kDigits[v & 63] : '=';
-  }
-  return out;
 }
 
 // A value `epure grade` marks: read for sure, or settled by a correction.
@@ -166,6 +153,22 @@ std::string review_html(const ScanResult& result, const SetLayout& layout) {
   replace_all(page, "{{SAVE}}", render::markup_escaped(t.get("scan.save")));
   replace_all(page, "{{DATA}}", data);
   return page;
+}
+
+std::size_t write_crops(const std::filesystem::path& dir, ScanResult& result) {
+  std::size_t written = 0;
+  for (const auto& [id, s] : result.sheets)
+    for (const auto& [q, f] : s.fields) {
+      if (f.crop_png.empty() || q == "student_number") continue;
+      if (!safe_file_name(id) || !safe_file_name(q)) {
+        result.problems.push_back(fmt::format("sheet {}: field {}: its id cannot be a file name: no crop written", id, q));
+        continue;
+      }
+      std::filesystem::create_directories(dir / "crops" / id);
+      output::write_file_atomically(dir / "crops" / id / (q + ".png"), f.crop_png);
+      ++written;
+    }
+  return written;
 }
 
 void write_scan_outputs(const std::filesystem::path& dir, const ScanResult& result, const SetLayout& layout) {

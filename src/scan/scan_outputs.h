@@ -8,6 +8,8 @@
 //   fields.csv                 every field: its status (read, blank, review, corrected), value,
 //                              confidence, each cell's character or each box's state, and why
 //   review.html                every field to review, with its crop (one offline page)
+//   crops/<sheet>/<question>.png  with --crops: every field as scanned (the feedback sheets of
+//                              `epure grade` show each under its question)
 #include <filesystem>
 #include <string>
 
@@ -25,6 +27,11 @@ std::string review_html(const ScanResult& result, const SetLayout& layout);
 
 // Every file above into `dir` (created if needed).
 void write_scan_outputs(const std::filesystem::path& dir, const ScanResult& result, const SetLayout& layout);
+
+// Every field's crop into dir/crops/<sheet id>/<question id>.png (ScanOptions::all_crops kept
+// them); a field whose id cannot be a file name is left out and said in the result's problems.
+// Returns how many were written.
+std::size_t write_crops(const std::filesystem::path& dir, ScanResult& result);
 
 // Fields sent to review and not settled by a correction.
 std::size_t fields_to_review(const ScanResult& result);

@@ -25,7 +25,7 @@ struct PageOutcome {
   std::vector<FieldResult> fields;
 };
 
-constexpr double kCropScale = 3.0;  // review crops: 3 pixels per point (216 dpi)
+constexpr double kCropScale = 3.0;  // crops: 3 pixels per point (216 dpi; grading/scanned_crops.h reads them so)
 
 PageOutcome read_page(InputPage in, const SetLayout& layout, const PageFrame& frame, const ScanOptions& options,
                       const DigitClassifier& net) {

@@ -106,7 +106,7 @@ for r in csv.DictReader(open(sys.argv[2])):
         out.append({"sheet": r["sheet"], "question": r["question"], "value": v, "note": "suite"})
 print(json.dumps({"format": "epure-corrections", "version": 1, "corrections": out}))
 PY
-"$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out2" --corrections "$tmp/corrections.json" -q 2>"$tmp/scan2.err"
+"$EPURE" scan "$d"/scan* --key "$key" --layout "$d/layout.json" --out "$d/out2" --corrections "$tmp/corrections.json" --crops -q 2>"$tmp/scan2.err"
 silent1=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['silent'])" "$d/figures.json")
 python3 "$tools/scan_figures.py" "$d/truth.json" "$d/out2" --check --max-silent "$max_silent" --max-review 0 >"$tmp/c.json" 2>"$tmp/c.err" &&
   [ "$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['silent'])" "$tmp/c.json")" = "$silent1" ] &&
@@ -122,7 +122,34 @@ scanned = {(r["sheet"], r["question"]) for r in csv.DictReader(open(sys.argv[2])
 print(json.dumps([{"sheet": s, "answers": {q: v for q, v in t["answers"].items() if (s, q) in scanned}} for s, t in truth.items()]))
 PY
 "$EPURE" grade --key "$key" --answers "$tmp/written.json" --json "$tmp/marks_written.json" -q 2>"$tmp/grade1.err"
-"$EPURE" grade --key "$key" --answers "$d/out2/answers.json" --corrections "$tmp/corrections.json" --json "$tmp/marks_scanned.json" -q 2>"$tmp/grade2.err"
+"$EPURE" grade --key "$key" --answers "$d/out2/answers.json" --corrections "$tmp/corrections.json" --json "$tmp/marks_scanned.json" --feedback "$tmp/fb" -q 2>"$tmp/grade2.err"
+# --crops: every field of every page read has its crop; grade finds them beside answers.json
+# and each feedback sheet shows them (SVG: inline PNGs; PDF: image objects), one per question
+# scanned on that sheet
+python3 - "$d/out2" "$tmp/fb" <<'PY' && ok "crops: every field read has its crop, and the feedback sheets show one under each question scanned" || fail=1
+import csv, os, re, subprocess, sys
+out, fb = sys.argv[1], sys.argv[2]
+fields = [r for r in csv.DictReader(open(os.path.join(out, "fields.csv"))) if r["question"] != "student_number"]
+missing = [(r["sheet"], r["question"]) for r in fields if not os.path.isfile(os.path.join(out, "crops", r["sheet"], r["question"] + ".png"))]
+if not fields or missing:
+    print(f"FAIL crops: {len(missing)} of {len(fields)} fields without a crop: {missing[:5]}")
+    sys.exit(1)
+per_sheet = {}
+for r in fields:
+    per_sheet[r["sheet"]] = per_sheet.get(r["sheet"], 0) + 1
+problems = []
+for sheet, n in per_sheet.items():
+    svg = open(os.path.join(fb, sheet + ".svg")).read()
+    images = len(re.findall(r'<image [^>]*href="data:image/png;base64,', svg))
+    listed = subprocess.run(["pdfimages", "-list", os.path.join(fb, sheet + ".pdf")], capture_output=True, text=True).stdout
+    in_pdf = max(0, len(listed.strip().splitlines()) - 2)
+    # the crops of questions the sheet's branch does not ask have no feedback line
+    if not (0 < images <= n and images == in_pdf):
+        problems.append((sheet, n, images, in_pdf))
+if problems:
+    print(f"FAIL crops: feedback sheets (sheet, fields scanned, SVG images, PDF images): {problems[:5]}")
+    sys.exit(1)
+PY
 python3 - "$tmp/marks_written.json" "$tmp/marks_scanned.json" "$tmp/c.json" "$key" <<'PY' && ok "the loop: scanned and corrected, every sheet gets the written answers' marks (but where a silent error is)" || fail=1
 import json, sys
 subs = lambda f: {s["sheet"]: s for s in json.load(open(f))["submissions"]}

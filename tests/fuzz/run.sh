@@ -13,7 +13,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 build=${EPURE_FUZZ_BUILD:-$root/build-fuzz}
-targets=(solve spec key answers_csv answers_json expression sheet_id submission sheet_tag harness_protocol corrections roster scan_image scan_layout)
+targets=(solve spec key answers_csv answers_json expression sheet_id submission sheet_tag harness_protocol corrections roster scan_image scan_layout scan_crop)
 # bounds for every run: a hang is a crash after 10 s, an input that needs 2 GiB one too
 common=(-timeout=10 -rss_limit_mb=2048 -print_final_stats=1)
 

@@ -41,6 +41,7 @@ struct TypeBoxCanvas final : Canvas {
   void pop_clip() override {}
   void path(const Path&, const Paint&) override {}
   void disc(P2, double, const Paint&) override {}
+  void image(const Raster&, const Box&) override {}
   void text(const TextLine& line) override {
     const double width = text_width(line.runs, line.size);
     double x0 = line.at.x;

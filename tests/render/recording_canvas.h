@@ -32,6 +32,7 @@ struct RecordingCanvas final : render::Canvas {
   std::vector<Stroke> strokes;  // stroked paths and filled outlines, cubics sampled
   std::vector<Disc> discs;
   std::vector<Text> texts;
+  std::vector<render::Box> images;  // where each raster was drawn
   int clips = 0;
 
   std::string group() const { return groups.empty() ? std::string() : groups.back(); }
@@ -95,6 +96,8 @@ struct RecordingCanvas final : render::Canvas {
     for (const auto& r : line.runs) s += r.text;
     texts.push_back({{x0, line.at.y - e.ascent, x0 + e.width, line.at.y + e.descent}, s, group()});
   }
+
+  void image(const render::Raster&, const render::Box& box) override { images.push_back(box); }
 };
 
 }  // namespace epure::test
