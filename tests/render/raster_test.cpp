@@ -22,13 +22,13 @@ namespace {
 
 const std::string& kPng = test::kTinyPng;
 
-Document answers(bool with_crop) {
+Document answers(bool with_crop, const std::string& prompt = "t =") {
   Document doc;
   doc.title = "feedback";
   Section s;
   s.add(Heading{"Exercise 1", 1});
   for (int q = 0; q < 3; ++q) {
-    AnswerLine line{"1.t" + std::to_string(q), "t =", "✓ 1.25  (1/1)"};
+    AnswerLine line{"1.t" + std::to_string(q), prompt, "✓ 1.25  (1/1)"};
     if (with_crop && q == 1) line.shown = Raster{std::make_shared<const std::string>(kPng), 4, 2};
     s.add(std::move(line));
   }
@@ -51,34 +51,42 @@ TEST_CASE("a PNG's size from its header; bytes that are not a PNG have none") {
   CHECK(base64("epure") == "ZXB1cmU=");
 }
 
-TEST_CASE("a crop is laid out under its prompt, in the prompt's column and its own row") {
-  const auto plain = layout_document(answers(false));
-  const auto pages = layout_document(answers(true));
+// The row's texts (prompt, answer) above the crop, the next row's below it; the crop in the
+// prompt's column (left of the answers) when it fits there, else under the whole row.
+void check_crop_row(const std::string& prompt_text, bool in_prompt_column) {
+  CAPTURE(prompt_text);
+  const auto plain = layout_document(answers(false, prompt_text));
+  const auto pages = layout_document(answers(true, prompt_text));
   REQUIRE(pages.size() == 1);
   REQUIRE(pages[0].images.size() == 1);
   CHECK(plain[0].images.empty());
   const PlacedImage& image = pages[0].images[0];
-  // as wide as its pixels say for its height (4 : 2), two lines high at most
+  // as wide as its pixels say for its height (4 : 2), two lines high
   CHECK(image.rect.width == doctest::Approx(2 * image.rect.height));
   CHECK(image.rect.height <= 2 * 14.0);
-  // under the prompt "t =" of the second row, above the third row's texts, left of the answers
   const PlacedText* prompt = nullptr;
   const PlacedText* answer = nullptr;
   double next_row = 1e300;
   for (const auto& t : pages[0].texts) {
     if (t.runs.empty()) continue;
     const double y = t.baseline.y;
-    if (t.runs[0].text == "t =" && y < image.rect.y && (!prompt || y > prompt->baseline.y)) prompt = &t;
+    const bool is_prompt = t.runs[0].text == prompt_text.substr(0, t.runs[0].text.size()) && t.ink == Ink::text;
+    if (is_prompt && y < image.rect.y && (!prompt || y > prompt->baseline.y)) prompt = &t;
     if (t.ink == Ink::answer && y < image.rect.y && (!answer || y > answer->baseline.y)) answer = &t;
-    if (t.runs[0].text == "t =" && y > image.rect.bottom()) next_row = std::min(next_row, y);
+    if (is_prompt && y > image.rect.bottom()) next_row = std::min(next_row, y);
   }
   REQUIRE(prompt);
   REQUIRE(answer);
   CHECK(image.rect.x == doctest::Approx(prompt->baseline.x));
-  CHECK(image.rect.right() < answer->baseline.x);
-  CHECK(next_row < 1e300);
+  CHECK(image.rect.y > prompt->baseline.y + 2);  // below the prompt's descenders
+  if (in_prompt_column) {
+    CHECK(image.rect.right() < answer->baseline.x);
+  } else {
+    CHECK(image.rect.y > answer->baseline.y + 2);
+  }
+  REQUIRE(next_row < 1e300);
   CHECK(next_row - 10 > image.rect.bottom());  // the next row's text (10 pt) starts below it
-  // the row grew by the crop: the page with it is longer by about its height
+  // the row grew by the crop
   double last_plain = 0, last = 0;
   for (const auto& r : plain[0].rules) last_plain = std::max(last_plain, r.a.y);
   for (const auto& r : pages[0].rules) last = std::max(last, r.a.y);
@@ -90,6 +98,11 @@ TEST_CASE("a crop is laid out under its prompt, in the prompt's column and its o
   REQUIRE(canvas.images.size() == 1);
   CHECK(canvas.images[0].x_min == doctest::Approx(image.rect.x));
   CHECK(canvas.images[0].y_max == doctest::Approx(image.rect.bottom()));
+}
+
+TEST_CASE("a crop is laid out under its prompt, in the prompt's column or under the whole row") {
+  check_crop_row("the parameter t of the point P on the line =", true);
+  check_crop_row("t =", false);  // a column too narrow for it
 }
 
 TEST_CASE("a crop in SVG is the PNG inline; in PDF an image object") {
