@@ -4,7 +4,8 @@
 // reads one cell's crop as a digit 0-9, a minus sign or an empty cell.
 //
 // The forward pass is written here (about a hundred lines) rather than run by OpenCV's dnn
-// module: the network is tiny (61,000 weights, 2 M multiply-adds a cell), dnn would bring
+// module: the network is small (conv 32, 64, 128 channels, 128 hidden units: 241,804 weights,
+// 7.6 M multiply-adds a cell, batch norm folded into the convolutions), dnn would bring
 // protobuf and a model-format exporter for it, and its kernels are chosen per CPU (SIMD widths,
 // Winograd), so the same crop could give other bits on another machine. Here every sum runs in
 // one fixed order in float with no contraction (-ffp-contract=off): the same crop gives the same
@@ -33,10 +34,20 @@ struct CellReading {
 // The character a class stands for: '0'-'9', '-', or ' ' for empty.
 char class_char(CellClass c);
 
+// The network's widths, as the weights file declares them: three 3x3 convolutions (each followed
+// by ReLU and a 2x2 max pool: 28 -> 14 -> 7 -> 3), a hidden layer, the 12 classes.
+struct NetShape {
+  std::uint32_t conv1 = 0, conv2 = 0, conv3 = 0, hidden = 0;
+};
+
 class DigitClassifier {
  public:
-  // The weights file's bytes ("EPDG", version 1, count, float32 little endian); throws
-  // std::runtime_error when they are not a version-1 weights file of the right size.
+  // The weights file's bytes: "EPDG", u32 version 2, u32 count, u32 conv1, conv2, conv3 and hidden
+  // widths, then count float32 (all little endian): conv1 weights (conv1 x 1 x 3 x 3) and biases,
+  // conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's (hidden x conv3·9), fc2's (12 x hidden).
+  // Throws std::runtime_error when they are not a version-2 weights file whose size is its
+  // network's (version 1, the first network's 16-32-64-64 with no widths in the header, is no
+  // longer read: train_digits.py writes version 2).
   explicit DigitClassifier(std::string_view weights);
   // The network epure carries (classifier/digits.weights, compiled in).
   static const DigitClassifier& builtin();
@@ -45,7 +56,10 @@ class DigitClassifier {
   // The network's raw outputs (before the softmax), for the test against train_digits.py.
   std::array<float, kClassCount> logits(const CellCrop& crop) const;
 
+  NetShape shape() const { return shape_; }
+
  private:
+  NetShape shape_;
   std::vector<float> w_;  // every layer's weights and biases, in the file's order
   std::size_t conv1_w_, conv1_b_, conv2_w_, conv2_b_, conv3_w_, conv3_b_, fc1_w_, fc1_b_, fc2_w_, fc2_b_;
 };

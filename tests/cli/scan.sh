@@ -21,14 +21,14 @@ tools=$EPURE_SOURCE_DIR/tests/tools
 "$EPURE" generate --format pdf --sheets 4 --seed 5 --lang fr --jobs 1 --quiet --out "$tmp/set" || { bad "generate"; exit 1; }
 key=$tmp/set/key.json
 # The bounds pinned on these small stacks (about 190 fields, 390 digits each), as measured with
-# the committed classifier on generate's sheets of today's course (2026-12-05, 08:45 UTC: silent
-# errors 1 of 183 on the JPEG PDF, 2 of 197 on the bilevel TIFF, 3 of 197 at 300 dpi, 2 of 197 in
-# the PNGs; fields sent to review 15-25 %; digits 96.5-98.6 %), with a margin. The targets
-# (silent errors 0.1 %, review 5 %, digits 99 %) are NOT met: README, "epure scan", has the
-# figures on stacks of 24 sheets.
-max_silent=${EPURE_SCAN_MAX_SILENT:-0.025}
-max_review=${EPURE_SCAN_MAX_REVIEW:-0.35}
-min_digits=${EPURE_SCAN_MIN_DIGITS:-0.94}
+# the committed classifier (the 32-64-128 network, cells below 0.85 sent to review) on generate's
+# sheets of today's course (2026-12-05, 11:55 UTC: silent errors 0 of 182 on the JPEG PDF, 0 of
+# 196 on the bilevel TIFF, 0 of 196 at 300 dpi, 1 of 196 in the PNGs; fields sent to review
+# 14-23.5 %; digits 98.2-99.7 %), with a margin. The targets (silent errors 0.1 %, review
+# 5 %, digits 99 %) are NOT all met: README, "epure scan", has the figures on stacks of 24 sheets.
+max_silent=${EPURE_SCAN_MAX_SILENT:-0.008}
+max_review=${EPURE_SCAN_MAX_REVIEW:-0.27}
+min_digits=${EPURE_SCAN_MIN_DIGITS:-0.975}
 
 # Four stacks: a copier's JPEG PDF (shuffled, a page dropped, one twice, a blank one, one of
 # another set), a bilevel TIFF (CCITT G4, 200 dpi), a Flate PDF at 300 dpi, PNG at 150 dpi.
