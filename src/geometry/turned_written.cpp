@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
+#include <fmt/format.h>
+
+#include "geometry/affine.h"
 #include "geometry/bounded.h"
+#include "geometry/degenerate.h"
 #include "geometry/quadratic.h"
 #include "geometry/ray_circle.h"
 
@@ -34,6 +39,7 @@ double to_double(const ExactDecimal& x) {
 }
 template <int K>
 double to_double(const exact::Quadratic<K>& x) { return x.value(); }
+double to_double(const Bounded& x) { return x.mid; }
 
 // A datum, and p + q·√k (a cosine or sine of the table below), in each kind of number.
 Bounded number(const Decimal& d, Bounded*) { return Bounded::of(d); }
@@ -51,12 +57,30 @@ exact::Quadratic<K> trig(double p, double q, int, exact::Quadratic<K>*) {
 }
 
 // An angle as written whose cos and sin are p + q·√k with p, q in {0, ±½, ±1}: a whole number
-// of quarter turns (k = 1), of 45° (k = 2) or of 30° (k = 3).
+// of quarter turns (k = 1), of 45° (k = 2) or of 30° (k = 3). Any other angle is k = 0: its cos
+// and sin are only known within a bound (general_angle), so its decisions are the filter's alone.
 struct SpecialAngle {
   int k = 1;
   int quarter = 0;                         // k = 1: R(θ) is that many quarter turns
   double cp = 1, cq = 0, sp = 0, sq = 0;   // cos θ = cp + cq·√k, sin θ = sp + sq·√k
+  Bounded cos, sin;                        // k = 0: cos θ and sin θ enclosed
 };
+
+// cos θ and sin θ of any angle as written, each within a bound of the double given. The double
+// angle's cos and sin (cos_sin_degrees) are off by its radians' rounding (the quarter-turn
+// reduction is exact; rest·(π/180), |rest| ≤ 45°, is within 2^-52 of its value, the sine's slope
+// at most 1) plus their own correct rounding (2^-54): below 2^-51, counted as 2^-50. The decimal
+// angle differs from its double by lo (within its error), which moves them by at most
+// |lo|·π/180 < 0.0175·|lo|.
+SpecialAngle general_angle(const Decimal& angle_deg) {
+  const CosSin cs = cos_sin_degrees(angle_deg.hi);
+  const double err = 0x1p-50 + (std::abs(angle_deg.lo) + angle_deg.error()) * 0.0175 * (1 + 0x1p-50);
+  SpecialAngle a;
+  a.k = 0;
+  a.cos = {cs.cos, err};
+  a.sin = {cs.sin, err};
+  return a;
+}
 std::optional<SpecialAngle> special_angle(const Decimal& angle_deg) {
   // the decimal is its double exactly (lo = 0), a whole number of degrees (fmod is exact)
   const double a = angle_deg.hi;
@@ -67,16 +91,18 @@ std::optional<SpecialAngle> special_angle(const Decimal& angle_deg) {
   const double c_sign = degrees < 90 || degrees > 270 ? 1 : -1, s_sign = degrees < 180 ? 1 : -1;
   const int in_quadrant = degrees % 90;  // the angle to the previous axis
   const int from_x = degrees % 180 < 90 ? in_quadrant : 90 - in_quadrant;  // |θ| folded to [0, 90]
-  if (in_quadrant == 0) return SpecialAngle{1, degrees / 90};
-  if (in_quadrant == 45) return SpecialAngle{2, 0, 0, c_sign * 0.5, 0, s_sign * 0.5};
-  if (from_x == 30) return SpecialAngle{3, 0, 0, c_sign * 0.5, s_sign * 0.5, 0};
-  if (from_x == 60) return SpecialAngle{3, 0, c_sign * 0.5, 0, 0, s_sign * 0.5};
+  if (in_quadrant == 0) return SpecialAngle{1, degrees / 90, 1, 0, 0, 0, {}, {}};
+  if (in_quadrant == 45) return SpecialAngle{2, 0, 0, c_sign * 0.5, 0, s_sign * 0.5, {}, {}};
+  if (from_x == 30) return SpecialAngle{3, 0, 0, c_sign * 0.5, s_sign * 0.5, 0, {}, {}};
+  if (from_x == 60) return SpecialAngle{3, 0, c_sign * 0.5, 0, 0, s_sign * 0.5, {}, {}};
   return std::nullopt;  // 15°, 75°: √6 ± √2, not worth a field of degree 4
 }
 
-// f(tag) with the exact number type of the angle's field.
+// f(tag) with the exact number type of the angle's field (with the filter's bounded numbers for
+// an angle of no exact field: its hit is rebuilt from their midpoints).
 template <class F>
 auto on_exact(int k, F&& f) {
+  if (k == 0) return f(static_cast<Bounded*>(nullptr));
   if (k == 2) return f(static_cast<exact::Quadratic<2>*>(nullptr));
   if (k == 3) return f(static_cast<exact::Quadratic<3>*>(nullptr));
   return f(static_cast<ExactDecimal*>(nullptr));
@@ -104,7 +130,14 @@ Turned<Num> turned(const WrittenTurned& w, const DPoint2& direction, const Speci
   const Num ux = number(direction[0], tag), uy = number(direction[1], tag);
   const std::array<Num, 2> s{number(w.sx, tag), number(w.sy, tag)};
   if (angle.k == 1) return {turn_back(dx, dy, angle.quarter), turn_back(ux, uy, angle.quarter), s};
-  const Num c = trig(angle.cp, angle.cq, angle.k, tag), sn = trig(angle.sp, angle.sq, angle.k, tag);
+  Num c, sn;
+  if constexpr (std::is_same_v<Num, Bounded>) {
+    c = angle.k == 0 ? angle.cos : trig(angle.cp, angle.cq, angle.k, tag);
+    sn = angle.k == 0 ? angle.sin : trig(angle.sp, angle.sq, angle.k, tag);
+  } else {
+    c = trig(angle.cp, angle.cq, angle.k, tag);
+    sn = trig(angle.sp, angle.sq, angle.k, tag);
+  }
   // R(−θ)v = (c·x + s·y, c·y − s·x)
   return {{c * dx + sn * dy, c * dy - sn * dx}, {c * ux + sn * uy, c * uy - sn * ux}, s};
 }
@@ -216,12 +249,21 @@ Decisions decide_rectangle(const Turned<Num>& f) {
 }
 
 // The decisions: by the floating-point filter where it tells every sign (the figure clear of every
-// boundary by far more than the carried ray's rounding), else on the exact numbers.
+// boundary by far more than the carried ray's rounding), else on the exact numbers. At an angle
+// of no exact field the filter is all there is: a figure it cannot tell (within about 1e-15 of
+// its size from a boundary) is refused, never answered on the rounded ray.
 template <class Decide>
-Decisions decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on) {
+Decisions decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on,
+                 std::string_view figure) {
   try {
     return decide_on(turned<Bounded>(w, direction, angle));
   } catch (const NotCertain&) {
+    if (angle.k == 0)
+      throw DegenerateFigure(
+          "angle", fmt::format("{}: the ray is within rounding (about 1e-15 of the figure's size) of a boundary of "
+                               "the {} turned by {}°, where epure cannot decide exactly (it can at whole multiples "
+                               "of 30° and 45°); move the ray off the boundary or turn the figure by such an angle",
+                               figure == "ellipse" ? "ray_ellipse" : "ray_rectangle", figure, w.angle_deg.hi));
     return on_exact(angle.k, [&](auto* tag) {
       using Num = std::remove_pointer_t<decltype(tag)>;
       return decide_on(turned<Num>(w, direction, angle));
@@ -321,8 +363,8 @@ namespace {
 // kernels' values are not to be kept.
 template <class Result, class Decide>
 Result on_the_decimals(Result e, const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
-                       const SpecialAngle& angle, Decide decide_on, bool redo = false) {
-  const Decisions exact = decide(w, direction, angle, decide_on);
+                       const SpecialAngle& angle, Decide decide_on, std::string_view figure, bool redo = false) {
+  const Decisions exact = decide(w, direction, angle, decide_on, figure);
   if (exact == kernel_decisions(e) && !redo) return e;
   return on_exact(angle.k, [&](auto* tag) {
     using Num = std::remove_pointer_t<decltype(tag)>;
@@ -346,22 +388,24 @@ RayEllipse intersect_written(const WrittenTurned& w, const DPoint2& direction, c
     e.hit = c.hit;
     return e;
   }
-  const auto angle = special_angle(w.angle_deg);
-  if (!angle) return e;
+  const auto special = special_angle(w.angle_deg);
+  const SpecialAngle angle = special ? *special : general_angle(w.angle_deg);
   // a line within 2^-12 of tangency (its chord polynomial within 2^40 of its error bound): the
-  // carried ray's rounding is magnified in the kernels' chord, so the hit is redone
-  const Bounded chord = ellipse_chord(turned<Bounded>(w, direction, *angle));
-  const bool near_tangent = !(std::abs(chord.mid) > 0x1p40 * chord.err);
-  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_ellipse(f); },
+  // carried ray's rounding is magnified in the kernels' chord, so the hit is redone (from the
+  // exact numbers; at another angle the kernels' values are as good as the filter's midpoints)
+  const Bounded chord = ellipse_chord(turned<Bounded>(w, direction, angle));
+  const bool near_tangent = angle.k != 0 && !(std::abs(chord.mid) > 0x1p40 * chord.err);
+  return on_the_decimals(e, w, direction, ray, angle, [](const auto& f) { return decide_ellipse(f); }, "ellipse",
                          near_tangent);
 }
 
 RayRectangle intersect_written(const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
                                const Rectangle& rectangle) {
   RayRectangle e = intersect_exact(ray, rectangle);
-  const auto angle = special_angle(w.angle_deg);
-  if (!angle) return e;
-  return on_the_decimals(e, w, direction, ray, *angle, [](const auto& f) { return decide_rectangle(f); });
+  const auto special = special_angle(w.angle_deg);
+  const SpecialAngle angle = special ? *special : general_angle(w.angle_deg);
+  return on_the_decimals(e, w, direction, ray, angle, [](const auto& f) { return decide_rectangle(f); },
+                         "rectangle");
 }
 
 }  // namespace epure::geo
