@@ -251,7 +251,8 @@ Decisions decide_rectangle(const Turned<Num>& f) {
 // The decisions: by the floating-point filter where it tells every sign (the figure clear of every
 // boundary by far more than the carried ray's rounding), else on the exact numbers. At an angle
 // of no exact field the filter is all there is: a figure it cannot tell (within about 1e-15 of
-// its size from a boundary) is refused, never answered on the rounded ray.
+// the line's largest number from a boundary: A − C is rounded at A's scale) is refused, never
+// answered on the rounded ray.
 template <class Decide>
 Decisions decide(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle, Decide decide_on,
                  std::string_view figure) {
@@ -260,7 +261,7 @@ Decisions decide(const WrittenTurned& w, const DPoint2& direction, const Special
   } catch (const NotCertain&) {
     if (angle.k == 0)
       throw DegenerateFigure(
-          "angle", fmt::format("{}: the ray is within rounding (about 1e-15 of the figure's size) of a boundary of "
+          "angle", fmt::format("{}: the ray is within rounding (about 1e-15 of the line's largest number) of a boundary of "
                                "the {} turned by {}°, where epure cannot decide exactly (it can at whole multiples "
                                "of 30° and 45°); move the ray off the boundary or turn the figure by such an angle",
                                figure == "ellipse" ? "ray_ellipse" : "ray_rectangle", figure, w.angle_deg.hi));

@@ -15,6 +15,7 @@ Deterministic for a seed (random.Random(SEED)). The coordinates are integers on 
 10^(s-d) (d decimals at the scale 10^s), written exactly ("-4.217e-6", "812.5").
 """
 import json
+import math
 import random
 import sys
 from fractions import Fraction
@@ -374,8 +375,70 @@ def rectangle(g):
     return line("ray_rectangle", A=A, u=u, C=C, half=half, angle=angle)
 
 
+def turned_other(g):
+    """An ellipse or a rectangle turned by an angle of no exact field (a whole number of degrees
+    or a tenth, not a multiple of 15°: cos and sin irrational of degree more than 2): A, or the
+    ray's line, 1e-6 to 1e-12 of the figure's size off its boundary, inside or out, on a grid of
+    1e-16 of its size. Far beyond the filter's bound (about 1e-15 of the line's largest number),
+    so decided, never refused (turned_written.h), and each decision is the 80-digit reference's."""
+    step, _ = g.scale()
+    # the filter's rounding is relative to the line's largest number (A − C is rounded at A's
+    # scale): the figure near the origin and not tiny beside it, the offsets beyond that rounding
+    C = g.grid_point(step, 2, 9999)
+    while True:
+        angle = g.rng.choice([Fraction(g.rng.randint(0, 179)), Fraction(g.rng.randint(-3600, 3600), 10)])
+        if angle % 15 != 0:
+            break
+    a, b = step * g.rng.randint(1000, 9999), step * g.rng.randint(1000, 9999)
+    if a == b:
+        b += step
+    th = math.radians(float(angle))
+    c, s = math.cos(th), math.sin(th)
+    off = g.rng.choice([-1, 1]) * 10.0 ** -g.rng.randint(6, 12)
+    size = float(max(a, b))
+    # the local point, turned in doubles and written on a grid of 1e-16 of the size: within
+    # 1e-15 of the size of the point meant, 1e-6 to 1e-12 off the boundary
+    grid = max(a, b) / 10**16
+
+    def world(x, y):
+        return tuple(C[i] + Fraction(round(v / float(grid))) * grid for i, v in enumerate((c * x - s * y, s * x + c * y)))
+
+    def vec(x, y):
+        return tuple(Fraction(round(v * 10**8)) / 10**8 * step for v in (c * x - s * y, s * x + c * y))
+
+    if g.rng.random() < 0.5:
+        half = (a, b)
+        k = g.rng.randrange(2)
+        sign = g.rng.choice([-1, 1])
+        local = [0.0, 0.0]
+        local[k] = sign * float(half[k]) * (1 + off)
+        local[1 - k] = g.rng.uniform(-0.95, 0.95) * float(half[1 - k])
+        u = vec(-sign * (k == 0) + g.rng.uniform(-1, 1), -sign * (k == 1) + g.rng.uniform(-1, 1))
+        if all(v == 0 for v in u):
+            u = (step, 0)
+        return line("ray_rectangle", A=world(*local), u=u, C=C, half=half, angle=angle)
+    phi = g.rng.uniform(0, 2 * math.pi)
+    P = (float(a) * math.cos(phi) * (1 + off), float(b) * math.sin(phi) * (1 + off))
+    n = (P[0] / float(a) ** 2, P[1] / float(b) ** 2)
+    norm = math.hypot(*n)
+    n = (n[0] / norm, n[1] / norm)
+    t = (-n[1], n[0])
+    if g.rng.random() < 0.5:  # the ray's line near the tangent at P: from behind, along it
+        back = g.rng.uniform(0.5, 3) * size
+        A = world(P[0] - back * t[0], P[1] - back * t[1])
+        u = vec(*t)
+    else:  # A near the ellipse, heading in, out or along
+        A = world(*P)
+        w = g.rng.choice([-1, 0, 1])
+        u = vec(w * n[0] + 0.3 * g.rng.uniform(-1, 1) * t[0], w * n[1] + 0.3 * g.rng.uniform(-1, 1) * t[1])
+    if all(v == 0 for v in u):
+        u = (step, 0)
+    return line("ray_ellipse", A=A, u=u, C=C, radii=(a, b), angle=angle)
+
+
 MAKERS = [segments, projection, lambda g: ball(g, 2), lambda g: ball(g, 3), lambda g: box(g, 2),
-          lambda g: box(g, 3), vectors, ellipse, ellipse_special, rectangle]
+          lambda g: box(g, 3), vectors, ellipse, ellipse_special, rectangle,
+          turned_other]
 
 
 def lines(seed, count):
