@@ -17,10 +17,11 @@
 // values, to the bit); otherwise the hit is rebuilt from the exact decisions, its values from the
 // carried ray (within rounding of the boundary the figure is, so they are as accurate).
 //
-// Other angles with unequal sizes keep the kernels' decisions on the carried doubles: within
-// about 1e-15 of the figure's size from a boundary such a figure is decided as its rounded ray
-// lies (README states that limit; at 15° or 36°, where cos 2θ is a quadratic irrational, decimal
-// figures exactly on a boundary exist and are not recognised).
+// At any other angle with unequal sizes the same polynomials are filtered with cos θ and sin θ
+// enclosed within a proven bound (cos_sin_degrees' rounding, and the angle's own when its
+// decimal is not a double): a sign the filter is certain of is the exact one; a line it cannot
+// tell (within about 1e-15 of the line's largest number from a boundary) is refused with a
+// DegenerateFigure naming the angle, never answered on the carried ray.
 #include <optional>
 
 #include "geometry/decimal.h"

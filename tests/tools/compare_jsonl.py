@@ -145,13 +145,21 @@ def bounded(fig):
 
 def decided_as_written(fig):
     """Whether the contract decides this turned figure exactly on the decimals although its
-    carried ray is rounded: an angle that is a whole number of quarter turns as written, or an
-    ellipse whose radii are the same decimal (a circle at any angle). Its values are measured."""
+    carried ray is rounded: every ellipse and rectangle (turned_written.h). Its values are
+    measured."""
+    return fig.get("kind") in ("ray_ellipse", "ray_rectangle")
+
+
+def may_refuse(fig):
+    """Whether the contract may refuse this turned figure rather than decide it: an angle whose
+    cos and sin are in no exact field of ours (not a whole multiple of 30° or 45° as written),
+    unequal sizes. Such a line is "refused or right": a refusal is counted, never a wrong answer."""
     try:
         if fig.get("kind") == "ray_ellipse" and Fraction(str(fig["radii"][0])) == Fraction(str(fig["radii"][1])):
-            return True
+            return False
         angle = Fraction(str(fig["angle"]))
-        return fig.get("kind") in ("ray_ellipse", "ray_rectangle") and angle % 90 == 0 and abs(angle) <= 2**53
+        exact = (angle % 30 == 0 or angle % 45 == 0) and abs(angle) <= 2**53
+        return fig.get("kind") in ("ray_ellipse", "ray_rectangle") and not exact
     except (TypeError, ValueError, KeyError, IndexError, ZeroDivisionError):
         return False
 
@@ -238,6 +246,7 @@ def main():
     problems = []
     worst = {}
     carried = {}  # lines of a rounded carried ray (not bounded) that differ, by kind
+    refused = {}  # turned lines at an angle of no exact field that epure refused, by kind
     if len(actual_lines) != len(expected_lines):
         problems.append(f"{len(actual_lines)} lines, expected {len(expected_lines)}")
     for n, (a, e) in enumerate(zip(actual_lines, expected_lines), start=1):
@@ -255,6 +264,9 @@ def main():
             except ValueError:
                 fig = None
         if ulps is not None and isinstance(fig, dict) and not bounded(fig):
+            if isinstance(actual, dict) and 'error' in actual and 'error' not in expected and may_refuse(fig):
+                refused[fig.get("kind")] = refused.get(fig.get("kind"), 0) + 1
+                continue
             mine = []
             same(actual, expected, f"line {n}", mine)
             if decided_as_written(fig) and decisions(actual, fig["kind"]) != decisions(expected, fig["kind"]):
@@ -293,6 +305,8 @@ def main():
     for kind, count in sorted(carried.items()):
         print(f"measured, not bounded: {count} {kind} lines with a rounded carried ray differ "
               f"from the exact figure")
+    for kind, count in sorted(refused.items()):
+        print(f"refused, not wrong: {count} {kind} lines at an angle of no exact field")
     if stats:
         for (kind, name), err in sorted(worst.items()):
             print(f"ulps: {kind:28} {name:10} {err:.2f}")

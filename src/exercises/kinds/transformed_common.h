@@ -116,8 +116,9 @@ CoreAnswers core_answers(const Result& r) {
 }
 
 // The solve contract: inside, hit; then t, I, N (the figure's own intersection), decided on the
-// decimals written where turned_written.h can (a whole number of quarter turns, equal radii),
-// otherwise exactly for the ray carried in doubles (README, "What a number means").
+// decimals written (turned_written.h: exactly at multiples of 30° and 45° and for equal radii,
+// by a certified filter at other angles, a line it cannot tell refused; README, "What a number
+// means").
 template <class Figure>
 void solve_contract(const Data& d, const Figure& figure, std::string_view sizes, const solve::Fields& f,
                     solve::Result& r) {
