@@ -113,6 +113,8 @@ auto on_exact(int k, F&& f) {
 template <class Num>
 struct Turned {
   std::array<Num, 2> X, U, s;
+  // Unpacked as `const auto &X = f.X, &U = f.U, &s = f.s;`, not as a structured binding: clang 14
+  // (the fuzz build's, emscripten's) lets no lambda capture a structured binding.
 };
 template <class Num>
 std::array<Num, 2> turn_back(const Num& x, const Num& y, int q) {
@@ -157,9 +159,7 @@ struct Decisions {
 // ‖u_c‖² − (u_c ∧ A_c)² times a²b²: the ellipse's line through a chord (+), tangent (0) or beside.
 template <class Num>
 Num ellipse_chord(const Turned<Num>& f) {
-  const auto& X = f.X;  // not a structured binding: clang 14 (the fuzz build, emscripten) lets
-  const auto& U = f.U;  // no lambda capture one
-  const auto& s = f.s;
+  const auto &X = f.X, &U = f.U, &s = f.s;
   const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
   const Num cross = U[0] * X[1] - U[1] * X[0];
   return b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]) - cross * cross;
@@ -170,9 +170,7 @@ Num ellipse_chord(const Turned<Num>& f) {
 // A_c·u_c > 0 from outside or on it, miss ‖u_c‖² < (u_c ∧ A_c)², tangent when equal.
 template <class Num>
 Decisions decide_ellipse(const Turned<Num>& f) {
-  const auto& X = f.X;  // not a structured binding: clang 14 (the fuzz build, emscripten) lets
-  const auto& U = f.U;  // no lambda capture one
-  const auto& s = f.s;
+  const auto &X = f.X, &U = f.U, &s = f.s;
   const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
   const int excess = sign(b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2);
   Decisions d;
@@ -194,9 +192,7 @@ Decisions decide_ellipse(const Turned<Num>& f) {
 // side first at a corner), each comparison multiplied by the sizes it divides by.
 template <class Num>
 Decisions decide_rectangle(const Turned<Num>& f) {
-  const auto& X = f.X;  // not a structured binding: clang 14 (the fuzz build, emscripten) lets
-  const auto& U = f.U;  // no lambda capture one
-  const auto& s = f.s;
+  const auto &X = f.X, &U = f.U, &s = f.s;
   const std::array<int, 2> sign_u{sign(U[0]), sign(U[1])};
   Decisions d;
   bool candidate[2][2] = {};  // [axis][σ = +1 ? 0 : 1]: σ·X_k ≥ s_k
@@ -291,9 +287,7 @@ Point2 world_point(const Ray2& ray, double t) { return t > 0 ? ray.at(t) : ray.o
 // −β/α at tangency, each written without cancellation. Within a few ulps, of the sign decided.
 template <class Num>
 double ellipse_t(const Turned<Num>& f, const Decisions& d) {
-  const auto& X = f.X;  // not a structured binding: clang 14 (the fuzz build, emscripten) lets
-  const auto& U = f.U;  // no lambda capture one
-  const auto& s = f.s;
+  const auto &X = f.X, &U = f.U, &s = f.s;
   const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
   const Num alpha_exact = b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]);
   const double alpha = to_double(alpha_exact);
