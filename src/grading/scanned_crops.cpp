@@ -31,7 +31,9 @@ render::Raster ScannedCrops::crop(std::string_view sheet, std::string_view quest
     fmt::print(stderr, "epure grade: {}: not a PNG image: its feedback line shows no crop\n", path.string());
     return {};
   }
-  return render::Raster{std::move(png), px->width, px->height, px->height / kCropPixelsPerPoint};
+  // on paper as scanned: the height in points at the resolution the crop states
+  const double dpi = px->dots_per_inch > 0 ? px->dots_per_inch : kUnstatedCropDpi;
+  return render::Raster{std::move(png), px->width, px->height, px->height * 72.0 / dpi};
 }
 
 }  // namespace epure::grading

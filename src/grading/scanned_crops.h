@@ -25,8 +25,9 @@ class ScannedCrops {
   std::filesystem::path dir_;
 };
 
-// The crops' resolution, 216 dpi (scan_session.cpp's kCropScale): their size on paper.
-inline constexpr double kCropPixelsPerPoint = 3;
+// The resolution of a crop whose PNG states none (crops written before scan recorded it in a
+// pHYs chunk were all 216 dpi): its size on paper.
+inline constexpr double kUnstatedCropDpi = 216;
 
 // Larger than any crop scan writes (a field at 216 dpi is a few kilobytes).
 inline constexpr std::size_t kMaxCropBytes = 4 << 20;

@@ -5,6 +5,7 @@
 #include <png.h>
 #include <tiffio.h>
 
+#include <cmath>
 #include <csetjmp>
 #include <cstring>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "scan/pdf_input.h"
+#include "support/png_size.h"
 
 namespace epure::scan {
 
@@ -297,7 +299,39 @@ std::unique_ptr<PageStream> open_pages_in_memory(std::string bytes, const std::s
   return by_kind(kind, name, std::move(bytes), render_dpi);
 }
 
-std::string encode_png(const cv::Mat& grey) {
+namespace {
+
+// PNG's chunk CRC (ISO 3309, the one zlib computes), bit by bit: a chunk of 13 bytes a crop.
+std::uint32_t png_crc(std::string_view bytes) {
+  std::uint32_t c = 0xFFFFFFFFu;
+  for (const char ch : bytes) {
+    c ^= static_cast<unsigned char>(ch);
+    for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+  }
+  return c ^ 0xFFFFFFFFu;
+}
+
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>((v >> shift) & 0xFF));
+}
+
+// The pHYs chunk for a resolution: pixels per metre on both axes, unit 1 (the metre).
+std::string phys_chunk(double dots_per_inch) {
+  const auto per_metre = static_cast<std::uint32_t>(std::lround(dots_per_inch / kMetresPerInch));
+  std::string body = "pHYs";
+  put_u32(body, per_metre);
+  put_u32(body, per_metre);
+  body.push_back('\x01');
+  std::string chunk;
+  put_u32(chunk, 9);
+  chunk += body;
+  put_u32(chunk, png_crc(body));
+  return chunk;
+}
+
+}  // namespace
+
+std::string encode_png(const cv::Mat& grey, double dots_per_inch) {
   CV_Assert(grey.type() == CV_8UC1);
   png_image img;
   std::memset(&img, 0, sizeof img);
@@ -313,6 +347,8 @@ std::string encode_png(const cv::Mat& grey) {
   if (!png_image_write_to_memory(&img, out.data(), &size, 0, grey.data, stride, nullptr))
     throw ImageError(fmt::format("PNG: {}", img.message));
   out.resize(size);
+  // pHYs goes after IHDR (the signature and IHDR are the first 33 bytes) and before IDAT
+  if (dots_per_inch > 0) out.insert(8 + 8 + 13 + 4, phys_chunk(dots_per_inch));
   return out;
 }
 

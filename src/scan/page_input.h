@@ -59,8 +59,9 @@ std::unique_ptr<PageStream> open_pages(const std::string& path, int render_dpi =
 // The same from bytes in memory (the fuzz targets); `name` for messages.
 std::unique_ptr<PageStream> open_pages_in_memory(std::string bytes, const std::string& name, int render_dpi = 200);
 
-// A grey image as PNG bytes (review crops, test fixtures).
-std::string encode_png(const cv::Mat& grey);
+// A grey image as PNG bytes (review crops, test fixtures). With `dots_per_inch` > 0 the file
+// says its resolution (a pHYs chunk), so that a reader sizes it on paper as it was scanned.
+std::string encode_png(const cv::Mat& grey, double dots_per_inch = 0);
 // A grey image as JPEG bytes at a quality from 1 to 100 (test fixtures: a copier's JPEG).
 std::string encode_jpeg(const cv::Mat& grey, int quality);
 

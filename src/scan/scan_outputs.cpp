@@ -157,17 +157,19 @@ std::string review_html(const ScanResult& result, const SetLayout& layout) {
 
 std::size_t write_crops(const std::filesystem::path& dir, ScanResult& result) {
   std::size_t written = 0;
-  for (const auto& [id, s] : result.sheets)
+  for (const auto& [id, s] : result.sheets) {
+    bool made = false;  // the sheet's directory, made once, and only for a sheet with crops
     for (const auto& [q, f] : s.fields) {
       if (f.crop_png.empty() || q == "student_number") continue;
       if (!safe_file_name(id) || !safe_file_name(q)) {
         result.problems.push_back(fmt::format("sheet {}: field {}: its id cannot be a file name: no crop written", id, q));
         continue;
       }
-      std::filesystem::create_directories(dir / "crops" / id);
+      if (!made) std::filesystem::create_directories(dir / "crops" / id), made = true;
       output::write_file_atomically(dir / "crops" / id / (q + ".png"), f.crop_png);
       ++written;
     }
+  }
   return written;
 }
 

@@ -25,7 +25,7 @@ struct PageOutcome {
   std::vector<FieldResult> fields;
 };
 
-constexpr double kCropScale = 3.0;  // crops: 3 pixels per point (216 dpi; grading/scanned_crops.h reads them so)
+constexpr double kCropScale = 3.0;  // crops: 3 pixels per point, 216 dpi, which each crop's PNG states (pHYs)
 
 PageOutcome read_page(InputPage in, const SetLayout& layout, const PageFrame& frame, const ScanOptions& options,
                       const DigitClassifier& net) {
@@ -95,7 +95,7 @@ PageOutcome read_page(InputPage in, const SetLayout& layout, const PageFrame& fr
     FieldResult fr;
     fr.page = page.page;
     fr.reading = read_field(in.image, map, f, paper, ink, layout.decimal_separator, net);
-    if (fr.reading.uncertain || options.all_crops) fr.crop_png = encode_png(field_image(in.image, map, f, kCropScale));
+    if (fr.reading.uncertain || options.all_crops) fr.crop_png = encode_png(field_image(in.image, map, f, kCropScale), kCropScale * 72);
     out.fields.push_back(std::move(fr));
   }
   return out;

@@ -58,3 +58,16 @@ TEST_CASE("file names from outside data: ids only") {
   CHECK_FALSE(safe_file_name("é"));
   CHECK_FALSE(safe_file_name(std::string(129, 'a')));
 }
+
+TEST_CASE("scanned crops: sized on paper at the resolution the PNG states, 216 dpi when it states none") {
+  const auto dir = std::filesystem::temp_directory_path() / "epure-scanned-crops-dpi-test";
+  std::filesystem::remove_all(dir);
+  // kPng with a pHYs chunk of 108 dpi (4252 pixels a metre) after IHDR
+  const std::string phys("\x00\x00\x00\x09pHYs\x00\x00\x10\x9c\x00\x00\x10\x9c\x01\x00\x00\x00\x00", 21);
+  write(dir / "S" / "a.png", kPng.substr(0, 33) + phys + kPng.substr(33));
+  write(dir / "S" / "b.png", kPng);
+  const ScannedCrops crops(dir);
+  CHECK(crops.crop("S", "a").natural_height_pt == doctest::Approx(2 * 72.0 / 108).epsilon(1e-3));
+  CHECK(crops.crop("S", "b").natural_height_pt == doctest::Approx(2 * 72.0 / kUnstatedCropDpi));
+  std::filesystem::remove_all(dir);
+}

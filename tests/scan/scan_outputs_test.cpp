@@ -5,8 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include "grading/corrections.h"
+#include "scan/page_input.h"
 #include "scan/scan_outputs.h"
 #include "scan/scan_session.h"
+#include "support/png_size.h"
 
 using namespace epure;
 using namespace epure::scan;
@@ -82,4 +84,28 @@ TEST_CASE("scan corrections: the file epure grade reads, each entry placed or sa
   // answers.json holds the corrected value, not the one read
   const auto answers = nlohmann::json::parse(answers_json(r));
   CHECK(answers[0]["answers"]["1.t"] == "0,49");
+}
+
+TEST_CASE("scan crops: a crop's PNG states its resolution, read back by grading's size and by libpng") {
+  cv::Mat grey(30, 80, CV_8UC1, cv::Scalar(255));
+  grey(cv::Rect(10, 5, 20, 10)).setTo(0);
+  const std::string png = encode_png(grey, 216);
+  const auto size = png_size(png);
+  REQUIRE(size);
+  CHECK(size->width == 80);
+  CHECK(size->height == 30);
+  CHECK(size->dots_per_inch == doctest::Approx(216).epsilon(1e-4));  // 8504 pixels a metre
+  CHECK(png_size(encode_png(grey))->dots_per_inch == 0);             // no pHYs: unstated
+  // the chunk right after IHDR, its CRC as Python's zlib.crc32 gives it (libpng only warns of a
+  // bad CRC on an ancillary chunk, so the bytes are compared)
+  const std::string phys("\x00\x00\x00\x09pHYs\x00\x00\x21\x38\x00\x00\x21\x38\x01\x45\x96\x31\x60", 21);
+  CHECK(png.substr(33, 21) == phys);
+  // and the file still decodes to the same pixels
+  auto pages = open_pages_in_memory(png, "crop.png");
+  const auto page = pages->next();
+  REQUIRE(page);
+  CHECK(page->error.empty());
+  REQUIRE(page->image.rows == 30);
+  CHECK(page->image.at<unsigned char>(10, 20) == 0);
+  CHECK(page->image.at<unsigned char>(25, 70) == 255);
 }
