@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The scan's reading figures on four stacks of SHEETS French sheets (default 24), made as
+# tests/cli/scan.sh makes its small ones (same formats, degradations and seeds 41-44: a copier's
+# 200 dpi JPEG PDF with mess, a bilevel CCITT G4 TIFF at 200 dpi, a 300 dpi Flate PDF, 150 dpi
+# PNGs), held-out digits written by tests/scan/scan_fixture.h. Prints each stack's figures and the
+# total, and where the comb errors and reviews come from (bench/scan_errors.py).
+#
+#   bash bench/scan_accuracy.sh BUILD_DIR [SHEETS] [WORK_DIR]
+#
+# WORK_DIR keeps the stacks (made once, reused when present: to compare two binaries on the same
+# scans, run with the same WORK_DIR; EPURE=path overrides BUILD_DIR/epure for the scan).
+set -eu
+build=$(cd "$1" && pwd); sheets=${2:-24}; work=${3:-$(mktemp -d)}
+src=$(cd "$(dirname "$0")/.." && pwd)
+epure=${EPURE:-$build/epure}
+mkdir -p "$work"
+if [ ! -f "$work/set/key.json" ]; then
+  "$build/epure" generate --format pdf --sheets "$sheets" --seed 5 --lang fr --jobs 2 --quiet --out "$work/set"
+fi
+i=0
+for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300" "png copier 150"; do
+  set -- $spec
+  i=$((i + 1))
+  d=$work/s$i
+  if [ ! -f "$d/truth.json" ]; then
+    "$build/epure_scan_fixture" --key "$work/set/key.json" --set "$work/set" --out "$d" --sheets "$sheets" \
+      --format "$1" --degrade "$2" --dpi "$3" --seed $((40 + i)) ${4:-} >/dev/null
+  fi
+  rm -rf "$d/out"
+  "$epure" scan "$d"/scan* --key "$work/set/key.json" --layout "$d/layout.json" --out "$d/out" --jobs 2 -q 2>"$d/err" || [ $? = 1 ]
+  python3 "$src/tests/tools/scan_figures.py" "$d/truth.json" "$d/out" "$d/layout.json" >"$d/figures.json"
+done
+python3 "$src/bench/scan_errors.py" "$work"/s1 "$work"/s2 "$work"/s3 "$work"/s4
