@@ -34,6 +34,9 @@ def expected_cells(f, v):
     return ([("-" if neg else " ")] if sign else []) + [" "] * (ints - len(ip)) + list(ip) + list(dp) + [" "] * (dec - len(dp))
 
 
+THRESHOLDS = (0.5, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
+
+
 def main():
     args = sys.argv[1:]
     thr = 0.85
@@ -110,7 +113,7 @@ def main():
     for w, k in review_why.most_common(8):
         print(f"  {k:>5} {w}")
     curve = []
-    for t in (0.5, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95):
+    for t in THRESHOLDS:
         rev = sum(1 for m, p, r in combs_all if m < t or p)
         sil = sum(1 for m, p, r in combs_all if not (m < t or p) and not r)
         curve.append(f"{t}: {rev}/{sil}")
