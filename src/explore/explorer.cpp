@@ -16,6 +16,7 @@
 #include "explore/frame.h"
 #include "explore/handles.h"
 #include "explore/key_html.h"
+#include "explore/written_numbers.h"
 #include "render/scene_painter.h"
 #include "render/svg_scene.h"
 #include "solve/solve.h"
@@ -112,6 +113,31 @@ void append_json_string(std::string& out, std::string_view s) {
   out += '"';
 }
 
+// Whether two solve outputs give the same decisions: the same fields, and the same booleans and
+// words (the numbers may differ in their last bits: the key's are its doubles').
+bool same_decisions(const json& a, const json& b) {
+  if (a.size() != b.size()) return false;
+  for (auto it = a.begin(); it != a.end(); ++it) {
+    const auto other = b.find(it.key());
+    if (other == b.end()) return false;
+    if ((it->is_boolean() || it->is_string()) && *it != *other) return false;
+  }
+  return true;
+}
+
+// The view of data the key's worked steps cannot follow: an error that says why, with what
+// `epure solve` gives for them (also as "solution", for the page's API).
+ViewParts not_followed(const std::string& solution) {
+  return {json{{"error", fmt::format("the worked steps cannot follow these data: computed in doubles at the course's "
+                                     "precision, they do not decide a figure on a boundary as written, or one decided "
+                                     "by digits beyond a double's; epure solve gives {}",
+                                     solution)},
+               {"solution", json::parse(solution)}}
+              .dump(),
+          {},
+          {}};
+}
+
 ExerciseSpec exercise_spec(std::string_view kind) {
   ExerciseSpec s;
   s.kind = std::string(kind);
@@ -169,7 +195,30 @@ ViewParts view_parts(std::string_view instance_text, std::string_view language, 
     ctx.sheet = false;        // the view shows the key only,
     ctx.tolerances = false;   // and marks nothing
     ctx.label = std::string(label);
-    ExerciseInstance key = kind.key_of(instance, ctx);
+    // The key's worked steps are computed in doubles, with the course's tolerances at 2
+    // decimals: on data at a boundary as written (A on the circle, segments parallel as
+    // decimals), or decided by digits beyond a double's, its decisions can differ from the exact
+    // ones, and it refuses (its method disagrees with the core) or would answer for the doubles.
+    // The view then says so and gives `epure solve`'s answer for the data as written, never
+    // another figure's.
+    ExerciseInstance key;
+    try {
+      key = kind.key_of(instance, ctx);
+    } catch (const std::logic_error&) {
+      const std::string solution = solve(instance_text);
+      if (json::parse(solution).contains("error")) throw;
+      return not_followed(solution);
+    }
+    // The instance keeps the numbers as written (written_numbers.h), and its solution is
+    // `epure solve`'s for them.
+    const std::string written = with_written_numbers(key.instance, instance_text);
+    if (written != key.instance) {
+      std::string solution = solve(written);
+      const json by_solve = json::parse(solution), by_key = json::parse(key.solution);
+      if (by_solve.contains("error") || !same_decisions(by_solve, by_key)) return not_followed(solution);
+      key.instance = written;
+      key.solution = std::move(solution);
+    }
     KeyView kv = key_view(key.key);
     if (kv.figure == nullptr || kv.figure->panels.empty()) throw std::logic_error("explore: the key has no figure");
     render::Scene& scene = *kv.figure;
@@ -227,7 +276,7 @@ std::string drag(std::string_view instance_text, std::string_view handle, double
   if (!frame || !std::isfinite(x) || !std::isfinite(y)) return std::string(instance_text);
   LastDragged& last = last_dragged();
   last.instance = moved(instance, fields_of(instance), handle, to_math(*frame, {x, y}), snap, height);
-  last.text = last.instance.dump();
+  last.text = with_written_numbers(last.instance.dump(), instance_text);
   return last.text;
 }
 
@@ -235,9 +284,13 @@ std::string nudge(std::string_view instance_text, std::string_view handle, int d
   const json instance = parse(instance_text);
   const double step = nudge_step(snap);
   const std::vector<DataField> fields = fields_of(instance);
-  if (in_space(fields)) return nudged_in_space(instance, fields, handle, dx, dy, dz, snap).dump();
+  // the numbers not moved as they were written (written_numbers.h)
+  if (in_space(fields))
+    return with_written_numbers(nudged_in_space(instance, fields, handle, dx, dy, dz, snap).dump(), instance_text);
   for (const auto& h : handles_of(fields, instance))
-    if (h.id == handle) return moved(instance, fields, handle, {h.at.x + dx * step, h.at.y + dy * step}, snap).dump();
+    if (h.id == handle)
+      return with_written_numbers(moved(instance, fields, handle, {h.at.x + dx * step, h.at.y + dy * step}, snap).dump(),
+                                  instance_text);
   return std::string(instance_text);
 }
 

@@ -65,7 +65,9 @@ ExplorePageWriter::ExplorePageWriter(std::string_view language, Write write, con
 void ExplorePageWriter::add(const ExploreSheet& sheet) {
   if (!first_ && !(last_id_ < sheet.id)) throw std::logic_error("explore page: sheets out of id order");
   nlohmann::json list = nlohmann::json::array();
-  for (const auto& i : sheet.instances) list.push_back(nlohmann::json::parse(i));
+  // each instance as its text, a JSON string: the page hands it to the core as it is, so that a
+  // number means the decimals written here, not what a JavaScript double writes back
+  for (const auto& i : sheet.instances) list.push_back(i);
   std::string piece = first_ ? "" : ",";
   piece.append(nlohmann::json(sheet.id).dump()).append(":").append(list.dump());
   put(std::move(piece));

@@ -1,15 +1,16 @@
 // epure explore in a real browser: Debian's headless chromium, driven by puppeteer-core.
-//   node explore_test.mjs PAGE LINES EXPECTED SET_DIR OUT_DIR
+//   node explore_test.mjs PAGE LINES EXPECTED SET_DIR OUT_DIR LONG LONG_EXPECTED
 // PAGE: explore.html written by `epure explore`; LINES / EXPECTED: solve input lines and what
 // `epure solve` printed for them; SET_DIR: a set written by `epure generate` (its explore.html,
-// key.json); OUT_DIR: screenshots and timings.json. Every request outside the page's own file is
+// key.json); OUT_DIR: screenshots and timings.json; LONG / LONG_EXPECTED: lines with digits beyond
+// a double's and what `epure solve` printed for them. Every request outside the page's own file is
 // refused (and counted as a failure). Prints one line per check, then "N passed, M failed".
 import fs from "node:fs";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 import puppeteer from "puppeteer-core";
 
-const [pagePath, linesPath, expectedPath, setDir, outDir] = process.argv.slice(2);
+const [pagePath, linesPath, expectedPath, setDir, outDir, longPath, longExpectedPath] = process.argv.slice(2);
 fs.mkdirSync(outDir, { recursive: true });
 let passed = 0, failed = 0;
 function check(ok, what, detail = "") {
@@ -232,6 +233,41 @@ const spaceKinds = ["vectors_3d", "ray_sphere", "ray_cube"];
   check(typeof err === "string" && err.length > 0, "a degenerate figure gives a clear error", String(err));
   check(refused.length === 0, "views: no request outside the file", JSON.stringify(refused));
   check(errors.length === 0, "views: no console error", JSON.stringify(errors));
+  await page.close();
+}
+
+// ---- 1b. digits beyond a double's: shown as written, never another verdict than solve's --------
+{
+  const long = fs.readFileSync(longPath, "utf8").split("\n").filter(l => l.trim());
+  const want = fs.readFileSync(longExpectedPath, "utf8").split("\n").filter(l => l.trim());
+  check(long.length > 0 && long.length === want.length, "long digits: one native result per line", `${long.length} / ${want.length}`);
+  const { page, refused, errors } = await open(pagePath);
+  const r = await page.evaluate((long, want) => {
+    const out = [];
+    long.forEach((line, i) => {
+      // the digits written, each number of 18 significant digits or more
+      const digits = line.match(/-?\d+\.\d{17,}(e-?\d+)?/g) || [];
+      const error = window.epure.show(line);
+      const solved = JSON.stringify(window.epure.solve(line)) === JSON.stringify(JSON.parse(want[i]));
+      delete window.epureCopied;
+      document.getElementById("copy").click();
+      const copied = window.epureCopied || "";
+      const steps = document.getElementById("steps").textContent;
+      out.push({ line, error, solved, digits, copied, steps: steps.length,
+                 // shown: the view of these data, their digits kept; refused: the error gives solve's answer
+                 shown: error === null && digits.every(d => copied.includes(d)) &&
+                        JSON.stringify(window.epure.solve(copied)) === JSON.stringify(JSON.parse(want[i])),
+                 refused: error !== null && error.includes(want[i]) });
+    });
+    return out;
+  }, long, want);
+  for (const x of r) {
+    check(x.solved, `long digits: epure.solve is epure solve's, bit for bit: ${x.line}`);
+    check(x.shown || x.refused, `long digits: ${x.shown ? "shown with its digits and solve's answer" : "refused with solve's answer"}: ${x.line}`,
+          JSON.stringify({ error: x.error, copied: x.copied }));
+  }
+  check(r.some(x => x.shown) && r.some(x => x.refused), "long digits: some shown, some refused (both paths tried)");
+  check(refused.length === 0 && errors.length === 0, "long digits: no request outside the file, no console error", JSON.stringify({ refused, errors }));
   await page.close();
 }
 

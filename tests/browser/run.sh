@@ -2,7 +2,7 @@
 # The explorer in headless Chromium (explore_test.mjs): epure.solve against `epure solve` on
 # the adversarial lines (tests/tools/adversarial_cases.py, fixed seed, and the kept ones of
 # tests/solve/), decimal-degenerate figures (tests/tools/decimal_cases.py) and the contract's examples; every view dragged, by mouse, touch and keyboard;
-# a set's links; timings. Needs `npm ci` in tests/browser (the bootstrap does it in test mode).
+# a set's links; lines decided by digits beyond a double's, shown; timings. Needs `npm ci` in tests/browser (the bootstrap does it in test mode).
 # Screenshots and timings.json go to $EPURE_BROWSER_OUT (default: a temporary directory).
 set -u
 here=$EPURE_SOURCE_DIR/tests
@@ -32,8 +32,24 @@ grep -v -E $'^[ \t]*\r?$' "$tmp/lines.jsonl" | sed $'s/\r$//' >"$tmp/solve.jsonl
 "$EPURE" solve "$tmp/solve.jsonl" >"$tmp/expected.jsonl" 2>/dev/null
 [ $? -le 1 ] || { echo "FAIL: epure solve"; exit 1; }
 
+# lines decided by digits beyond a double's 17 (and one whose extra digits decide nothing): their
+# views must carry the digits written and never give another verdict than epure solve's
+cat >"$tmp/long.jsonl" <<'JSONL'
+{"kind":"segments","A":[0,0],"B":[3,1],"C":[0,1],"D":[0.37037036703703703673,1.12345678901234567891]}
+{"kind":"segments","A":[0,0],"B":[3,3],"C":[1,0],"D":[2,1.0000000000000000000001]}
+{"kind":"segments","A":[0,0],"B":[3,1],"C":[0,1],"D":[0.37037036703703703673,1.123456789012345678915]}
+{"kind":"vectors","u":[8.44,3.98,-7.98],"v":[33.76,15.92,-3.19199999999999999996624e1]}
+{"kind":"ray_square","A":[-9.999999999999999999999999e-1,-0.9],"u":[0.8,-0.08]}
+{"kind":"vectors","u":[0.1000000000000000055511151231257827,0.3],"v":[1,3]}
+{"kind":"projection","A":[0,0],"B":[2,0],"C":[1.00000000000000000001,5]}
+JSONL
+"$EPURE" solve "$tmp/long.jsonl" >"$tmp/long.expected" || { echo "FAIL: epure solve (long digits)"; exit 1; }
+cat "$tmp/long.jsonl" >>"$tmp/solve.jsonl"
+cat "$tmp/long.expected" >>"$tmp/expected.jsonl"
+
 "$EPURE" explore --out "$tmp/page" >/dev/null || { echo "FAIL: epure explore"; exit 1; }
 "$EPURE" generate --format svg --sheets 2 --seed 3 --jobs 1 --quiet --out "$tmp/set" || { echo "FAIL: epure generate"; exit 1; }
 [ -f "$tmp/set/explore.html" ] || { echo "FAIL: epure generate wrote no explore.html"; exit 1; }
 
-node "$here/browser/explore_test.mjs" "$tmp/page/explore.html" "$tmp/solve.jsonl" "$tmp/expected.jsonl" "$tmp/set" "$out"
+node "$here/browser/explore_test.mjs" "$tmp/page/explore.html" "$tmp/solve.jsonl" "$tmp/expected.jsonl" "$tmp/set" "$out" \
+  "$tmp/long.jsonl" "$tmp/long.expected"

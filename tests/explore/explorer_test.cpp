@@ -338,3 +338,53 @@ TEST_CASE("explore page: a label may hold anything; the configuration still pars
   CHECK(json::parse(config)["labels"]["en"] == json({"<!--<script>", "</script><b>"}));
   CHECK(html.find("<!--<script>") == std::string::npos);
 }
+
+TEST_CASE("explore: a number keeps every digit written; a verdict that depends on digits beyond a double's is solve's") {
+  // 1. Digits beyond the 17th that decide nothing: the view's instance keeps them, its solution
+  // is `epure solve`'s for them to the bit, and a drag of another datum keeps them too.
+  const std::string long_c = R"({"kind":"projection","A":[0,0],"B":[2,0],"C":[1.00000000000000000001,5]})";
+  const json v = view_of(long_c);
+  REQUIRE(!v.contains("error"));
+  CHECK(v["instance"].get<std::string>().find("1.00000000000000000001") != std::string::npos);
+  CHECK(v["solution"] == json::parse(ex::solve(long_c)));
+  const json b = handle(v, "B");
+  const std::string dragged = ex::drag(long_c, "B", b["x"].get<double>() + 20, b["y"], v["frame"].dump(), false);
+  CHECK(dragged.find("1.00000000000000000001") != std::string::npos);
+  CHECK(json::parse(dragged)["B"] != json::array({2, 0}));
+  const std::string nudged = ex::nudge(long_c, "A", 1, 0, 0, false);
+  CHECK(nudged.find("1.00000000000000000001") != std::string::npos);
+  CHECK(json::parse(view_of(dragged)["instance"].get<std::string>()) == json::parse(dragged));
+  CHECK(view_of(dragged)["solution"] == json::parse(ex::solve(dragged)));
+  // vectors in the plane decide nothing: u is one tenth exactly, its cross product with (1, 3)
+  // not 0, as solve says; the steps' two decimals show the same
+  const std::string tenth = R"({"kind":"vectors","u":[0.1000000000000000055511151231257827,0.3],"v":[1,3]})";
+  const json t = view_of(tenth);
+  REQUIRE(!t.contains("error"));
+  CHECK(t["solution"] == json::parse(ex::solve(tenth)));
+  CHECK(t["solution"]["cross"].get<double>() > 0);
+  CHECK(json::parse(t["instance"].get<std::string>()) == json::parse(tenth));
+  CHECK(t["instance"].get<std::string>().find("0.1000000000000000055511151231257827") != std::string::npos);
+
+  // 2. Digits beyond the 17th that decide: parallel as written, not as the doubles (and the
+  // other way round), not collinear as written though the doubles are. The worked steps, in
+  // doubles, cannot follow: the view says so with `epure solve`'s answer, never the doubles'.
+  struct Case {
+    std::string line, verdict;
+  };
+  const Case cases[] = {
+      {R"({"kind":"segments","A":[0,0],"B":[3,1],"C":[0,1],"D":[0.37037036703703703673,1.12345678901234567891]})",
+       R"("reason":"parallel")"},
+      {R"({"kind":"segments","A":[0,0],"B":[3,3],"C":[1,0],"D":[2,1.0000000000000000000001]})", R"("reason":"outside")"},
+      {R"({"kind":"vectors","u":[8.44,3.98,-7.98],"v":[33.76,15.92,-3.19199999999999999996624e1]})",
+       R"("collinear":false)"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.line);
+    const std::string solved = ex::solve(c.line);
+    CHECK(solved.find(c.verdict) != std::string::npos);
+    const json w = view_of(c.line);
+    REQUIRE(w.contains("error"));
+    CHECK(w["error"].get<std::string>().find(solved) != std::string::npos);
+    CHECK(w["solution"] == json::parse(solved));
+  }
+}
