@@ -39,7 +39,7 @@ grep -q '^<title>epure — corrigés à manipuler</title>$' "$page" || fail "exp
 [ -s "$tmp/set/explore.html" ] || fail "generate wrote no explore.html"
 id=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheets"][1]["id"])' "$tmp/set/key.json")
 grep -q "href=\"explore.html#$id.1\"" "$tmp/set/index.html" || fail "index.html has no link to explore.html#$id.1"
-grep -q "\"$id\":\[{\"kind\"" "$tmp/set/explore.html" || fail "explore.html does not hold sheet $id"
+grep -q "\"$id\":\[\"{\\\\\"kind\\\\\"" "$tmp/set/explore.html" || fail "explore.html does not hold sheet $id (its instances as their text)"
 # and what the sheets call their exercises, in both languages, so that a linked one is titled
 # as on its paper
 grep -q '"labels":{"en":\["Preamble","Exercise 1",' "$tmp/set/explore.html" || fail "explore.html has no exercise labels"
