@@ -13,6 +13,7 @@
 #include "geometry/degenerate.h"
 #include "geometry/quadratic.h"
 #include "geometry/ray_circle.h"
+#include "support/portable.h"
 
 namespace epure::geo {
 
@@ -54,6 +55,79 @@ ExactDecimal trig(double p, double, int, ExactDecimal*) { return exact::exact_va
 template <int K>
 exact::Quadratic<K> trig(double p, double q, int, exact::Quadratic<K>*) {
   return {exact::exact_value(p), exact::exact_value(q)};
+}
+
+// A double-double (hi + lo, about 2^-104 of itself): the values of a turned figure from the
+// decimals with cos θ and sin θ to that precision, where the carried ray's doubles are several
+// ulps off (its rounded cos θ, sin θ, A − C and sizes, magnified near tangency). Portable's
+// Dekker products (no fma): the same bits natively and in the browser.
+struct Dd {
+  double hi = 0, lo = 0;
+  friend Dd operator+(Dd a, Dd b) {
+    const auto s = portable::detail::dd_add({a.hi, a.lo}, {b.hi, b.lo});
+    return {s.hi, s.lo};
+  }
+  friend Dd operator-(Dd a) { return {-a.hi, -a.lo}; }
+  friend Dd operator-(Dd a, Dd b) { return a + (-b); }
+  friend Dd operator*(Dd a, Dd b) {
+    const auto p = portable::detail::dd_mul({a.hi, a.lo}, {b.hi, b.lo});
+    return {p.hi, p.lo};
+  }
+};
+double to_double(const Dd& x) { return x.hi + x.lo; }
+Dd number(const Decimal& d, Dd*) {  // its nearest double and rounded rest
+  const auto s = portable::detail::two_sum(d.hi, d.lo);
+  return {s.hi, s.lo};
+}
+// √2 and √3 to 2^-106 of themselves
+constexpr Dd kSqrt2{0x1.6a09e667f3bcdp+0, -0x1.bdd3413b26456p-54};
+constexpr Dd kSqrt3{0x1.bb67ae8584caap+0, 0x1.cec95d0b5c1e3p-54};
+Dd trig(double p, double q, int k, Dd*) {  // p + q·√k, p and q in {0, ±½, ±1}: exact products
+  if (q == 0) return {p, 0};
+  const Dd root = k == 2 ? kSqrt2 : kSqrt3;
+  return Dd{p, 0} + Dd{q * root.hi, q * root.lo};
+}
+// cos θ and sin θ of the decimal angle in double-double: its double reduced to a quarter turn
+// and a rest in [−45°, 45°] exactly (as cos_sin_degrees does), the decimal's rest added, times
+// π/180 in double-double, then the Taylor series in Horner's form with double-double
+// coefficients (−1)^k/(2k+1)! and (−1)^k/(2k)! to x^27 and x^28 (the next below 2^-110 for
+// |x| ≤ π/4): about 2^-100 of each, without dd_sin_cos's divisions (a tenth of its time).
+constexpr Dd kSinSeries[] = {
+    {0x1.0000000000000p+0, 0x0.0p+0}, {-0x1.5555555555555p-3, -0x1.5555555555555p-57},
+    {0x1.1111111111111p-7, 0x1.1111111111111p-63}, {-0x1.a01a01a01a01ap-13, -0x1.a01a01a01a01ap-73},
+    {0x1.71de3a556c734p-19, -0x1.c154f8ddc6c00p-73}, {-0x1.ae64567f544e4p-26, 0x1.c062e06d1f209p-80},
+    {0x1.6124613a86d09p-33, 0x1.f28e0cc748ebep-87}, {-0x1.ae7f3e733b81fp-41, -0x1.1d8656b0ee8cbp-97},
+    {0x1.952c77030ad4ap-49, 0x1.ac981465ddc6cp-103}, {-0x1.2f49b46814157p-57, -0x1.2650f61dbdcb4p-112},
+    {0x1.71b8ef6dcf572p-66, -0x1.d043ae40c4647p-120}, {-0x1.761b41316381ap-75, 0x1.3423c7d91404fp-130},
+    {0x1.3f3ccdd165fa9p-84, -0x1.58ddadf344487p-139}, {-0x1.d1ab1c2dccea3p-94, -0x1.054d0c78aea14p-149}};
+constexpr Dd kCosSeries[] = {
+    {0x1.0000000000000p+0, 0x0.0p+0}, {-0x1.0000000000000p-1, 0x0.0p+0},
+    {0x1.5555555555555p-5, 0x1.5555555555555p-59}, {-0x1.6c16c16c16c17p-10, 0x1.f49f49f49f49fp-65},
+    {0x1.a01a01a01a01ap-16, 0x1.a01a01a01a01ap-76}, {-0x1.27e4fb7789f5cp-22, -0x1.cbbc05b4fa99ap-76},
+    {0x1.1eed8eff8d898p-29, -0x1.2aec959e14c06p-83}, {-0x1.93974a8c07c9dp-37, -0x1.05d6f8a2efd1fp-92},
+    {0x1.ae7f3e733b81fp-45, 0x1.1d8656b0ee8cbp-101}, {-0x1.6827863b97d97p-53, -0x1.eec01221a8b0bp-107},
+    {0x1.e542ba4020225p-62, 0x1.ea72b4afe3c2fp-120}, {-0x1.0ce396db7f853p-70, 0x1.aebcdbd20331cp-124},
+    {0x1.f2cf01972f578p-80, -0x1.9ada5fcc1ab14p-135}, {-0x1.88e85fc6a4e5ap-89, 0x1.71c37ebd16540p-143},
+    {0x1.0a18a2635085dp-98, 0x1.b9e2e28e1aa54p-153}};
+std::array<Dd, 2> dd_cos_sin(const Decimal& angle_deg) {
+  using portable::detail::two_sum;
+  constexpr Dd kPiOver180{0x1.1df46a2529d39p-6, 0x1.5c1d8becdd291p-62};
+  const double turns = std::fmod(angle_deg.hi, 360.0);
+  const double quarter = std::nearbyint(turns / 90.0);
+  const double rest = turns - 90.0 * quarter;
+  const auto r = two_sum(rest, angle_deg.lo);
+  const Dd x = Dd{r.hi, r.lo} * kPiOver180, x2 = x * x;
+  Dd sn = kSinSeries[std::size(kSinSeries) - 1], cs = kCosSeries[std::size(kCosSeries) - 1];
+  for (std::size_t k = std::size(kSinSeries) - 1; k-- > 0;) sn = kSinSeries[k] + x2 * sn;
+  for (std::size_t k = std::size(kCosSeries) - 1; k-- > 0;) cs = kCosSeries[k] + x2 * cs;
+  sn = sn * x;
+  const Dd c = cs, s = sn;
+  switch (((static_cast<int>(quarter) % 4) + 4) % 4) {
+    case 0: return {c, s};
+    case 1: return {-s, c};
+    case 2: return {-c, -s};
+    default: return {s, -c};
+  }
 }
 
 // An angle as written whose cos and sin are p + q·√k with p, q in {0, ±½, ±1}: a whole number
@@ -136,6 +210,15 @@ Turned<Num> turned(const WrittenTurned& w, const DPoint2& direction, const Speci
   if constexpr (std::is_same_v<Num, Bounded>) {
     c = angle.k == 0 ? angle.cos : trig(angle.cp, angle.cq, angle.k, tag);
     sn = angle.k == 0 ? angle.sin : trig(angle.sp, angle.sq, angle.k, tag);
+  } else if constexpr (std::is_same_v<Num, Dd>) {
+    if (angle.k == 0) {
+      const auto cs = dd_cos_sin(w.angle_deg);
+      c = cs[0];
+      sn = cs[1];
+    } else {
+      c = trig(angle.cp, angle.cq, angle.k, tag);
+      sn = trig(angle.sp, angle.sq, angle.k, tag);
+    }
   } else {
     c = trig(angle.cp, angle.cq, angle.k, tag);
     sn = trig(angle.sp, angle.sq, angle.k, tag);
@@ -353,6 +436,95 @@ std::optional<int> quarter_turns(const Decimal& angle_deg) {
 
 namespace {
 
+double ulp_of(double x) {
+  const double m = std::abs(x);
+  return std::nextafter(m, INFINITY) - m;
+}
+Dd dd_div(Dd a, Dd b) {
+  const auto q = portable::detail::dd_div({a.hi, a.lo}, {b.hi, b.lo});
+  return {q.hi, q.lo};
+}
+Dd dd_sqrt(Dd x) {  // the double root and one Newton step
+  if (!(x.hi > 0)) return {};
+  const double r = std::sqrt(x.hi);
+  return Dd{r, 0} + Dd{(x - Dd{r, 0} * Dd{r, 0}).hi / (2 * r), 0};
+}
+// cos θ and sin θ in double-double, θ the angle as written.
+std::array<Dd, 2> dd_rotation(const WrittenTurned& w, const SpecialAngle& angle) {
+  Dd* tag = nullptr;
+  if (angle.k == 0) return dd_cos_sin(w.angle_deg);
+  if (angle.k != 1) return {trig(angle.cp, angle.cq, angle.k, tag), trig(angle.sp, angle.sq, angle.k, tag)};
+  constexpr double c[] = {1, 0, -1, 0}, sn[] = {0, 1, 0, -1};
+  return {Dd{c[angle.quarter], 0}, Dd{sn[angle.quarter], 0}};
+}
+
+// The hit of decided decisions from the decimals in double-double: t along the decimal
+// direction, I = A + t·u, the world normal (the gradient turned back, normalised), each rounded
+// once from about 2^-100 of its value (but near tangency, where t's root is that much less
+// precise relatively: still far below an ulp short of 2^-50 of β²).
+Hit2 dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, const DPoint2& direction,
+            const std::array<Dd, 2>& rot, bool ellipse) {
+  Dd* tag = nullptr;
+  const auto &X = f.X, &U = f.U, &s = f.s;
+  Dd t;
+  Dd g0, g1;  // the outward normal in the figure's frame (not normalised)
+  if (ellipse) {
+    const Dd a2 = s[0] * s[0], b2 = s[1] * s[1];
+    const Dd alpha = b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]);
+    const Dd beta = b2 * (X[0] * U[0]) + a2 * (X[1] * U[1]);
+    const Dd gamma = b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2;
+    const Dd root = dd_sqrt(beta * beta - alpha * gamma);
+    if (d.tangent) t = dd_div(-beta, alpha);  // the line tangent as written: no chord
+    else if (d.inside) t = beta.hi <= 0 ? dd_div(root - beta, alpha) : dd_div(-gamma, beta + root);
+    else t = dd_div(gamma, root - beta);
+    const Dd P0 = X[0] + t * U[0], P1 = X[1] + t * U[1];
+    g0 = b2 * P0;
+    g1 = a2 * P1;
+  } else {
+    const int n = d.face->axis;
+    const Dd gap = d.inside ? (d.face->sign > 0 ? s[n] - X[n] : s[n] + X[n])
+                            : (d.face->sign > 0 ? X[n] - s[n] : -X[n] - s[n]);
+    t = dd_div(gap, U[n].hi < 0 ? -U[n] : U[n]);
+    if (t.hi < 0) t = {};
+    (n == 0 ? g0 : g1) = Dd{static_cast<double>(d.face->sign), 0};
+  }
+  const Dd I0 = number(w.A[0], tag) + t * number(direction[0], tag);
+  const Dd I1 = number(w.A[1], tag) + t * number(direction[1], tag);
+  // R(θ)g = (c·g0 − s·g1, s·g0 + c·g1)
+  const Dd n0 = rot[0] * g0 - rot[1] * g1, n1 = rot[1] * g0 + rot[0] * g1;
+  const Dd norm = dd_sqrt(n0 * n0 + n1 * n1);
+  return Hit2{to_double(t), {to_double(I0), to_double(I1)}, {to_double(dd_div(n0, norm)), to_double(dd_div(n1, norm))}};
+}
+
+// A hit of the exact decisions `d` (the kernels', or one rebuilt from the exact numbers, whose N
+// comes from the carried ray), checked against its values from the decimals in double-double
+// (dd_hit, each rounded once from far below an ulp: within 0.5 of its bound plus a little): kept
+// when each value is within kKeptWithin of its bound of those (the contract's bound: t and I
+// against ulp(max(S, |value|)), S the figure's largest datum; N against max(ulp(1), ulp(S)/its
+// smallest size)), so within 4 of the exact figure's, and the keys' bits stay; else the hit
+// from the decimals. A hit at A (t = 0) is exact already.
+constexpr double kKeptWithin = 3.25;
+template <class Result>
+Result refined(Result e, const Decisions& d, const WrittenTurned& w, const DPoint2& direction,
+               const SpecialAngle& angle) {
+  if (!e.hit || !(e.hit->t > 0)) return e;
+  constexpr bool ellipse = std::is_same_v<Result, RayEllipse>;
+  if constexpr (!ellipse)
+    if (!d.face) return e;
+  const Hit2 h = dd_hit(turned<Dd>(w, direction, angle), d, w, direction, dd_rotation(w, angle), ellipse);
+  const double S = std::max({std::abs(w.A[0].hi), std::abs(w.A[1].hi), std::abs(w.C[0].hi), std::abs(w.C[1].hi),
+                             std::abs(w.sx.hi), std::abs(w.sy.hi)});
+  const double n_unit = std::max(ulp_of(1), ulp_of(S) / std::min(std::abs(w.sx.hi), std::abs(w.sy.hi)));
+  auto near = [](double a, double b, double unit) { return std::abs(a - b) <= kKeptWithin * unit; };
+  const Hit2& k = *e.hit;
+  if (near(k.t, h.t, ulp_of(std::max(S, std::abs(h.t)))) && near(k.I.x, h.I.x, ulp_of(std::max(S, std::abs(h.I.x)))) &&
+      near(k.I.y, h.I.y, ulp_of(std::max(S, std::abs(h.I.y)))) && near(k.N.x, h.N.x, n_unit) &&
+      near(k.N.y, h.N.y, n_unit))
+    return e;
+  e.hit = h;
+  return e;
+}
+
 // The kernels' result where their decisions are the exact ones (their values to the bit: the keys
 // do not move), else the one rebuilt from the exact decisions; also where `redo` says the
 // kernels' values are not to be kept.
@@ -360,10 +532,10 @@ template <class Result, class Decide>
 Result on_the_decimals(Result e, const WrittenTurned& w, const DPoint2& direction, const Ray2& ray,
                        const SpecialAngle& angle, Decide decide_on, std::string_view figure, bool redo = false) {
   const Decisions exact = decide(w, direction, angle, decide_on, figure);
-  if (exact == kernel_decisions(e) && !redo) return e;
+  if (exact == kernel_decisions(e) && !redo) return refined(e, exact, w, direction, angle);
   return on_exact(angle.k, [&](auto* tag) {
     using Num = std::remove_pointer_t<decltype(tag)>;
-    return rebuilt(e, exact, turned<Num>(w, direction, angle), ray);
+    return refined(rebuilt(e, exact, turned<Num>(w, direction, angle), ray), exact, w, direction, angle);
   });
 }
 

@@ -13,9 +13,11 @@
 //
 // Each polynomial is first bounded in floating point with its error (midpoint and radius); only
 // where that cannot tell a sign is it evaluated exactly on the decimals (decimal.h). When the
-// exact decisions are those of the kernels' doubles, the kernels' result is kept as it is (its
-// values, to the bit); otherwise the hit is rebuilt from the exact decisions, its values from the
-// carried ray (within rounding of the boundary the figure is, so they are as accurate).
+// exact decisions are those of the kernels' doubles, the kernels' result is kept; otherwise the
+// hit is rebuilt from the exact decisions. Either way its t, I and N are then checked against
+// their values from the decimals in double-double (cos θ and sin θ to about 2^-100): kept, to
+// the bit, within 3.25 ulps of their bound of those, else those (within 4 ulps of the exact
+// figure's at any angle, near tangency too, where the carried ray's rounding is magnified).
 //
 // At any other angle with unequal sizes the same polynomials are filtered with cos θ and sin θ
 // enclosed within a proven bound (cos_sin_degrees' rounding, and the angle's own when its

@@ -5,8 +5,8 @@
 # rules (compare_jsonl.py), the exit status is 1 exactly when some line is bad, there is one output
 # line per non-blank input line, and one stderr line per bad line. Decisions must be the exact
 # ones and every number within 4 ulps of the figure's scale (compare_jsonl.py --ulps 4: the
-# contract's bound, geometry's printed_values for ray/circle and ray/sphere), but for ellipses and
-# rectangles whose carried ray is rounded, which are measured (README).
+# contract's bound, geometry's printed_values for ray/circle and ray/sphere, turned_written's
+# double-double check for turned ellipses and rectangles at any angle).
 #
 # Another seed or size: EPURE_ADVERSARIAL_SEED=7 EPURE_ADVERSARIAL_LINES=20000 ctest -R adversarial
 set -u

@@ -2,6 +2,7 @@
 // against figures worked by hand that are on a boundary as decimals and not as their doubles.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -197,4 +198,31 @@ TEST_CASE("turned figures at other angles: decided where the filter is certain, 
   }
   // equal radii stay a circle at any angle, decided exactly: no refusal
   CHECK(ellipse(line(p("3", "4"), p("-1", "0"), p("0", "0"), "5", "5", "17")).hit->t == 0);
+}
+
+TEST_CASE("turned ellipse values: within 4 ulps of the decimal figure, near tangency too") {
+  // |x − exact| in units of `unit`
+  const auto off = [](double x, double exact, double unit) { return std::abs(x - exact) / unit; };
+  const auto ulp = [](double x) { return std::nextafter(std::abs(x), INFINITY) - std::abs(x); };
+  SUBCASE("1. at 57°, 1e-10 of β² from tangency: the kernels' carried ray (cos θ, sin θ and A − C rounded) "
+          "was 29,514 ulps off in t; the values come from the decimals in double-double") {
+    // worked in 60-digit arithmetic (mpmath): t along u, I = A + t·u, the outward normal
+    const auto e = ellipse(line(p("1.173660959529485285e0", "1.0753147787317803645e1"), p("-0.00049299247", "-0.00087003358"),
+                                p("2.012", "-4.116"), "8.265", "8.059", "57"));
+    REQUIRE(e.hit);
+    const double S = 10.753147787317803645;  // the figure's largest datum
+    CHECK(off(e.hit->t, 12548.39458878290875533086, ulp(12548.4)) <= 4);
+    CHECK(off(e.hit->I.x, -5.012603083329235196075184, ulp(S)) <= 4);
+    CHECK(off(e.hit->I.y, -0.1643768800136183022138486, ulp(S)) <= 4);
+    CHECK(off(e.hit->N.x, -0.8700265278588711778759098, ulp(1.0)) <= 4);
+    CHECK(off(e.hit->N.y, 0.4930049095311697341786966, ulp(1.0)) <= 4);
+  }
+  SUBCASE("2. a quarter turn, tangent as written at the end of a thin ellipse's axis: N is the axis (it was "
+          "26 ulps of its bound off, from the carried ray's canonical point)") {
+    const auto e = ellipse(line(p("-3.469", "181.567"), p("0", "-0.073"), p("1.244", "94.957"), "0.116", "4.713", "270"));
+    REQUIRE(e.hit);
+    CHECK(off(e.hit->t, 1186.438356164383561643836, ulp(1186.4)) <= 4);
+    CHECK(off(e.hit->N.x, -1, ulp(1.0)) <= 4);
+    CHECK(off(e.hit->N.y, 0, ulp(181.567) / 0.116) <= 4);
+  }
 }
