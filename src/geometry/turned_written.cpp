@@ -462,8 +462,12 @@ std::array<Dd, 2> dd_rotation(const WrittenTurned& w, const SpecialAngle& angle)
 // direction, I = A + t·u, the world normal (the gradient turned back, normalised), each rounded
 // once from about 2^-100 of its value (but near tangency, where t's root is that much less
 // precise relatively: still far below an ulp short of 2^-50 of β²).
-Hit2 dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, const DPoint2& direction,
-            const std::array<Dd, 2>& rot, bool ellipse) {
+struct DdHit {
+  Hit2 hit;  // rounded
+  Dd t;      // t before its rounding
+};
+DdHit dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, const DPoint2& direction,
+             const std::array<Dd, 2>& rot, bool ellipse) {
   Dd* tag = nullptr;
   const auto &X = f.X, &U = f.U, &s = f.s;
   Dd t;
@@ -493,7 +497,8 @@ Hit2 dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, con
   // R(θ)g = (c·g0 − s·g1, s·g0 + c·g1)
   const Dd n0 = rot[0] * g0 - rot[1] * g1, n1 = rot[1] * g0 + rot[0] * g1;
   const Dd norm = dd_sqrt(n0 * n0 + n1 * n1);
-  return Hit2{to_double(t), {to_double(I0), to_double(I1)}, {to_double(dd_div(n0, norm)), to_double(dd_div(n1, norm))}};
+  return {Hit2{to_double(t), {to_double(I0), to_double(I1)}, {to_double(dd_div(n0, norm)), to_double(dd_div(n1, norm))}},
+          t};
 }
 
 // A hit of the exact decisions `d` (the kernels', or one rebuilt from the exact numbers, whose N
@@ -511,17 +516,26 @@ Result refined(Result e, const Decisions& d, const WrittenTurned& w, const DPoin
   constexpr bool ellipse = std::is_same_v<Result, RayEllipse>;
   if constexpr (!ellipse)
     if (!d.face) return e;
-  const Hit2 h = dd_hit(turned<Dd>(w, direction, angle), d, w, direction, dd_rotation(w, angle), ellipse);
+  const DdHit dd = dd_hit(turned<Dd>(w, direction, angle), d, w, direction, dd_rotation(w, angle), ellipse);
+  const Hit2& h = dd.hit;
   const double S = std::max({std::abs(w.A[0].hi), std::abs(w.A[1].hi), std::abs(w.C[0].hi), std::abs(w.C[1].hi),
                              std::abs(w.sx.hi), std::abs(w.sy.hi)});
   const double n_unit = std::max(ulp_of(1), ulp_of(S) / std::min(std::abs(w.sx.hi), std::abs(w.sy.hi)));
   auto near = [](double a, double b, double unit) { return std::abs(a - b) <= kKeptWithin * unit; };
+  // t is printed times the direction's length as solve rounds it (solve::raw_direction): compared
+  // as printed, against t·‖u‖ in double-double, and printed as that when replaced
+  Dd* tag = nullptr;
+  const double length = norm(hi_vec(direction));
+  const Dd ux = number(direction[0], tag), uy = number(direction[1], tag);
+  const double printed = to_double(dd.t * dd_sqrt(ux * ux + uy * uy));
   const Hit2& k = *e.hit;
-  if (near(k.t, h.t, ulp_of(std::max(S, std::abs(h.t)))) && near(k.I.x, h.I.x, ulp_of(std::max(S, std::abs(h.I.x)))) &&
+  if (near(k.t * length, printed, ulp_of(std::max(S, std::abs(printed)))) &&
+      near(k.I.x, h.I.x, ulp_of(std::max(S, std::abs(h.I.x)))) &&
       near(k.I.y, h.I.y, ulp_of(std::max(S, std::abs(h.I.y)))) && near(k.N.x, h.N.x, n_unit) &&
       near(k.N.y, h.N.y, n_unit))
     return e;
   e.hit = h;
+  e.hit->t = printed / length;
   return e;
 }
 
@@ -550,7 +564,10 @@ RayEllipse intersect_written(const WrittenTurned& w, const DPoint2& direction, c
     const RayCircle c = intersect_exact(w.A, direction, w.C, w.sx);
     const Decisions circle{c.inside, c.hit.has_value(), c.hit && !(c.hit->t > 0), std::nullopt};
     const bool near_tangent = c.half_chord && *c.half_chord <= 0x1p-12 * w.sx.hi;
-    if (circle == kernel_decisions(e) && !near_tangent) return e;
+    if (circle == kernel_decisions(e) && !near_tangent) {
+      const auto special = special_angle(w.angle_deg);
+      return refined(e, circle, w, direction, special ? *special : general_angle(w.angle_deg));
+    }
     e.inside = c.inside;
     e.hit = c.hit;
     return e;
