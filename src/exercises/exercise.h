@@ -135,8 +135,9 @@ class ExerciseKind {
   virtual std::vector<std::pair<std::string, double>> default_branches() const = 0;
   // The constraint names the spec may set for this kind, with their defaults.
   virtual std::map<std::string, double> default_constraints() const { return {}; }
-  // The points an exercise of this kind is worth when the spec does not say (exercises/points.h:
-  // the questions its branch asks share them, so every sheet of a set is worth the same).
+  // What an exercise of this kind adds to the sheet's total when the spec does not set its
+  // points (exercises/points.h): the sheet's questions share that total by their work, so the
+  // exercise's own worth follows the branch drawn while every sheet of a set is worth the same.
   virtual double default_points() const = 0;
   // The question fields this kind can ask (for validating a spec's points table).
   virtual std::vector<std::string> fields() const = 0;

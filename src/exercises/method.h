@@ -369,12 +369,25 @@ struct Faces {
 
 enum class AnswerType : std::uint8_t { number, point, boolean, choice, faces };
 
+// The work a question asks, its default weight in the sheet's points (exercises/points.h): a
+// number computed by a chain of steps, or a point in the plane (its two coordinates share it),
+// is worth four times a tick (a yes/no, a choice, a set of faces), which can mostly be read off
+// the printed figure. A coordinate of a point in space, asked alone, is one multiply-add
+// (I.x = A.x + t·u.x): half a computed number. Calibrated so that ticks stay under 15 % of every
+// sheet's points (tests/exercises/sheet_points_test.cpp measures it).
+inline constexpr double kComputedWork = 2;
+inline constexpr double kCoordinateWork = 1;
+inline constexpr double kTickWork = 0.5;
+constexpr double work_of(AnswerType type) {
+  return type == AnswerType::number || type == AnswerType::point ? kComputedWork : kTickWork;
+}
+
 // One question a kind can ask: its field (a point's group: "I" for I.x and I.y), its type, its
-// default weight within the exercise, and for a choice the contract words offered.
+// work (by default its type's: work_of), and for a choice the contract words offered.
 struct QuestionDecl {
   std::string_view field;
   AnswerType type;
-  double weight = 1;
+  double weight = work_of(type);
   std::span<const std::string_view> choices = {};
 };
 

@@ -1,8 +1,11 @@
 #include "exercises/points.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 namespace epure {
 
@@ -84,5 +87,65 @@ void spread_points(std::vector<Question>& questions, double total) {
   for (std::size_t i = 0; i < questions.size(); ++i) questions[i].points = static_cast<double>(share[i]) * kPointStep;
 }
 
+bool ticked(const Question& q) { return !std::holds_alternative<double>(q.expected); }
+
+namespace {
+
+// The pool shared across a sheet. A tick gets its work's share rounded down to a quarter (at
+// least a quarter), so ticks of equal weight get equal points and rounding never makes what can
+// be read off the figure worth more than its work; the computed answers share the rest by
+// largest remainder. Where that cannot hold (no computed answer, or a total too small to give
+// every tick a quarter) everything shares the pool by largest remainder alone.
+void spread_pool(std::vector<Question>& questions, double total) {
+  const long long units = std::llround(std::max(0.0, total) / kPointStep);
+  double weights = 0;
+  for (const Question& q : questions) weights += std::max(0.0, q.points);
+  std::vector<Question> computed;
+  long long tick_units = 0;
+  std::vector<long long> tick_share(questions.size(), -1);
+  for (std::size_t i = 0; i < questions.size(); ++i) {
+    const Question& q = questions[i];
+    if (!ticked(q)) {
+      computed.push_back(q);
+      continue;
+    }
+    const double w = std::max(0.0, q.points);
+    const double ideal = weights > 0 ? static_cast<double>(units) * w / weights : 0;
+    tick_share[i] = w > 0 ? std::max(1LL, static_cast<long long>(std::floor(ideal + kStepSlack))) : 0;
+    tick_units += tick_share[i];
+  }
+  if (computed.empty() || !(weights > 0) || tick_units > units) {
+    spread_points(questions, total);
+    return;
+  }
+  spread_points(computed, static_cast<double>(units - tick_units) * kPointStep);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < questions.size(); ++i)
+    questions[i].points = tick_share[i] >= 0 ? static_cast<double>(tick_share[i]) * kPointStep : computed[k++].points;
+}
+
+}  // namespace
+
+void spread_sheet_points(std::vector<ExerciseInstance>& exercises, const std::vector<std::optional<double>>& fixed,
+                         double pool) {
+  std::vector<Question> pooled;
+  for (std::size_t e = 0; e < exercises.size(); ++e) {
+    if (e < fixed.size() && fixed[e]) {
+      spread_points(exercises[e].questions, *fixed[e]);
+      continue;
+    }
+    for (const Question& q : exercises[e].questions) {
+      pooled.push_back(q);
+      // "I" of exercise 3 and "I" of exercise 4 are two points: groups are named per exercise
+      if (!q.point_group.empty()) pooled.back().point_group = fmt::format("{}\x1f{}", e, q.point_group);
+    }
+  }
+  spread_pool(pooled, pool);
+  std::size_t k = 0;
+  for (std::size_t e = 0; e < exercises.size(); ++e) {
+    if (e < fixed.size() && fixed[e]) continue;
+    for (Question& q : exercises[e].questions) q.points = pooled[k++].points;
+  }
+}
 
 }  // namespace epure

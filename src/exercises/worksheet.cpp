@@ -31,6 +31,8 @@ WorksheetSet::WorksheetSet(WorksheetSpec spec, std::uint64_t seed, const SetOpti
     const auto& e = spec_.exercises[slot];
     auto weights = e.branches.empty() ? find_kind(e.kind)->default_branches() : e.branches;
     schedules_.emplace_back(std::move(weights), mix64(seed_ ^ (0x5EEDULL + slot)));
+    fixed_points_.push_back(e.points);
+    if (!e.points) pool_ += find_kind(e.kind)->default_points();
   }
   used_.resize(spec_.exercises.size());
 }
@@ -62,9 +64,49 @@ ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std:
   const ExerciseKind& kind = *find_kind(spec_.exercises[slot].kind);
   ExerciseInstance instance = kind.make(rng, ctx);
   instance.number = ctx.number;
-  // the questions' weights become their shares of the exercise's points, whatever the branch
-  spread_points(instance.questions, spec_.exercises[slot].points.value_or(kind.default_points()));
   return instance;
+}
+
+void WorksheetSet::measure_work() {
+  if (!work_) {
+    work_.emplace(spec_.exercises.size());
+    for (std::size_t s = 0; s < spec_.exercises.size(); ++s) {
+      if (fixed_points_[s]) continue;
+      const auto& e = spec_.exercises[s];
+      const auto weights = e.branches.empty() ? find_kind(e.kind)->default_branches() : e.branches;
+      for (const auto& [name, weight] : weights) {
+        if (!(weight > 0)) continue;
+        // A branch asks the same questions on every instance (the course's cases): one instance
+        // measures it. One that cannot be drawn weighs nothing here; its draw says why.
+        double work = 0;
+        try {
+          for (const Question& q : draw(0, static_cast<int>(s), 0, name).questions) work += q.points;
+        } catch (const std::exception&) {
+          work = 0;
+        }
+        (*work_)[s].emplace_back(name, work);
+      }
+    }
+  }
+}
+
+const std::vector<std::pair<std::string, double>>& WorksheetSet::branch_work(int slot) {
+  measure_work();
+  return work_->at(static_cast<std::size_t>(slot));
+}
+
+std::string WorksheetSet::branch(int index, int slot) {
+  if (!balance_) {
+    measure_work();
+    balance_.emplace(schedules_, *work_);
+  }
+  return balance_->at(index, slot);
+}
+
+double WorksheetSet::sheet_points() const {
+  double total = pool_;
+  for (const auto& p : fixed_points_) total += p.value_or(0);
+  return total;
 }
 
 Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
@@ -105,6 +147,8 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
     used_[slot].insert(chosen->fingerprint);
     sheet.exercises.push_back(std::move(*chosen));
   }
+  // the questions' weights become their shares of the sheet's points (points.h)
+  spread_sheet_points(sheet.exercises, fixed_points_, pool_);
   return sheet;
 }
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "exercises/exercise.h"
-#include "exercises/schedule.h"
+#include "exercises/balance.h"
 #include "exercises/sheet_id.h"
 #include "exercises/spec.h"
 #include "render/document.h"
@@ -51,11 +51,21 @@ class WorksheetSet {
   std::uint64_t seed() const { return seed_; }
   const std::string& language() const { return language_; }
 
-  // The branch exercise `slot` of sheet `index` draws (the schedule is sequential: cheap for
-  // increasing indices).
-  std::string branch(int index, int slot) { return schedules_[slot].at(index); }
+  // The branch exercise `slot` of sheet `index` draws: the exercise's schedule, balanced so that
+  // the sheets of a block ask about the same work (balance.h). Cheap for increasing indices.
+  std::string branch(int index, int slot);
+  // The work each branch of exercise `slot` asks (its questions' weights, measured on one
+  // instance of each), in the order of the exercise's branch weights; empty for an exercise whose
+  // spec fixes its points (its work earns nothing from the sheet's pool).
+  const std::vector<std::pair<std::string, double>>& branch_work(int slot);
+  // What the exercises whose spec does not fix their points share on every sheet: their kinds'
+  // default points added up (points.h).
+  double pool_points() const { return pool_; }
+  // The sheet's total: the pool and every fixed exercise's points.
+  double sheet_points() const;
   // One exercise of one sheet at one attempt: a pure function of its arguments (thread-safe).
-  // An instance whose fingerprint is in `taken` comes back unbuilt (identity only).
+  // An instance whose fingerprint is in `taken` comes back unbuilt (identity only). Its questions'
+  // points are their weights: the sheet's points are shared once the sheet is drawn (next()).
   ExerciseInstance draw(int index, int slot, int attempt, const std::string& branch,
                         const std::unordered_set<std::uint64_t>* taken = nullptr, int widening = 0) const;
 
@@ -92,11 +102,17 @@ class WorksheetSet {
 
  private:
   ExerciseContext context(int slot, int n, const std::string& branch) const;
+  void measure_work();
 
   WorksheetSpec spec_;
   std::uint64_t seed_;
   std::string language_;
   std::vector<BranchSchedule> schedules_;
+  // measured at the first branch() (a set used to rebuild one exercise never pays for it)
+  std::optional<std::vector<std::vector<std::pair<std::string, double>>>> work_;
+  std::optional<BranchBalance> balance_;
+  std::vector<std::optional<double>> fixed_points_;  // per slot: the spec's `points`
+  double pool_ = 0;
   std::vector<std::unordered_set<std::uint64_t>> used_;  // fingerprints per slot
   int next_index_ = 0;
   CombCells comb_cells_;

@@ -44,7 +44,8 @@ struct Space<2> : Dimension<2> {
       {"t_proj", method::AnswerType::number}, {"d2", method::AnswerType::number},
       {"inside", method::AnswerType::boolean}, {"hit", method::AnswerType::boolean},
       {"t", method::AnswerType::number},      {"I", method::AnswerType::point},
-      {"N", method::AnswerType::point},       {"reason", method::AnswerType::choice, 1, kReasons}};
+      {"N", method::AnswerType::point},
+      {"reason", method::AnswerType::choice, method::kTickWork, kReasons}};
 };
 
 template <>
@@ -57,10 +58,14 @@ struct Space<3> : Dimension<3> {
   static constexpr method::QuestionDecl kQuestions[] = {
       {"t_proj", method::AnswerType::number},  {"d2", method::AnswerType::number},
       {"inside", method::AnswerType::boolean}, {"hit", method::AnswerType::boolean},
-      {"t", method::AnswerType::number},       {"I.x", method::AnswerType::number, 0.5},
-      {"I.y", method::AnswerType::number, 0.5}, {"I.z", method::AnswerType::number, 0.5},
-      {"N.x", method::AnswerType::number, 0.5}, {"N.y", method::AnswerType::number, 0.5},
-      {"N.z", method::AnswerType::number, 0.5}, {"reason", method::AnswerType::choice, 1, kReasons}};
+      {"t", method::AnswerType::number},
+      {"I.x", method::AnswerType::number, method::kCoordinateWork},
+      {"I.y", method::AnswerType::number, method::kCoordinateWork},
+      {"I.z", method::AnswerType::number, method::kCoordinateWork},
+      {"N.x", method::AnswerType::number, method::kCoordinateWork},
+      {"N.y", method::AnswerType::number, method::kCoordinateWork},
+      {"N.z", method::AnswerType::number, method::kCoordinateWork},
+      {"reason", method::AnswerType::choice, method::kTickWork, kReasons}};
 };
 
 template <int Dim>

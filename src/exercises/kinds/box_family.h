@@ -85,9 +85,10 @@ struct Space<2> : Dimension<2> {
   static constexpr std::string_view kStepOff[] = {"off.+x", "off.+y", "off.-x", "off.-y"};
   static constexpr Name u_hat = "u_hat", I = "I", N = "N";
   static constexpr method::QuestionDecl kQuestions[] = {
-      {"faces", method::AnswerType::faces, 1, kFaceNames}, {"inside", method::AnswerType::boolean},
-      {"hit", method::AnswerType::boolean},                {"t", method::AnswerType::number},
-      {"I", method::AnswerType::point},                    {"N", method::AnswerType::point}};
+      {"faces", method::AnswerType::faces, method::kTickWork, kFaceNames},
+      {"inside", method::AnswerType::boolean},
+      {"hit", method::AnswerType::boolean},   {"t", method::AnswerType::number},
+      {"I", method::AnswerType::point},       {"N", method::AnswerType::point}};
   static constexpr FaceTexts kTexts = {"exit_side", "side", "side_away", "side_cross", "side_on", "side_off"};
 };
 
@@ -110,11 +111,15 @@ struct Space<3> : Dimension<3> {
   static constexpr Name u_hat = {"u_hat.x", "u_hat.y", "u_hat.z"}, I = {"I.x", "I.y", "I.z"},
                         N = {"N.x", "N.y", "N.z"};
   static constexpr method::QuestionDecl kQuestions[] = {
-      {"faces", method::AnswerType::faces, 1, kFaceNames}, {"inside", method::AnswerType::boolean},
-      {"hit", method::AnswerType::boolean},                {"t", method::AnswerType::number},
-      {"I.x", method::AnswerType::number, 0.5},            {"I.y", method::AnswerType::number, 0.5},
-      {"I.z", method::AnswerType::number, 0.5},            {"N.x", method::AnswerType::number, 0.5},
-      {"N.y", method::AnswerType::number, 0.5},            {"N.z", method::AnswerType::number, 0.5}};
+      {"faces", method::AnswerType::faces, method::kTickWork, kFaceNames},
+      {"inside", method::AnswerType::boolean},
+      {"hit", method::AnswerType::boolean},   {"t", method::AnswerType::number},
+      {"I.x", method::AnswerType::number, method::kCoordinateWork},
+      {"I.y", method::AnswerType::number, method::kCoordinateWork},
+      {"I.z", method::AnswerType::number, method::kCoordinateWork},
+      {"N.x", method::AnswerType::number, method::kCoordinateWork},
+      {"N.y", method::AnswerType::number, method::kCoordinateWork},
+      {"N.z", method::AnswerType::number, method::kCoordinateWork}};
   static constexpr FaceTexts kTexts = {"exit_face", "face", "face_away", "face_cross", "face_on", "face_off"};
 };
 

@@ -39,9 +39,12 @@ struct ProjectionMethod {
   }
 
   static constexpr method::QuestionDecl kQuestions[] = {
-      {"t", AnswerType::number}, {"P", AnswerType::point}, {"position", AnswerType::choice, 1, kPositions}};
+      {"t", AnswerType::number},
+      {"P", AnswerType::point},
+      {"position", AnswerType::choice, method::kTickWork, kPositions}};
 
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 5;
 
   static constexpr std::string_view kMistakes[] = {"t_unsquared_norm", "t_not_divided"};

@@ -22,7 +22,8 @@ constexpr Vec2 kEasyDirections[] = {{1, 0}, {0, 1}, {2, 0}, {0, 2},  {3, 4},
 
 struct RayCircle : ball::Family<2> {
   static constexpr std::string_view kName = "ray_circle";
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 7;
   // radii: the default largest, and the largest that fits the drawing area [-1, 11] × [-1, 9]
   static constexpr double kMaxRadius = 4, kRadiusLimit = 5;

@@ -26,7 +26,8 @@ Vec2 normal_of(Face f) { return f.axis == 0 ? Vec2{double(f.sign), 0} : Vec2{0, 
 
 struct RaySquare : box::Family<2> {
   static constexpr std::string_view kName = "ray_square";
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 6;
   static constexpr std::string_view kWhat = "branch, corner and side margins, t range";
   static std::vector<DrawnField> kDrawn() { return {{"I", 0, {}}, {"N", 0, "I", "\\vec{N}"}}; }

@@ -75,9 +75,10 @@ struct SegmentsMethod {
                                                         {"t_ab", AnswerType::number},
                                                         {"t_cd", AnswerType::number},
                                                         {"I", AnswerType::point},
-                                                        {"reason", AnswerType::choice, 1, kReasons}};
+                                                        {"reason", AnswerType::choice, method::kTickWork, kReasons}};
 
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 4;
 
   static constexpr std::string_view kMistakes[] = {"t_swapped", "cross_sign"};

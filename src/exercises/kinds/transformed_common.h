@@ -87,7 +87,8 @@ struct Family {
     transformed::schema(v, d, Kind::kSizes);
   }
   static constexpr auto& kQuestions = transformed::kQuestions;
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 7;
 };
 

@@ -87,7 +87,8 @@ struct VectorsMethod {
       {"norm_v", AnswerType::number}, {"cos", AnswerType::number},   {"sin", AnswerType::number},
       {"angle_deg", AnswerType::number}};
 
-  // what the exercise is worth on every sheet, whatever the branch (the spec may say otherwise)
+  // what the exercise adds to the sheet's total when the spec does not set its points (points.h:
+  // the sheet's questions share that total by their work)
   static constexpr double kPoints = 7;
 
   static constexpr std::string_view kMistakes[] = {"norm_not_rooted", "angle_unsigned", "cross_sign", "angle_radians"};

@@ -1,0 +1,100 @@
+#include "exercises/balance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace epure {
+
+namespace {
+
+// Works are sums of a few multiples of 0.5 and 1: a swap must gain more than rounding to count.
+constexpr double kWorkSlack = 1e-9;
+// Each pass swaps only where the pair gets strictly closer to the mean, so passes end; this
+// bounds them all the same.
+constexpr int kImprovePasses = 8;
+
+}  // namespace
+
+BranchBalance::BranchBalance(std::vector<BranchSchedule> schedules,
+                             std::vector<std::vector<std::pair<std::string, double>>> work)
+    : schedules_(std::move(schedules)), work_(std::move(work)) {
+  work_.resize(schedules_.size());
+}
+
+double BranchBalance::work(int slot, const std::string& branch) const {
+  for (const auto& [name, w] : work_[static_cast<std::size_t>(slot)])
+    if (name == branch) return w;
+  return 0;
+}
+
+void BranchBalance::compute(int block) {
+  const int slots = static_cast<int>(schedules_.size());
+  const int base = block * kBlock;
+  // the schedule's branches for the block, and their work
+  std::vector<std::vector<std::string>> scheduled(static_cast<std::size_t>(slots));
+  std::vector<std::vector<double>> weight(static_cast<std::size_t>(slots));
+  std::vector<double> spread(static_cast<std::size_t>(slots), 0);
+  for (int s = 0; s < slots; ++s) {
+    for (int i = 0; i < kBlock; ++i) {
+      scheduled[s].push_back(schedules_[s].at(base + i));
+      weight[s].push_back(work(s, scheduled[s].back()));
+    }
+    const auto [lo, hi] = std::minmax_element(weight[s].begin(), weight[s].end());
+    spread[s] = *hi - *lo;
+  }
+  // the exercises whose branches differ most first, as longest-processing-time scheduling does
+  std::vector<int> order(static_cast<std::size_t>(slots));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return spread[a] > spread[b]; });
+  chosen_.assign(kBlock, std::vector<std::string>(static_cast<std::size_t>(slots)));
+  std::vector<double> load(kBlock, 0);
+  for (const int s : order) {
+    if (!(spread[s] > 0)) {
+      // every branch of the block asks the same work: the schedule's order stays
+      for (int i = 0; i < kBlock; ++i) chosen_[i][s] = scheduled[s][i];
+      for (int i = 0; i < kBlock; ++i) load[i] += weight[s][i];
+      continue;
+    }
+    std::vector<int> items(kBlock), sheets(kBlock);
+    std::iota(items.begin(), items.end(), 0);
+    std::iota(sheets.begin(), sheets.end(), 0);
+    // heaviest branch first (ties: the schedule's order) to the lightest sheet (ties: its index)
+    std::stable_sort(items.begin(), items.end(), [&](int a, int b) { return weight[s][a] > weight[s][b]; });
+    std::stable_sort(sheets.begin(), sheets.end(), [&](int a, int b) { return load[a] < load[b]; });
+    for (int k = 0; k < kBlock; ++k) {
+      chosen_[sheets[k]][s] = scheduled[s][items[k]];
+      load[sheets[k]] += weight[s][items[k]];
+    }
+  }
+  // Then swaps, exercise by exercise, of two sheets' branches wherever that brings the farther
+  // of the two closer to the block's mean (the greedy alone leaves pairs it could have evened);
+  // a bounded number of passes, in a fixed order.
+  const double mean = std::accumulate(load.begin(), load.end(), 0.0) / kBlock;
+  auto off = [&](double x) { return std::abs(x - mean); };
+  for (int pass = 0, swapped = 1; swapped && pass < kImprovePasses; ++pass) {
+    swapped = 0;
+    for (const int s : order)
+      for (int i = 0; i < kBlock; ++i)
+        for (int j = i + 1; j < kBlock; ++j) {
+          const double wi = work(s, chosen_[i][s]), wj = work(s, chosen_[j][s]);
+          if (!(wi != wj)) continue;
+          const double li = load[i] - wi + wj, lj = load[j] - wj + wi;
+          if (std::max(off(li), off(lj)) + kWorkSlack < std::max(off(load[i]), off(load[j]))) {
+            std::swap(chosen_[i][s], chosen_[j][s]);
+            load[i] = li;
+            load[j] = lj;
+            swapped = 1;
+          }
+        }
+  }
+  block_ = block;
+}
+
+const std::string& BranchBalance::at(int index, int slot) {
+  const int block = index / kBlock;
+  if (block != block_) compute(block);
+  return chosen_[index % kBlock][slot];
+}
+
+}  // namespace epure
