@@ -84,11 +84,19 @@ TEST_CASE("keys rebuilt from the spec ask key.json's questions, under the spec's
   const AnswerKey rebuilt = key_from_spec(epure::builtin_spec(), ids, "test");
   CHECK(rebuilt.sheets().size() == 4);
   CHECK(rebuilt.refused().size() == 1);
+  int same_branch = 0;
   for (const auto& s : from_json.sheets()) {
     CAPTURE(s.id);
     const SheetKey* r = rebuilt.find(s.id);
     REQUIRE(r);
-    for (std::size_t e = 0; e < s.exercises.size(); ++e)
+    REQUIRE(r->exercises.size() >= s.exercises.size());  // the course has grown since
+    for (std::size_t e = 0; e < s.exercises.size(); ++e) {
+      // The work-fair draw (issue 31) gives some of these sheets' exercises another branch than
+      // key_small.json's (same draw version: see the lead's note on kDrawVersion); an exercise
+      // of the same branch is the same instance, asked the same questions.
+      if (r->exercises[e].branch != s.exercises[e].branch) continue;
+      ++same_branch;
+      REQUIRE(r->exercises[e].questions.size() == s.exercises[e].questions.size());
       for (std::size_t q = 0; q < s.exercises[e].questions.size(); ++q) {
         // key_small.json was written before exercise numbers (its ids start with the place,
         // 1.dot, 2.t); the course's spec numbers them P, 1, 2, …
@@ -97,7 +105,9 @@ TEST_CASE("keys rebuilt from the spec ask key.json's questions, under the spec's
               epure::exercise_id(epure::builtin_spec(), e) + "." + s.exercises[e].questions[q].field);
         CHECK(r->exercises[e].questions[q].number == doctest::Approx(s.exercises[e].questions[q].number).epsilon(1e-15));
       }
+    }
   }
+  CHECK(same_branch >= 10);  // of 20: the check still covers most of the questions
 }
 
 TEST_CASE("every field name the kinds ask by hashes apart") {
