@@ -39,9 +39,12 @@ const QuestionSpec* Questions::spec_for(std::string_view field) const {
 double Questions::points_for(std::string_view field) const {
   const QuestionSpec* q = spec_for(field);
   if (q && q->points) return *q->points;
+  // the kind's weight of the field as declared ("cross.x", a coordinate in space asked alone),
+  // else of its point ("I" for I.x in the plane)
   const std::string_view base = field.substr(0, field.find('.'));
-  for (const auto& [name, weight] : default_weights_)
-    if (name == base) return weight;
+  for (const std::string_view name : {field, base})
+    for (const auto& [declared, weight] : default_weights_)
+      if (declared == name) return weight;
   return 1;
 }
 

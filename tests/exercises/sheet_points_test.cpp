@@ -61,12 +61,12 @@ Figures check_set(const epure::WorksheetSpec& spec, std::uint64_t seed, epure::D
 }  // namespace
 
 // The 2D course's six exercises with branches of different work even out within 10 % (measured
-// 6.5 %). The course in space has two (the sphere, the cube) whose long branches are 4 in 6 and
-// 4 in 5: at least 7 sheets in 15 draw both long ones (work 38.5), the others 29 to 31, around a
-// mean of 34: no assignment that keeps the branches' proportions does better than about 13 %
-// (measured 15.1 % over 12 seeds of 48 sheets: the 16-sheet blocks round the proportions).
-// Pinned at 16 %, said in the README.
-double work_bound(const epure::WorksheetSpec& spec) { return spec.exercises.size() <= 3 ? 0.16 : 0.10; }
+// 6.5 %). The course in space cannot: its mean work is fixed by the branches' proportions,
+// 19 (the products) + 10.2 (the sphere: hit or inside 13 in 4 sheets of 6, miss 5.5, behind 3.5)
+// + 7.9 (the cube: 9.5 in 4 of 5, miss 1.5) = 37.1, and a sheet whose sphere stops behind asks
+// at most 19 + 3.5 + 9.5 = 32, 13.7 % under it, whatever the draw (measured 13.9 %, the
+// 16-sheet blocks rounding the proportions). Pinned at 15 %, said in the README.
+double work_bound(const epure::WorksheetSpec& spec) { return spec.exercises.size() <= 3 ? 0.15 : 0.10; }
 
 TEST_CASE("work-fair sheets: same total, work within 10 % of the set's mean, ticks at most 15 %") {
   for (const auto& spec : epure::builtin_specs()) {
