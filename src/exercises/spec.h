@@ -18,7 +18,7 @@ std::optional<Difficulty> parse_difficulty(std::string_view s);
 
 // Per-question settings, by the question's field ("t", "P" for both P.x and P.y, "faces").
 struct QuestionSpec {
-  std::optional<double> points;  // the question's weight in the exercise's points (default 1)
+  std::optional<double> points;  // the question's weight (default: its work, method.h's work_of)
   std::optional<double> rel;  // overrides the derived relative tolerance
   std::optional<double> abs;  // overrides the derived absolute tolerance (a floor)
   bool whole_point = false;   // mark a point by its distance to the expected point, as a whole
@@ -30,8 +30,9 @@ struct ExerciseSpec {
   std::vector<std::pair<std::string, double>> branches;  // empty: the kind's defaults
   std::map<std::string, QuestionSpec> questions;
   std::map<std::string, double> constraints;  // overrides of the kind's defaults
-  // What the exercise is worth, shared by the questions its branch asks in proportion to their
-  // weights (exercises/points.h); unset: the kind's default_points().
+  // What the exercise is worth on every sheet, shared by the questions its branch asks in
+  // proportion to their weights; unset: it adds the kind's default_points() to the sheet's total,
+  // which the questions of every such exercise share by weight across the sheet (points.h).
   std::optional<double> points;
   // What the sheet calls it instead of "Exercise n" ("Preamble", "Open question 1"), in the
   // spec's language and per language as given; empty: numbered. Exercises without a heading of
