@@ -43,30 +43,21 @@ void BranchBalance::compute(int block) {
     const auto [lo, hi] = std::minmax_element(weight[s].begin(), weight[s].end());
     spread[s] = *hi - *lo;
   }
-  // the exercises whose branches differ most first, as longest-processing-time scheduling does
+  // Start from the schedule's own order (it interleaves the branches, so neighbours in a room
+  // rarely share one and a short set shows every branch), then even the work out by swaps only.
+  // Sorting the branches by work and dealing them to the lightest sheets instead evened the work
+  // as well but put equal branches on consecutive sheets.
   std::vector<int> order(static_cast<std::size_t>(slots));
   std::iota(order.begin(), order.end(), 0);
+  // the exercises whose branches differ most first: their swaps move the most work
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return spread[a] > spread[b]; });
   chosen_.assign(kBlock, std::vector<std::string>(static_cast<std::size_t>(slots)));
   std::vector<double> load(kBlock, 0);
-  for (const int s : order) {
-    if (!(spread[s] > 0)) {
-      // every branch of the block asks the same work: the schedule's order stays
-      for (int i = 0; i < kBlock; ++i) chosen_[i][s] = scheduled[s][i];
-      for (int i = 0; i < kBlock; ++i) load[i] += weight[s][i];
-      continue;
+  for (int s = 0; s < slots; ++s)
+    for (int i = 0; i < kBlock; ++i) {
+      chosen_[i][s] = scheduled[s][i];
+      load[i] += weight[s][i];
     }
-    std::vector<int> items(kBlock), sheets(kBlock);
-    std::iota(items.begin(), items.end(), 0);
-    std::iota(sheets.begin(), sheets.end(), 0);
-    // heaviest branch first (ties: the schedule's order) to the lightest sheet (ties: its index)
-    std::stable_sort(items.begin(), items.end(), [&](int a, int b) { return weight[s][a] > weight[s][b]; });
-    std::stable_sort(sheets.begin(), sheets.end(), [&](int a, int b) { return load[a] < load[b]; });
-    for (int k = 0; k < kBlock; ++k) {
-      chosen_[sheets[k]][s] = scheduled[s][items[k]];
-      load[sheets[k]] += weight[s][items[k]];
-    }
-  }
   // Then swaps, exercise by exercise, of two sheets' branches wherever that brings the farther
   // of the two closer to the block's mean (the greedy alone leaves pairs it could have evened);
   // a bounded number of passes, in a fixed order.
