@@ -58,9 +58,8 @@ void BranchBalance::compute(int block) {
       chosen_[i][s] = scheduled[s][i];
       load[i] += weight[s][i];
     }
-  // Then swaps, exercise by exercise, of two sheets' branches wherever that brings the farther
-  // of the two closer to the block's mean (the greedy alone leaves pairs it could have evened);
-  // a bounded number of passes, in a fixed order.
+  // Swaps, exercise by exercise, of two sheets' branches wherever that brings the farther of the
+  // two closer to the block's mean; a bounded number of passes, in a fixed order.
   const double mean = std::accumulate(load.begin(), load.end(), 0.0) / kBlock;
   auto off = [&](double x) { return std::abs(x - mean); };
   for (int pass = 0, swapped = 1; swapped && pass < kImprovePasses; ++pass) {

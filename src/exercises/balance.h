@@ -3,10 +3,11 @@
 // asks about the same work (issue 31: a student who draws a short branch on one exercise draws a
 // long one on another). Each exercise's BranchSchedule still decides how many sheets draw each
 // branch; the balance only decides which sheet gets which. It works on fixed blocks of kBlock
-// consecutive sheets: inside a block, exercise by exercise (the one whose branches differ most
-// in work first), the block's heaviest branch goes to the sheet with the least work so far
-// (ties: the lower index). So sheet i's branches depend on its block alone, never on the size
-// of the set (a set of 30 and one of 3,000 share their first 30 sheets), and any sheet is found
+// consecutive sheets: inside a block, each exercise's branches start in its schedule's own
+// interleaved order, then swaps of two sheets' branches, exercise by exercise (the one whose
+// branches differ most in work first), bring the farther of the two sheets closer to the
+// block's mean work. So sheet i's branches depend on its block alone, never on the size of the
+// set (a set of 30 and one of 3,000 share their first 30 sheets), and any sheet is found
 // in constant time. Deterministic: sums of multiples of 0.5 are exact in doubles.
 #include <string>
 #include <vector>
@@ -18,7 +19,7 @@ namespace epure {
 class BranchBalance {
  public:
   // 16 sheets hold every branch of the course's kinds in proportion (weights up to 6 in all) at
-  // least twice, enough for the greedy to even out the work (tests/exercises/sheet_points_test.cpp:
+  // least twice, enough for the swaps to even out the work (tests/exercises/sheet_points_test.cpp:
   // within 10 % of the set's mean on every sheet); a larger block moves branches further from
   // the schedule's order.
   static constexpr int kBlock = 16;

@@ -15,7 +15,7 @@ namespace epure {
 
 // The generator's draw version: bump it whenever a change makes the same spec and seed draw a
 // different sheet. A sheet id made under another version is refused on rebuild.
-inline constexpr int kDrawVersion = 1;
+inline constexpr int kDrawVersion = 2;
 
 inline constexpr std::uint64_t kMaxSeed = (1ULL << 35) - 1;
 inline constexpr int kMaxSheets = 1 << 15;

@@ -39,7 +39,8 @@ class DocumentLayout {
     const auto budget = static_cast<std::size_t>(std::max(doc_.page_budget, 0));
     // Counted on shapes; the options measured for them are not measured again when the pages
     // are built.
-    if (budget > 0 && !scales_.empty() && pages(levels) > budget) levels = within_budget(budget);
+    if (budget > 0 && !scales_.empty())
+      if (const std::size_t full = pages(levels); full > budget) levels = within_budget(budget, full);
     return build(levels);
   }
 
@@ -50,16 +51,27 @@ class DocumentLayout {
   // The fewest figures set smaller, by as little as will do: the largest scale that all the
   // sections need alike to meet the budget (tried from the largest down: a sheet over its
   // budget by a little, the common case, is measured once or twice), then each section in turn,
-  // in the document's order, given back its full size where the budget still holds. Full size
-  // everywhere when even the smallest scale does not meet it: the budget is then past what
-  // figures can do.
-  std::vector<int> within_budget(std::size_t budget) {
+  // in the document's order, given back its full size where the budget still holds. When even
+  // the smallest scale does not meet it, the same for the fewest pages a scale reaches, if that
+  // is fewer than at full size (a Letter sheet with tall figures: 6 pages, 5 smaller); else full
+  // size everywhere: the budget is then past what figures can do.
+  std::vector<int> within_budget(std::size_t budget, std::size_t full) {
     const std::size_t n = doc_.sections.size();
     int uniform = 0;
-    for (int level = 1; level <= lowest() && uniform == 0; ++level)
-      if (pages(std::vector<int>(n, level)) <= budget) uniform = level;
+    // where no scale meets the budget: the largest that saves the most pages
+    int fewest_level = 0;
+    std::size_t fewest = full;
+    for (int level = 1; level <= lowest() && uniform == 0; ++level) {
+      const std::size_t count = pages(std::vector<int>(n, level));
+      if (count <= budget) uniform = level;
+      if (count < fewest) fewest = count, fewest_level = level;
+    }
+    if (uniform == 0) {
+      if (fewest_level == 0) return std::vector<int>(n, 0);
+      uniform = fewest_level;
+      budget = fewest;
+    }
     std::vector<int> levels(n, uniform);
-    if (uniform == 0) return levels;
     for (std::size_t si = 0; si < n; ++si) {
       levels[si] = 0;
       if (pages(levels) > budget) levels[si] = uniform;
