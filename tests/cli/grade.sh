@@ -6,7 +6,12 @@
 # one making a named mistake in every exercise, one with an inward normal and blanks, one with
 # a norm left squared. Checks: every named mistake and follow-through seen where it was made,
 # totals, follow-through off, the report in the export's own dialect, JSON answers equal to
-# CSV ones, keys rebuilt from the spec (--spec builtin), feedback sheets that parse and render.
+# CSV ones, feedback sheets that parse and render. key_small.json was written under draw version
+# 1: it is graded by its own content, with one warning, and its ids are not rebuilt from the
+# spec (this epure draws other sheets for them). Then a set of this epure's draw, answered in
+# columns named by place as older sets were: keys rebuilt from the spec (--spec builtin, --spec
+# FILE) mark as its key.json does, and the feedback draws a student's far point and inward normal
+# on the key's diagrams.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 data="$EPURE_SOURCE_DIR/tests/grading/data"
@@ -17,7 +22,9 @@ fail() { echo "FAIL: $*"; failed=1; }
   --json "$tmp/marks.json" --feedback "$tmp/fb" --histogram "$tmp/hist.svg" --lang fr -q >"$tmp/out" 2>"$tmp/err"
 st=$?
 [ "$st" -eq 0 ] || fail "realistic export: exit $st, expected 0 ($(cat "$tmp/err"))"
-[ -s "$tmp/err" ] && fail "realistic export: unexpected problems: $(cat "$tmp/err")"
+# one line: the key is of an earlier draw, marked by its own values, its sheets not redrawn
+[ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q "version de tirage 1).*version de tirage 2).*ne peuvent pas être redessinées" "$tmp/err" ||
+  fail "realistic export: expected the one warning of an earlier draw version, got: $(cat "$tmp/err")"
 
 python3 - "$tmp/marks.json" "$tmp/report.csv" <<'PY' || fail "marks of the realistic export"
 import json, sys, csv, io
@@ -132,35 +139,12 @@ assert [s["student"] for s in a["submissions"]] == [s["student"] for s in b["sub
 PY
 done
 
-# keys rebuilt from the spec and the ids: the same points on every question the small key has.
-# The export's header names questions by place (1.dot, 2.t), as the sheets of key_small.json
-# were printed; the course's spec now numbers its exercises P, 1, 2, …: the header is read by
-# place, with a warning, and every question marked as before under its new id.
-"$EPURE" grade --spec builtin --answers "$data/export_fr.csv" --json "$tmp/spec.json" -q >/dev/null 2>"$tmp/spec.err" \
-  || fail "--spec builtin: exit $? ($(cat "$tmp/spec.err"))"
-grep -q "by their exercise's place" "$tmp/spec.err" || fail "--spec builtin: no warning that the columns are read by place"
-python3 - "$tmp/marks.json" "$tmp/spec.json" <<'PY' || fail "--spec builtin marks differ from key.json's"
-import json, sys
-a, b = (json.load(open(p)) for p in sys.argv[1:])
-numbers = ["P", "1", "2", "3", "4", "3.3", "4.3"]  # templates/course.toml
-def by_place(i):  # "P.dot" -> "1.dot", "1.t" -> "2.t", "3.3.t" -> "6.t"
-    n = max((n for n in numbers if i.startswith(n + ".")), key=len)
-    return f"{numbers.index(n) + 1}{i[len(n):]}"
-for x, y in zip(a["submissions"], b["submissions"]):
-    assert x["sheet"] == y["sheet"]
-    py = {by_place(q["id"]): q["points"] for q in y["questions"]}
-    for q in x["questions"]:
-        assert py[q["id"]] == q["points"], (x["sheet"], q["id"], q["points"], py[q["id"]])
-PY
-
-# the spec as a file (the built-in one, templates/course.toml) marks as --spec builtin does
-"$EPURE" grade --spec "$EPURE_SOURCE_DIR/templates/course.toml" --answers "$data/export_fr.csv" --json "$tmp/spec_file.json" -q \
-  >/dev/null 2>"$tmp/spec_file.err" || fail "--spec FILE: exit $? ($(cat "$tmp/spec_file.err"))"
-python3 - "$tmp/spec.json" "$tmp/spec_file.json" <<'PY' || fail "--spec FILE marks differ from --spec builtin's"
-import json, sys
-a, b = (json.load(open(p)) for p in sys.argv[1:])
-assert [s["score"] for s in a["submissions"]] == [s["score"] for s in b["submissions"]]
-PY
+# key_small.json's ids are of draw version 1: not rebuilt from the spec, each said with why
+"$EPURE" grade --spec builtin --answers "$data/export_fr.csv" --json "$tmp/spec_v1.json" -q >/dev/null 2>"$tmp/spec_v1.err"
+st=$?
+[ "$st" -eq 2 ] || fail "--spec builtin on version-1 ids: exit $st, expected 2"
+[ "$(grep -c "drawn by generator version 1; this epure draws version 2" "$tmp/spec_v1.err")" -eq 4 ] ||
+  fail "--spec builtin on version-1 ids: not every id refused with why: $(cat "$tmp/spec_v1.err")"
 
 # feedback sheets: one per student (SVG and PDF) and the class histogram, well-formed and renderable
 [ "$(ls "$tmp/fb" | wc -l)" -eq 9 ] || fail "expected 4 feedback sheets as SVG and PDF and class.svg, got: $(ls "$tmp/fb")"
@@ -175,9 +159,8 @@ for f in "$tmp"/fb/*.svg "$tmp/hist.svg"; do
   xmllint --noout "$f" 2>/dev/null || fail "$(basename "$f") is not well-formed"
   rsvg-convert -o "$tmp/render.png" "$f" 2>/dev/null || fail "$(basename "$f") does not render"
 done
-grep -q "N (vous)" "$tmp/fb/1000-0005-004H.svg" || fail "the inward normal is not drawn on the key diagram"
-grep -q "I (vous)" "$tmp/fb/1000-0005-0089.svg" || fail "the far point is not drawn on the key diagram"
 grep -q "lointaine J" "$tmp/fb/1000-0005-0089.svg" || fail "the far intersection is not explained"
+grep -q "(vous)" "$tmp"/fb/*.svg && fail "a diagram drawn from a key of another draw version"
 ls "$tmp/fb" | grep -q '\.tmp$' && fail "a temporary file was left behind"
 
 # without a report: a readable summary on stdout
@@ -186,6 +169,83 @@ grep -q "N'Diaye, Aïssatou" "$tmp/summary" || fail "summary lacks a student"
 grep -q "far intersection J" "$tmp/summary" || fail "summary lacks the mistakes (by name)"
 grep -q "far_intersection" "$tmp/summary" && fail "summary shows a mistake code"
 grep -q "median" "$tmp/summary" || fail "summary lacks the class statistics"
+
+# A set of this epure's draw (seed 5, four French sheets), answered right but for two students:
+# on the first sheet whose ray meets the circle from outside, the far point (t = t_proj + √(r² −
+# d²)); on the next such sheet, the inward normal. The columns are named by place (1.dot, 4.t),
+# as sets were numbered before the course named its exercises P, 1, 2, …
+"$EPURE" generate --lang fr --sheets 4 --seed 5 --format svg --out "$tmp/v2" -q >/dev/null 2>"$tmp/v2.err" ||
+  fail "generate: $(cat "$tmp/v2.err")"
+python3 - "$tmp/v2/key.json" "$tmp/v2.csv" >"$tmp/v2.env" <<'PY' || fail "building the answers of the version-2 set"
+import csv, json, math, sys
+key = json.load(open(sys.argv[1], encoding="utf-8"))
+numbers = [e["number"] for e in key["sheets"][0]["exercises"]]
+def by_place(i):  # "P.dot" -> "1.dot", "1.t" -> "2.t", "3.3.t" -> "6.t"
+    n = max((n for n in numbers if i.startswith(n + ".")), key=len)
+    return f"{numbers.index(n) + 1}{i[len(n):]}"
+def typed(e):
+    if isinstance(e, bool): return "oui" if e else "non"
+    if isinstance(e, list): return " ".join(e) if e else "aucun"
+    if isinstance(e, str): return e
+    return f"{round(e, 2):.2f}".replace(".", ",")
+hits = [(s, e) for s in key["sheets"] for e in s["exercises"] if e["kind"] == "ray_circle" and e["branch"] == "hit"]
+assert len(hits) >= 2, [(s["id"], e["branch"]) for s in key["sheets"] for e in s["exercises"] if e["kind"] == "ray_circle"]
+rows, header = [], []
+for s in key["sheets"]:
+    cells = {by_place(q["id"]): typed(q["expected"]) for e in s["exercises"] for q in e["questions"]}
+    for e in s["exercises"]:
+        n = e["number"]
+        if (s, e) == hits[0]:  # the far intersection, and the point on it
+            x, sol = e["instance"], e["solution"]
+            norm = math.hypot(*x["u"])
+            t = sol["t_proj"] + math.sqrt(x["r"] ** 2 - sol["d2"])
+            I = [x["A"][k] + t * x["u"][k] / norm for k in range(2)]
+            for f, v in (("t", t), ("I.x", I[0]), ("I.y", I[1])): cells[by_place(f"{n}.{f}")] = typed(v)
+            print(f"FAR={s['id']} FAR_T={n}.t")
+        if (s, e) == hits[1]:  # the inward normal
+            for f in ("N.x", "N.y"): cells[by_place(f"{n}.{f}")] = typed(-e["solution"]["N"]["xy".index(f[-1])])
+            print(f"INWARD={s['id']} INWARD_N={n}.N.x")
+    for c in cells:
+        if c not in header: header.append(c)
+    rows.append((s["id"], cells))
+with open(sys.argv[2], "w", encoding="utf-8-sig", newline="") as f:
+    w = csv.writer(f, delimiter=";", lineterminator="\r\n")
+    w.writerow(["Feuille", "Étudiant"] + header)
+    for i, (id, cells) in enumerate(rows):
+        w.writerow([id, f"Étudiant {i + 1}"] + [cells.get(c, "") for c in header])
+PY
+. "$tmp/v2.env"
+"$EPURE" grade --key "$tmp/v2/key.json" --answers "$tmp/v2.csv" --json "$tmp/v2_key.json" --feedback "$tmp/fb2" -q   >/dev/null 2>"$tmp/v2_key.err" || fail "version-2 set, --key: exit $? ($(cat "$tmp/v2_key.err"))"
+python3 - "$tmp/v2_key.json" "$FAR" "$FAR_T" "$INWARD" "$INWARD_N" <<'PY' || fail "version-2 set: the two mistakes"
+import json, sys
+marks, far, far_t, inward, inward_n = json.load(open(sys.argv[1])), *sys.argv[2:]
+by = {s["sheet"]: {q["id"]: q for q in s["questions"]} for s in marks["submissions"]}
+assert by[far][far_t]["mistake"] == "far_intersection", by[far][far_t]
+assert by[inward][inward_n]["mistake"] == "normal_inward", by[inward][inward_n]
+for id, qs in by.items():
+    wrong = [q for q in qs.values() if q["verdict"] not in ("right", "follow_through")]
+    assert id in (far, inward) or not wrong, (id, wrong)
+PY
+grep -q "I (vous)" "$tmp/fb2/$FAR.svg" || fail "the far point is not drawn on the key diagram"
+grep -q "lointaine J" "$tmp/fb2/$FAR.svg" || fail "the far intersection is not explained"
+grep -q "N (vous)" "$tmp/fb2/$INWARD.svg" || fail "the inward normal is not drawn on the key diagram"
+
+# keys rebuilt from the spec and the ids mark as key.json does, every question under its id; the
+# columns named by place are read with a warning
+"$EPURE" grade --spec builtin --answers "$tmp/v2.csv" --json "$tmp/spec.json" -q >/dev/null 2>"$tmp/spec.err" \
+  || fail "--spec builtin: exit $? ($(cat "$tmp/spec.err"))"
+grep -q "by their exercise's place" "$tmp/spec.err" || fail "--spec builtin: no warning that the columns are read by place"
+"$EPURE" grade --spec "$EPURE_SOURCE_DIR/templates/course.toml" --answers "$tmp/v2.csv" --json "$tmp/spec_file.json" -q \
+  >/dev/null 2>"$tmp/spec_file.err" || fail "--spec FILE: exit $? ($(cat "$tmp/spec_file.err"))"
+python3 - "$tmp/v2_key.json" "$tmp/spec.json" "$tmp/spec_file.json" <<'PY' || fail "--spec marks differ from key.json's"
+import json, sys
+a, b, c = (json.load(open(p)) for p in sys.argv[1:])
+assert len(a["submissions"]) == 4
+for x, y, z in zip(a["submissions"], b["submissions"], c["submissions"]):
+    assert x["sheet"] == y["sheet"] == z["sheet"]
+    qa, qb, qc = ({q["id"]: (q["verdict"], q["points"], q.get("mistake")) for q in s["questions"]} for s in (x, y, z))
+    assert qa == qb == qc, (x["sheet"], {k: (qa[k], qb.get(k)) for k in qa if qa[k] != qb.get(k)})
+PY
 
 [ "$failed" -eq 0 ] && echo "grade: all checks passed"
 exit "$failed"

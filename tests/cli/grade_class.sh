@@ -20,10 +20,16 @@ tools="$EPURE_SOURCE_DIR/tests/tools"
 "$EPURE" generate --lang fr --sheets 10 --seed 5 --format svg --out "$tmp/set" -q >/dev/null 2>"$tmp/gen.err" \
   || fail "generate: $(cat "$tmp/gen.err")"
 python3 "$tools/make_class.py" "$tmp/set/key.json" "$tmp/class.csv" --seed 3 --lang fr || fail "make_class"
-# the ids this test names, from the key: an exercise by its place on sheet 000S, then the field
+# the sheet this test answers: the first of the set whose segments miss each other, whose ray
+# hits the circle from outside and meets the square (the cases its answers need); then the ids
+# it names, from the key: an exercise by its place, then the field
 python3 - "$tmp/set/key.json" >"$tmp/ids.env" <<'PY' || fail "the question ids from key.json"
 import json, sys
-s = next(s for s in json.load(open(sys.argv[1], encoding="utf-8"))["sheets"] if s["id"] == "1000-0005-000S")
+def cases(s): return {e["n"]: (e["kind"], e["branch"]) for e in s["exercises"]}
+want = {3: {("segments", "outside")}, 4: {("ray_circle", "hit")}, 5: {("ray_square", "hit"), ("ray_square", "inside")}}
+s = next(s for s in json.load(open(sys.argv[1], encoding="utf-8"))["sheets"]
+         if all(cases(s).get(n) in c for n, c in want.items()))
+print(f"SHEET_ID={s['id']}")
 ids = {q["id"] for e in s["exercises"] for q in e["questions"]}
 number = {e["n"]: e.get("number", str(e["n"])) for e in s["exercises"]}
 names = {"NORM_U": (1, "norm_u"), "PX": (2, "P.x"), "PY": (2, "P.y"), "REASON": (3, "reason"), "T4": (4, "t"),
@@ -34,20 +40,18 @@ for name, (n, field) in names.items():
     print(f"ID_{name}={id}")
 PY
 . "$tmp/ids.env"
-export ID_NORM_U ID_PX ID_PY ID_REASON ID_T4 ID_T_PROJ ID_D2 ID_REASON4 ID_T5
+export SHEET_ID ID_NORM_U ID_PX ID_PY ID_REASON ID_T4 ID_T_PROJ ID_D2 ID_REASON4 ID_T5
 
-# 1 and 2: sheet 1000-0005-000S answered right, typed the ways students type
+# 1 and 2: that sheet answered right, typed the ways students type
 python3 - "$tmp/set/key.json" "$tmp/harmless.csv" "$tmp/corrections.json" <<'PY' || fail "building the harmless answers"
 import csv, json, os, sys
 key = json.load(open(sys.argv[1], encoding="utf-8"))
-s = next(s for s in key["sheets"] if s["id"] == "1000-0005-000S")
-kinds = {e["n"]: (e["kind"], e["branch"]) for e in s["exercises"]}
-assert kinds[2] == ("projection", "between") and kinds[3] == ("segments", "outside") and kinds[4] == ("ray_circle", "hit"), kinds
+s = next(s for s in key["sheets"] if s["id"] == os.environ["SHEET_ID"])
 def right(q):
     e = q["expected"]
     if isinstance(e, bool): return "oui" if e else "non"
     if isinstance(e, list): return " ".join(e) if e else "aucun"
-    if isinstance(e, str): return {"outside": "à l’extérieur", "between": "entre A et B"}.get(e, e)
+    if isinstance(e, str): return {"outside": "à l’extérieur", "between": "entre A et B", "before": "avant A", "after": "après B"}.get(e, e)
     return f"{round(e, 2):.2f}".replace(".", ",")
 cells = {q["id"]: right(q) for e in s["exercises"] for q in e["questions"]}
 I = {k[3:]: v for k, v in os.environ.items() if k.startswith("ID_")}
@@ -110,11 +114,11 @@ import csv, os, sys
 rows = list(csv.reader(open(sys.argv[1], encoding="utf-8"), delimiter=";"))
 h = rows[0]
 extra = [""] * len(h)
-extra[0], extra[1] = "1000-0005-00ZZ", "Inconnu"
+extra[0], extra[1] = "2000-0005-00ZZ", "Inconnu"
 rows.append(extra)
-# the circle's reason is not asked of a hit (sheet 000S)
-assert rows[1][0] == "1000-0005-000S", rows[1][0]
-rows[1][h.index(os.environ["ID_REASON4"])] = "manqué"
+# the circle's reason is not asked of a hit (the sheet chosen above)
+row = next(r for r in rows[1:] if r[0] == os.environ["SHEET_ID"])
+row[h.index(os.environ["ID_REASON4"])] = "manqué"
 csv.writer(open(sys.argv[1], "w", encoding="utf-8", newline=""), delimiter=";").writerows(rows)
 with open(sys.argv[2], "w", encoding="utf-8", newline="") as f:
     f.write("Nom;Prénom;N° étudiant;Courriel\n")
