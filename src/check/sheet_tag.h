@@ -1,5 +1,5 @@
 #pragma once
-// Who a submission is from, as its comments say: a line "sheet: 1000-0G2S-004Q" (or "feuille :",
+// Who a submission is from, as its comments say: a line "sheet: 2000-0G2R-0048" (or "feuille :",
 // "sheet id", "id") ties the file to that student's worksheet, whose instances are then among
 // the cases; "student: Zoé Lefèvre" (or "étudiant :", "etudiant", "name", "nom", "élève") names
 // the student. Keys in any case, with or without accents, the colon with or without spaces; the

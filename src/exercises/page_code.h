@@ -2,7 +2,7 @@
 // The code printed on every page of a sheet (a QR code), so that a loose page, in any order or
 // orientation, finds its sheet and its place:
 //
-//   <sheet id>/<page>/<pages>/<check>        1000-0G2S-004Q/2/4/K
+//   <sheet id>/<page>/<pages>/<check>        2000-0G2R-0048/2/4/C
 //
 // The sheet id keeps its own check character; <check> is a Luhn mod 32 character (the sheet
 // id's alphabet) over the whole: the id's characters, then the page's and the count's decimal
