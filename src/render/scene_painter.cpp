@@ -1,6 +1,7 @@
 #include "render/scene_painter.h"
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -595,14 +596,16 @@ class PanelPainter {
     std::erase_if(numbers_, [&](const Number& n) { return !free(n); });
     const auto phase = [](long i, long k) { return ((i % k) + k) % k; };
     for (int axis = 0; axis < 2; ++axis) {
+      // The phase that keeps the most numbers (the smallest of equals, 0 when none is left),
+      // counted over the numbers, not over the k phases: on a figure of tiny scale k is huge
+      // (the numbers' width over a grid pitch of a hair) and a loop over the phases never ended.
       const long k = every_[axis];
+      std::map<long, long> count;
+      for (const Number& n : numbers_)
+        if (n.axis == axis) ++count[phase(n.index, k)];
       long best = 0, best_count = -1;
-      for (long p = 0; p < k; ++p) {
-        const long count = std::count_if(numbers_.begin(), numbers_.end(), [&](const Number& n) {
-          return n.axis == axis && phase(n.index, k) == p;
-        });
-        if (count > best_count) best = p, best_count = count;
-      }
+      for (const auto& [p, c] : count)
+        if (c > best_count) best = p, best_count = c;
       std::erase_if(numbers_,
                     [&](const Number& n) { return n.axis == axis && phase(n.index, k) != best; });
     }

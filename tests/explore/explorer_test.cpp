@@ -388,3 +388,13 @@ TEST_CASE("explore: a number keeps every digit written; a verdict that depends o
     CHECK(w["solution"] == json::parse(solved));
   }
 }
+
+TEST_CASE("explore: a figure of tiny scale gets its view (its grid numbers' phases are counted, not looped over)") {
+  // decimal_cases.py's seed 35: a millionth-scale ellipse; the grid's numbers were thinned by a
+  // loop over every k-th phase, k about the numbers' width over a grid pitch of a hair, that
+  // never ended (the explorer's page froze)
+  const json v = view_of(
+      R"({"kind":"ray_ellipse","A":[2.88294999999999e-7,0.00000178082],"u":[-0.000000021403846,-0.000000144415385],)"
+      R"("C":[0.00000047257,0.00000083897],"radii":[0.00000053235,0.00000053235],"angle":-275.5})");
+  CHECK((v.contains("svg") || v.contains("error")));
+}
