@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 
@@ -47,9 +46,8 @@ std::string solve_one(std::string_view line, std::string& error) {
   return result;
 }
 
-// The number tokens of a line (outside its strings), and whether each is, as a decimal, the
-// shortest round trip of its double: only then does the canonical text (nlohmann's dump, which
-// writes doubles) mean the same numbers. Each token's reading is checked on the way: hi is the
+// The number tokens of a line (outside its strings), and whether each is, as a decimal, what
+// nlohmann's dump writes for its double: only then does the canonical text mean the same numbers. Each token's reading is checked on the way: hi is the
 // double strtod gives, and hi + lo is the decimal to within the bound Decimal::error states.
 bool numbers_are_shortest(std::string_view line) {
   bool in_string = false, shortest = true;
@@ -85,9 +83,11 @@ bool numbers_are_shortest(std::string_view line) {
     const auto bound = geo::exact::exact_value(d.error());
     fuzz::check((rest.m.sign() >= 0 ? (bound - rest) : (bound + rest)).m.sign() >= 0,
                 "a number's rest is off by more than its error bound", token);
-    char buffer[32];
-    const std::string short_text(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
-    if (!geo::same_value(d, geo::read_decimal(short_text, x))) shortest = false;
+    // the text the canonical line holds: nlohmann's own writing of the double, which is a
+    // shortest round trip but not always the one nearest the double (2.9802322387695312e-08 is
+    // written ...313e-08, another decimal of the same double)
+    const std::string canonical_text = json(x).dump();
+    if (!geo::same_value(d, geo::read_decimal(canonical_text, x))) shortest = false;
   }
   return shortest;
 }

@@ -59,14 +59,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (unsigned char c : text) seed = (seed ^ c) * 1099511628211ull;
   seed &= kMaxSeed;
   Sheet sheet;
+  double sheet_points = 0;
   try {
     WorksheetSet set(spec, seed);
     sheet = set.next();
+    sheet_points = set.sheet_points();
   } catch (const SpecError& e) {
     fuzz::check(std::string_view(e.what()).size() > 0, "an empty spec error");
     return 0;
   }
   fuzz::check(sheet.exercises.size() == spec.exercises.size(), "a sheet lost an exercise");
+  // Work-fair points (points.h): an exercise with `points` in the spec is worth exactly that;
+  // the others share the rest of the sheet's total by work, so only the sheet's sum is fixed.
+  double sheet_total = 0;
   for (std::size_t i = 0; i < sheet.exercises.size(); ++i) {
     const ExerciseInstance& ex = sheet.exercises[i];
     const ExerciseSpec& es = spec.exercises[i];
@@ -76,14 +81,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fuzz::check(q.points >= 0 && std::isfinite(q.points), "a question's points < 0", ex.kind);
       total += q.points;
     }
-    const double points = es.points.value_or(find_kind(es.kind)->default_points());
-    fuzz::check(std::fabs(total - points) <= 1e-9 * std::max(1.0, points),
-                "the questions' points do not add up to the exercise's", fmt::format("{}: {} vs {}", ex.kind, total, points));
+    sheet_total += total;
+    if (es.points)
+      fuzz::check(std::fabs(total - *es.points) <= 1e-9 * std::max(1.0, *es.points),
+                  "the questions' points do not add up to the exercise's fixed points",
+                  fmt::format("{}: {} vs {}", ex.kind, total, *es.points));
     fmt::memory_buffer out;
     const std::string error = solve::solve_line(ex.instance, out);
     fuzz::check(error.empty(), "a drawn instance is not a valid solve input", ex.instance + "\n" + error);
     fuzz::check(std::string_view(out.data(), out.size()) == ex.solution, "an instance's solution is not its solve output",
                 ex.instance + "\n" + ex.solution + "\n" + std::string(out.data(), out.size()));
   }
+  fuzz::check(std::fabs(sheet_total - sheet_points) <= 1e-9 * std::max(1.0, sheet_points),
+              "the questions' points do not add up to the sheet's", fmt::format("{} vs {}", sheet_total, sheet_points));
   return 0;
 }
