@@ -48,6 +48,7 @@ list(APPEND wasm_sources
   ${CMAKE_CURRENT_SOURCE_DIR}/render/markup_escape.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/label_placer.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/scene_painter.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/render/svg_path_data.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/render/svg_scene.cpp
   ${CMAKE_CURRENT_BINARY_DIR}/embedded_templates.cpp)
 list(SORT wasm_sources)

@@ -2,40 +2,11 @@
 
 #include <string_view>
 
+#include "render/svg_path_data.h"
 #include "support/base64.h"
 
 namespace epure::render {
 namespace {
-
-void append_path_data(std::string& d, const Path& path) {
-  const auto point = [&](P2 p) {
-    append_number(d, p.x);
-    d += ' ';
-    append_number(d, p.y);
-  };
-  for (const Path::Cmd& c : path.cmds()) {
-    if (!d.empty()) d += ' ';
-    switch (c.op) {
-      case Path::Op::move:
-        d += 'M';
-        point(c.p[0]);
-        break;
-      case Path::Op::line:
-        d += 'L';
-        point(c.p[0]);
-        break;
-      case Path::Op::cubic:
-        d += 'C';
-        point(c.p[0]);
-        d += ' ';
-        point(c.p[1]);
-        d += ' ';
-        point(c.p[2]);
-        break;
-      case Path::Op::close: d += 'Z'; break;
-    }
-  }
-}
 
 const char* anchor_name(Anchor a) {
   switch (a) {

@@ -32,36 +32,47 @@ void append_trimmed(std::string& out, std::string_view s) {
 
 }  // namespace
 
-void append_number(std::string& out, double v, int decimals) {
+bool round_scaled(double v, int decimals, long long& n) {
   if (!std::isfinite(v)) throw std::domain_error("SVG number is not finite");
-  if (decimals >= 0 && decimals < static_cast<int>(std::size(kPow10)) && std::abs(v) < kFastLimit) {
-    // Numbers are most of an SVG's bytes: round to an integer count of the last decimal (half
-    // away from zero, as llround: x − trunc(x) is exact) and write its digits backwards into a
-    // buffer, instead of a general float conversion.
-    const double x = v * static_cast<double>(kPow10[decimals]);
-    long long n = static_cast<long long>(x);
-    const double rest = x - static_cast<double>(n);
-    if (rest >= 0.5) ++n;
-    if (rest <= -0.5) --n;
-    if (n == 0) {
-      out += '0';
-      return;
-    }
-    unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
-    char buf[32];
-    char* p = std::end(buf);
-    int d = 0;
-    for (; d < decimals && m % 10 == 0; ++d) m /= 10;  // trailing zeros of the decimals: none
-    if (d < decimals) {
-      for (; d < decimals; ++d, m /= 10) *--p = static_cast<char>('0' + m % 10);
-      *--p = '.';
-    }
-    do {
-      *--p = static_cast<char>('0' + m % 10);
-      m /= 10;
-    } while (m != 0);
-    if (n < 0) *--p = '-';
-    out.append(p, static_cast<std::size_t>(std::end(buf) - p));
+  if (decimals < 0 || decimals >= static_cast<int>(std::size(kPow10)) || !(std::abs(v) < kFastLimit)) return false;
+  // Round to an integer count of the last decimal, half away from zero as llround
+  // (x − trunc(x) is exact).
+  const double x = v * static_cast<double>(kPow10[decimals]);
+  n = static_cast<long long>(x);
+  const double rest = x - static_cast<double>(n);
+  if (rest >= 0.5) ++n;
+  if (rest <= -0.5) --n;
+  return true;
+}
+
+void append_scaled(std::string& out, long long n, int decimals) {
+  if (n == 0) {
+    out += '0';
+    return;
+  }
+  // Numbers are most of an SVG's bytes: the digits are written backwards into a buffer instead
+  // of going through a general float conversion.
+  unsigned long long m = n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
+  char buf[32];
+  char* p = std::end(buf);
+  int d = 0;
+  for (; d < decimals && m % 10 == 0; ++d) m /= 10;  // trailing zeros of the decimals: none
+  if (d < decimals) {
+    for (; d < decimals; ++d, m /= 10) *--p = static_cast<char>('0' + m % 10);
+    *--p = '.';
+  }
+  do {
+    *--p = static_cast<char>('0' + m % 10);
+    m /= 10;
+  } while (m != 0);
+  if (n < 0) *--p = '-';
+  out.append(p, static_cast<std::size_t>(std::end(buf) - p));
+}
+
+void append_number(std::string& out, double v, int decimals) {
+  long long n = 0;
+  if (round_scaled(v, decimals, n)) {
+    append_scaled(out, n, decimals);
     return;
   }
   char buf[400];

@@ -22,6 +22,11 @@ namespace epure::render {
 // infinity (an SVG with "nan" in it is broken; better to fail loudly where it starts).
 std::string format_number(double v, int decimals = 2);
 void append_number(std::string& out, double v, int decimals = 2);
+// The same number in two steps, for writers that compute with the written values (path data's
+// relative steps): `v` as an integer count of its last written decimal (false, and `n` untouched,
+// when `v` is too large for the fast form: write it with append_number), and such a count's text.
+bool round_scaled(double v, int decimals, long long& n);
+void append_scaled(std::string& out, long long n, int decimals);
 
 // (append_escaped, the escaping of its text and attribute values: render/markup_escape.h)
 
