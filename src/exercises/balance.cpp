@@ -62,16 +62,19 @@ void BranchBalance::compute(int block) {
   // two closer to the block's mean; a bounded number of passes, in a fixed order.
   const double mean = std::accumulate(load.begin(), load.end(), 0.0) / kBlock;
   auto off = [&](double x) { return std::abs(x - mean); };
+  // weight[s][i] follows chosen_[i][s] through the swaps, so the loop compares no names.
   for (int pass = 0, swapped = 1; swapped && pass < kImprovePasses; ++pass) {
     swapped = 0;
     for (const int s : order)
       for (int i = 0; i < kBlock; ++i)
         for (int j = i + 1; j < kBlock; ++j) {
-          const double wi = work(s, chosen_[i][s]), wj = work(s, chosen_[j][s]);
-          if (!(wi != wj)) continue;
+          double& wi = weight[s][i];
+          double& wj = weight[s][j];
+          if (std::abs(wi - wj) <= kWorkSlack) continue;  // the same work: a swap moves nothing
           const double li = load[i] - wi + wj, lj = load[j] - wj + wi;
           if (std::max(off(li), off(lj)) + kWorkSlack < std::max(off(load[i]), off(load[j]))) {
             std::swap(chosen_[i][s], chosen_[j][s]);
+            std::swap(wi, wj);
             load[i] = li;
             load[j] = lj;
             swapped = 1;

@@ -77,11 +77,13 @@ void WorksheetSet::measure_work() {
       for (const auto& [name, weight] : weights) {
         if (!(weight > 0)) continue;
         // A branch asks the same questions on every instance (the course's cases): one instance
-        // measures it. One that cannot be drawn weighs nothing here; its draw says why.
+        // measures it. One that cannot be drawn (ExerciseKind::make's runtime_error: no instance
+        // meets the constraints) weighs nothing here; its draw says why when the sheet needs it.
+        // A logic_error is a bug in a kind and is not caught.
         double work = 0;
         try {
           for (const Question& q : draw(0, static_cast<int>(s), 0, name).questions) work += q.points;
-        } catch (const std::exception&) {
+        } catch (const std::runtime_error&) {
           work = 0;
         }
         (*work_)[s].emplace_back(name, work);
