@@ -82,10 +82,11 @@ int run_scan(const ScanCliOptions& o) {
   options.jobs = o.jobs;
   options.render_dpi = o.dpi;
   options.all_crops = o.crops;
+  options.out = o.out;
   scan::ScanResult result = scan::scan_inputs(o.inputs, layout, options, scan::DigitClassifier::builtin());
   result.problems.insert(result.problems.end(), correction_problems.begin(), correction_problems.end());
   if (corrections) scan::apply_corrections(result, *corrections, texts);
-  if (o.crops) scan::write_crops(o.out, result);  // its problems are said below with the others
+  if (o.crops) scan::say_crops_not_written(result);  // said below with the others
   scan::write_scan_outputs(o.out, result, layout);
 
   int status = 0;

@@ -185,7 +185,7 @@ void read_comb(const cv::Mat& g, const PageMap& map, const FieldLayout& f, const
     } else {
       r = net.classify(crop);
     }
-    out.cells.push_back(r);
+    out.cells.push_back({r.best, r.confidence});
     best_chars.push_back(class_char(r.best));
     out.chars.push_back(r.confidence >= kCellConfidence ? class_char(r.best) : '?');
     out.confidence *= r.confidence;

@@ -54,6 +54,13 @@ struct TickReading {
 // (0.05), so its confidence never passes 0.954: a threshold near that would send every field.
 inline constexpr float kCellConfidence = 0.85f;
 
+// A comb cell as a field's reading keeps it: the network's best class and its probability, not
+// the other classes' (a stack's readings are all kept until the outputs are written).
+struct CellRead {
+  CellClass best = CellClass::empty;
+  float confidence = 0;
+};
+
 struct FieldReading {
   std::string question;
   std::string value;        // as a student types it in the answers spreadsheet; empty: blank
@@ -62,7 +69,7 @@ struct FieldReading {
   double confidence = 1;    // the product of its cells' confidences
   std::string why;          // what made it uncertain ("cell 3: 0.62", "two boxes ticked")
   std::vector<TickReading> ticks;
-  std::vector<CellReading> cells;
+  std::vector<CellRead> cells;
   std::string chars;        // comb: each cell's character as read ('?' below confidence)
 };
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <set>
+#include <stdexcept>
 
 #include "embed/embedded.h"
 #include "exercises/texts.h"
@@ -130,47 +132,57 @@ std::string fields_csv(const ScanResult& result) {
   return out;
 }
 
-std::string review_html(const ScanResult& result, const SetLayout& layout) {
+void write_review_html(const ScanResult& result, const SetLayout& layout, const std::function<void(std::string_view)>& out) {
   const Texts& t = Texts::builtin(layout.language == "fr" ? "fr" : "en");
-  json fields = json::array();
-  for (const auto& [id, s] : result.sheets)
-    for (const auto& [q, f] : s.fields)
-      if (f.reading.uncertain)
-        fields.push_back({{"sheet", id}, {"page", f.page}, {"question", q}, {"proposed", f.reading.value},
-                          {"why", f.reading.why}, {"crop", base64(f.crop_png)}});
   json words = {{"sheet", t.get("scan.sheet")},       {"page", t.get("scan.page")},     {"question", t.get("scan.question")},
                 {"proposed", t.get("scan.proposed")}, {"why", t.get("scan.why")},       {"saved", t.get("scan.saved")},
                 {"reviewed", t.get("scan.reviewed")}, {"none", t.get("scan.review_none")}};
-  // inside a <script> element no "</" may close it early and no "<!--" may open the script's
-  // escaped state (a question id comes from layout.json): every '<' is written as \u003c, which
-  // JSON reads back as the same character (as explore.html's configuration is written)
-  std::string data = json{{"words", words}, {"fields", fields}}.dump();
-  replace_all(data, "<", "\\u003c");
   std::string page(*embedded_data("review.html"));
   replace_all(page, "{{LANG}}", layout.language == "fr" ? "fr" : "en");
   replace_all(page, "{{TITLE}}", render::markup_escaped(t.get("scan.review_title")));
   replace_all(page, "{{INTRO}}", render::markup_escaped(t.get("scan.review_intro")));
   replace_all(page, "{{SAVE}}", render::markup_escaped(t.get("scan.save")));
-  replace_all(page, "{{DATA}}", data);
+  // The data, {"fields":[...],"words":{...}} as one compact JSON dump writes it (keys in order),
+  // written a field at a time: each field's crop is read back from the spool only to be written.
+  // Inside a <script> element no "</" may close it early and no "<!--" may open the script's
+  // escaped state (a question id comes from layout.json): every '<' is written as \u003c, which
+  // JSON reads back as the same character (as explore.html's configuration is written).
+  constexpr std::string_view kData = "{{DATA}}";
+  const std::size_t at = page.find(kData);
+  if (at == std::string::npos) throw std::logic_error("review.html has no {{DATA}}");
+  out(std::string_view(page).substr(0, at));
+  out("{\"fields\":[");
+  bool first = true;
+  for (const auto& [id, s] : result.sheets)
+    for (const auto& [q, f] : s.fields)
+      if (f.reading.uncertain) {
+        const json field = {{"sheet", id}, {"page", f.page}, {"question", q}, {"proposed", f.reading.value},
+                            {"why", f.reading.why}, {"crop", base64(result.crop(f))}};
+        std::string data = field.dump();
+        replace_all(data, "<", "\\u003c");
+        if (!first) out(",");
+        first = false;
+        out(data);
+      }
+  std::string data = words.dump();
+  replace_all(data, "<", "\\u003c");
+  out("],\"words\":");
+  out(data);
+  out("}");
+  out(std::string_view(page).substr(at + kData.size()));
+}
+
+std::string review_html(const ScanResult& result, const SetLayout& layout) {
+  std::string page;
+  write_review_html(result, layout, [&](std::string_view bytes) { page += bytes; });
   return page;
 }
 
-std::size_t write_crops(const std::filesystem::path& dir, ScanResult& result) {
-  std::size_t written = 0;
-  for (const auto& [id, s] : result.sheets) {
-    bool made = false;  // the sheet's directory, made once, and only for a sheet with crops
-    for (const auto& [q, f] : s.fields) {
-      if (f.crop_png.empty() || q == "student_number") continue;
-      if (!safe_file_name(id) || !safe_file_name(q)) {
+void say_crops_not_written(ScanResult& result) {
+  for (const auto& [id, s] : result.sheets)
+    for (const auto& [q, f] : s.fields)
+      if (q != "student_number" && (!safe_file_name(id) || !safe_file_name(q)))
         result.problems.push_back(fmt::format("sheet {}: field {}: its id cannot be a file name: no crop written", id, q));
-        continue;
-      }
-      if (!made) std::filesystem::create_directories(dir / "crops" / id), made = true;
-      output::write_file_atomically(dir / "crops" / id / (q + ".png"), f.crop_png);
-      ++written;
-    }
-  }
-  return written;
 }
 
 void write_scan_outputs(const std::filesystem::path& dir, const ScanResult& result, const SetLayout& layout) {
@@ -180,7 +192,9 @@ void write_scan_outputs(const std::filesystem::path& dir, const ScanResult& resu
   output::write_file_atomically(dir / "pages.csv", pages_csv(result));
   output::write_file_atomically(dir / "sheets.csv", sheets_csv(result));
   output::write_file_atomically(dir / "fields.csv", fields_csv(result));
-  output::write_file_atomically(dir / "review.html", review_html(result, layout));
+  output::AtomicFile review(dir / "review.html");
+  write_review_html(result, layout, [&](std::string_view bytes) { review.write(bytes); });
+  review.commit();
 }
 
 }  // namespace epure::scan

@@ -7,13 +7,18 @@
 #include <cctype>
 #include <condition_variable>
 #include <deque>
+#include <exception>
+#include <iterator>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "exercises/sheet_id.h"
+#include "output/atomic_file.h"
 #include "scan/page_input.h"
 #include "scan/registration.h"
+#include "support/safe_file_name.h"
 
 namespace epure::scan {
 
@@ -23,6 +28,13 @@ namespace {
 struct PageOutcome {
   PageRecord record;
   std::vector<FieldResult> fields;
+  std::vector<std::string> crops;  // each field's PNG, "" when not kept
+};
+
+// A crop (--crops) to write once its page is gathered.
+struct CropFile {
+  std::filesystem::path path;
+  std::string png;
 };
 
 constexpr double kCropScale = 3.0;  // crops: 3 pixels per point, 216 dpi, which each crop's PNG states (pHYs)
@@ -95,10 +107,60 @@ PageOutcome read_page(InputPage in, const SetLayout& layout, const PageFrame& fr
     FieldResult fr;
     fr.page = page.page;
     fr.reading = read_field(in.image, map, f, paper, ink, layout.decimal_separator, net);
-    if (fr.reading.uncertain || options.all_crops) fr.crop_png = encode_png(field_image(in.image, map, f, kCropScale), kCropScale * 72);
+    out.crops.push_back(fr.reading.uncertain || options.all_crops ? encode_png(field_image(in.image, map, f, kCropScale), kCropScale * 72)
+                                                                  : std::string());
     out.fields.push_back(std::move(fr));
   }
   return out;
+}
+
+// Gathers the next page in input order into its sheet: the first registered copy of a page
+// counts, a later one is a duplicate and its readings are dropped. The crops of the fields kept
+// go to the spool (uncertain fields) and, with --crops, are returned to be written (the sheet's
+// directory is made here, once).
+std::vector<CropFile> gather(PageOutcome& o, const SetLayout& layout, const ScanOptions& options, ScanResult& result,
+                             std::set<std::string>& crop_dirs) {
+  std::vector<CropFile> files;
+  PageRecord& r = o.record;
+  if (r.status == PageStatus::identified) {
+    const SheetLayout& layout_sheet = *layout.find(r.sheet);
+    auto [it, fresh] = result.sheets.try_emplace(r.sheet);
+    SheetResult& s = it->second;
+    if (fresh) {
+      s.sheet = r.sheet;
+      s.pages = static_cast<int>(layout_sheet.pages.size());
+      s.seen.assign(static_cast<std::size_t>(s.pages), false);
+      if (layout_sheet.student) {
+        s.student_name = layout_sheet.student->name;
+        s.roster_number = layout_sheet.student->number;
+        s.number_printed = true;
+        for (const auto& p : layout_sheet.pages)
+          for (const auto& f : p.fields) s.number_printed = s.number_printed && f.question != "student_number";
+      }
+    }
+    if (s.seen[static_cast<std::size_t>(r.sheet_page - 1)]) {
+      r.status = PageStatus::duplicate;
+      r.detail = fmt::format("page {} of sheet {} was read from an earlier page", r.sheet_page, r.sheet);
+    } else {
+      s.seen[static_cast<std::size_t>(r.sheet_page - 1)] = true;
+      for (std::size_t i = 0; i < o.fields.size(); ++i) {
+        FieldResult& f = o.fields[i];
+        std::string& png = o.crops[i];
+        const std::string question = f.reading.question;
+        if (question == "student_number" && !f.reading.uncertain) s.student_number = f.reading.value;
+        auto [at, kept] = s.fields.emplace(question, std::move(f));
+        if (!kept || png.empty()) continue;
+        if (at->second.reading.uncertain) at->second.crop = result.spool->add(png);
+        if (options.all_crops && question != "student_number" && safe_file_name(r.sheet) && safe_file_name(question)) {
+          const std::filesystem::path dir = options.out / "crops" / r.sheet;
+          if (crop_dirs.insert(r.sheet).second) std::filesystem::create_directories(dir);
+          files.push_back({dir / (question + ".png"), std::move(png)});
+        }
+      }
+    }
+  }
+  result.pages.push_back(std::move(r));
+  return files;
 }
 
 }  // namespace
@@ -122,14 +184,24 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
   // OpenCV's own threads would only compete with ours
   cv::setNumThreads(1);
   const int jobs = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  ScanResult result;
+  if (!options.out.empty()) std::filesystem::create_directories(options.out);
+  result.spool = std::make_shared<CropSpool>(options.out.empty() ? std::filesystem::temp_directory_path() : options.out);
 
-  // One thread decodes pages in input order into a short queue; `jobs` workers read them.
+  // One thread decodes pages in input order into a short queue; `jobs` workers read them, and
+  // the worker that finishes the next page in input order gathers it and those after it already
+  // read. The decoder stays at most `window` pages ahead of the gathering, so the pages read but
+  // not yet gathered (waiting for a slow one before them) are few whatever the stack.
   std::mutex mu;
   std::condition_variable cv_space, cv_work;
   std::deque<std::pair<std::size_t, InputPage>> queue;
+  std::map<std::size_t, PageOutcome> ready;  // read, waiting for the pages before them
+  std::size_t gathered = 0;                  // the pages gathered, in input order
+  std::set<std::string> crop_dirs;           // the sheets whose crops directory is made
   bool done = false;
-  std::vector<std::optional<PageOutcome>> outcomes;
+  std::exception_ptr failure;  // a crop or the spool that could not be written: the run stops
   const std::size_t capacity = static_cast<std::size_t>(2 * jobs);
+  const std::size_t window = capacity + static_cast<std::size_t>(2 * jobs);
 
   auto worker = [&] {
     for (;;) {
@@ -141,6 +213,7 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
         item = std::move(queue.front());
         queue.pop_front();
         cv_space.notify_one();
+        if (failure) continue;
       }
       PageOutcome o;
       try {
@@ -149,8 +222,31 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
         o.record.status = PageStatus::unreadable;
         o.record.detail = e.what();
       }
-      std::lock_guard lock(mu);
-      outcomes[item.first] = std::move(o);
+      std::vector<CropFile> files;
+      {
+        std::lock_guard lock(mu);
+        if (failure) continue;
+        ready.emplace(item.first, std::move(o));
+        try {
+          for (auto next = ready.begin(); next != ready.end() && next->first == gathered; next = ready.begin()) {
+            auto more = gather(next->second, layout, options, result, crop_dirs);
+            ready.erase(next);
+            ++gathered;
+            std::move(more.begin(), more.end(), std::back_inserter(files));
+          }
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        cv_space.notify_one();
+      }
+      // each file is one field's of one sheet, written by one worker: no lock needed
+      try {
+        for (const auto& f : files) output::write_file_atomically(f.path, f.png);
+      } catch (...) {
+        std::lock_guard lock(mu);
+        if (!failure) failure = std::current_exception();
+        cv_space.notify_one();
+      }
     }
   };
   std::vector<std::thread> threads;
@@ -168,12 +264,14 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
       if (!page) break;
       const bool failed = page->page == 0;  // the stream failed: on to the next file
       std::unique_lock lock(mu);
-      cv_space.wait(lock, [&] { return queue.size() < capacity; });
-      outcomes.emplace_back();
+      cv_space.wait(lock, [&] { return failure || (queue.size() < capacity && index - gathered < window); });
+      if (failure) break;
       queue.emplace_back(index++, std::move(*page));
       cv_work.notify_one();
       if (failed) break;
     }
+    std::lock_guard lock(mu);
+    if (failure) break;
   }
   {
     std::lock_guard lock(mu);
@@ -181,41 +279,7 @@ ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& 
   }
   cv_work.notify_all();
   for (auto& t : threads) t.join();
-
-  // Gathered by sheet, in input order: the first registered copy of a page counts.
-  ScanResult result;
-  for (auto& slot : outcomes) {
-    PageOutcome& o = *slot;
-    PageRecord& r = o.record;
-    if (r.status == PageStatus::identified) {
-      const SheetLayout& layout_sheet = *layout.find(r.sheet);
-      auto [it, fresh] = result.sheets.try_emplace(r.sheet);
-      SheetResult& s = it->second;
-      if (fresh) {
-        s.sheet = r.sheet;
-        s.pages = static_cast<int>(layout_sheet.pages.size());
-        s.seen.assign(static_cast<std::size_t>(s.pages), false);
-        if (layout_sheet.student) {
-          s.student_name = layout_sheet.student->name;
-          s.roster_number = layout_sheet.student->number;
-          s.number_printed = true;
-          for (const auto& p : layout_sheet.pages)
-            for (const auto& f : p.fields) s.number_printed = s.number_printed && f.question != "student_number";
-        }
-      }
-      if (s.seen[static_cast<std::size_t>(r.sheet_page - 1)]) {
-        r.status = PageStatus::duplicate;
-        r.detail = fmt::format("page {} of sheet {} was read from an earlier page", r.sheet_page, r.sheet);
-      } else {
-        s.seen[static_cast<std::size_t>(r.sheet_page - 1)] = true;
-        for (auto& f : o.fields) {
-          if (f.reading.question == "student_number" && !f.reading.uncertain) s.student_number = f.reading.value;
-          s.fields.emplace(f.reading.question, std::move(f));
-        }
-      }
-    }
-    result.pages.push_back(std::move(r));
-  }
+  if (failure) std::rethrow_exception(failure);
   return result;
 }
 

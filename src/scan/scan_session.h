@@ -1,14 +1,20 @@
 #pragma once
 // `epure scan`: every page of every input read, identified, registered and its fields read;
 // then the pages gathered by sheet (a page seen twice is a duplicate; a page missing is said).
-// Pages are decoded one at a time by one thread and read by `jobs` others through a short queue,
-// so memory stays flat over any number of pages; the results are put back in input order, so the
-// outputs do not depend on the number of jobs.
+// Pages are decoded one at a time by one thread and read by `jobs` others through a short queue;
+// each page read is gathered as soon as the pages before it in the input are (so the first copy
+// of a page counts whatever the number of jobs), and then all it keeps is its fields' readings:
+// its image is gone, a duplicate's readings are dropped, its crops are written (--crops) or set
+// aside on disk (review.html's). So memory stays flat over any number of pages but for the
+// readings themselves, a few hundred bytes a field.
+#include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "grading/corrections.h"
+#include "scan/crop_spool.h"
 #include "scan/digit_classifier.h"
 #include "scan/field_reading.h"
 #include "scan/layout_file.h"
@@ -32,7 +38,7 @@ struct PageRecord {
 struct FieldResult {
   FieldReading reading;
   int page = 0;                 // the sheet's page it is on
-  std::string crop_png;         // the field as scanned (uncertain fields, and every field with --crops)
+  CropRef crop;                 // the field as scanned, a PNG in the result's spool (uncertain fields only)
   bool corrected = false;       // settled by a correction
   std::string note;             // the correction's note
 };
@@ -52,13 +58,20 @@ struct SheetResult {
 struct ScanOptions {
   int jobs = 0;            // 0: every core
   int render_dpi = 200;    // PDF pages without one embedded image
-  bool all_crops = false;  // keep every field's crop (the feedback sheets), not only uncertain ones
+  // Write every field's crop (the feedback sheets) into out/crops/<sheet id>/<question id>.png
+  // as its page is gathered; a field whose id cannot be a file name is left out (say_crops_not_written).
+  bool all_crops = false;
+  std::filesystem::path out;  // the output directory: the crops, and the spool of review.html's crops (empty: the temporary directory)
 };
 
 struct ScanResult {
   std::vector<PageRecord> pages;               // every input page, in input order
   std::map<std::string, SheetResult> sheets;   // every sheet with an identified page
   std::vector<std::string> problems;           // corrections that could not be applied, …
+  std::shared_ptr<CropSpool> spool;            // the uncertain fields' crops (none: no crop)
+
+  // The field's crop (a PNG), "" when it has none.
+  std::string crop(const FieldResult& f) const { return spool && f.crop.size > 0 ? spool->read(f.crop) : std::string(); }
 };
 
 ScanResult scan_inputs(const std::vector<std::string>& inputs, const SetLayout& layout, const ScanOptions& options,

@@ -4,10 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <memory>
+
 #include "grading/corrections.h"
 #include "scan/page_input.h"
 #include "scan/scan_outputs.h"
 #include "scan/scan_session.h"
+#include "support/base64.h"
 #include "support/png_size.h"
 
 using namespace epure;
@@ -57,6 +61,31 @@ TEST_CASE("scan outputs: review.html's data cannot close or escape its script, w
   for (const auto& f : parsed["fields"]) found |= f["question"] == "</script><!--<script>";
   CHECK(found);
   CHECK(parsed["fields"].size() == 2);  // the fields to review only
+}
+
+TEST_CASE("scan outputs: review.html's crops come back from the spool, the uncertain fields' only, written a piece at a time") {
+  ScanResult r = sample();
+  r.spool = std::make_shared<CropSpool>(std::filesystem::temp_directory_path());
+  SheetResult& s = r.sheets.begin()->second;
+  s.fields.at("1.t").crop = r.spool->add("crop of 1.t");
+  FieldResult other = field("2.t", "3", true);
+  other.crop = r.spool->add(std::string("\0\xff", 2));
+  s.fields.emplace("2.t", other);
+  SetLayout layout;
+  layout.language = "en";
+  std::string pieces;
+  int count = 0;
+  write_review_html(r, layout, [&](std::string_view bytes) { pieces += bytes, ++count; });
+  const std::string page = review_html(r, layout);
+  CHECK(pieces == page);
+  CHECK(count > 3);
+  const auto open_end = page.find('>', page.find("id=\"review-data\"")) + 1;
+  const auto parsed = nlohmann::json::parse(page.substr(open_end, page.find("</script>", open_end) - open_end));
+  REQUIRE(parsed["fields"].size() == 2);
+  CHECK(parsed["fields"][0]["question"] == "1.t");
+  CHECK(parsed["fields"][0]["crop"] == base64("crop of 1.t"));
+  CHECK(parsed["fields"][1]["crop"] == base64(std::string("\0\xff", 2)));
+  CHECK(parsed["words"]["sheet"].is_string());
 }
 
 TEST_CASE("scan corrections: the file epure grade reads, each entry placed or said with its number") {
