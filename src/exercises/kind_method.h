@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <any>
+#include <optional>
 #include <array>
 #include <stdexcept>
 #include <span>
@@ -32,6 +33,7 @@
 #include "exercises/kind_support.h"
 #include "exercises/method.h"
 #include "solve/fields.h"
+#include "solve/number_span.h"
 #include "solve/result.h"
 
 namespace epure::kinds {
@@ -253,7 +255,19 @@ class MethodKind : public ExerciseKind {
     Data d{};
     FigureReader reader(figure);
     visit_schema(reader, d);
+    // A line beyond the kernels' exact arithmetic is refused, not answered (solve/number_span.h);
+    // the kind's own refusals (a radius ≤ 0, a degenerate figure) say more, and come first.
+    static const std::vector<DataField> fields = data_fields();
+    double canonical_size = 0;
+    if constexpr (requires { Kind::kCanonicalSize; }) canonical_size = Kind::kCanonicalSize;
+    std::optional<solve::InputError> beyond;
+    try {
+      solve::check_number_span(figure.all(), figure, fields, canonical_size);
+    } catch (const solve::InputError& e) {
+      beyond = e;
+    }
     Kind::contract(d, figure, result);
+    if (beyond) throw *beyond;
   }
 
   // A kind's `ExerciseInstance build(const Data&, const ExerciseContext&) const` (the key of

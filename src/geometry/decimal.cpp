@@ -216,6 +216,14 @@ Decimal written(double x) {
   return read_decimal({buffer, static_cast<std::size_t>(end - buffer)}, x);
 }
 
+Decimal with_exact_parts(Decimal d) {
+  if (d.form == Decimal::Form::binary) return d;
+  const exact::TwoTerm parts = exact::two_term(exact::exact_value(d));
+  d.hi = parts.hi;
+  d.lo = parts.lo;
+  return d;
+}
+
 bool same_value(const Decimal& a, const Decimal& b) {
   if (a.hi != b.hi || a.lo != b.lo) return false;  // each a function of the value
   if (a.lo == 0) return true;                       // both the double hi

@@ -47,11 +47,19 @@ struct Decimal {
   double error() const { return lo == 0 ? 0 : std::abs(lo) * 0x1p-51 + 0x1p-1074; }
 };
 
-// d·2^k, exactly (a direction rescaled by a power of two).
+// hi and lo of d computed again from its exact value (decimal.cpp).
+Decimal with_exact_parts(Decimal d);
+
+// d·2^k, exactly (a direction rescaled by a power of two). A subnormal decimal's rest is below
+// the doubles (kept as ±2^-1074 for its sign), so its hi + lo is only within 2^-1074 of it:
+// scaled up (a direction near 1e-310 brought to unit size), hi and lo are taken again from the
+// exact value, else they would carry a rounding of 1e-12 into the kernels.
 inline Decimal times_pow2(Decimal d, int k) {
+  const bool rest_lost = d.lo != 0 && std::abs(d.hi) < 0x1p-1022 && k > 0;
   d.hi = times_pow2(d.hi, k);
   d.lo = times_pow2(d.lo, k);
   if (d.form != Decimal::Form::binary) d.scale2 += k;
+  if (rest_lost) [[unlikely]] return with_exact_parts(d);
   return d;
 }
 

@@ -12,8 +12,23 @@
 namespace epure::geo {
 
 namespace detail {
+// A subnormal decimal's rest is below the doubles (kept as ±2^-1074 for its sign: decimal.h), so
+// hi + lo is only within 2^-1074 of it: scaled up with a figure of that size (every number near
+// 1e-310), that would be a rounding of 1e-14. Such a number is scaled exactly instead, from its
+// decimal, then rounded to hi + lo (rare: a subnormal datum; never a worksheet's).
+inline bool below_normal(const Decimal& d) { return d.lo != 0 && std::abs(d.hi) < 0x1p-1022; }
+inline void exactly_scaled(const exact::ExactDecimal& x, int e, double& hi, double& lo, double& err) {
+  const exact::TwoTerm t = exact::two_term(exact::times_pow2(x, -e));
+  hi = t.hi;
+  lo = t.lo;
+  if (lo != 0) err = std::max(err, std::abs(lo) * 0x1p-51 + 0x1p-1074);
+}
 // (b − a)·2^-e of two decimals: the doubles' difference exactly, plus the rests' difference.
 inline void decimal_component(const Decimal& b, const Decimal& a, int e, double& hi, double& lo, double& err) {
+  if (below_normal(b) || below_normal(a)) [[unlikely]] {
+    exactly_scaled(exact::exact_value(b) - exact::exact_value(a), e, hi, lo, err);
+    return;
+  }
   const exact::TwoTerm s = exact::two_difference(b.hi, a.hi);
   if (b.lo == 0 && a.lo == 0) {
     hi = times_pow2(s.hi, -e);
@@ -29,6 +44,10 @@ inline void decimal_component(const Decimal& b, const Decimal& a, int e, double&
   err = std::max(err, times_pow2(bound, -e) + 0x1p-1074);
 }
 inline void decimal_component(const Decimal& u, int f, double& hi, double& lo, double& err) {
+  if (below_normal(u)) [[unlikely]] {
+    exactly_scaled(exact::exact_value(u), f, hi, lo, err);
+    return;
+  }
   hi = times_pow2(u.hi, -f);
   lo = times_pow2(u.lo, -f);
   if (u.lo != 0) err = std::max(err, times_pow2(u.error(), -f) + 0x1p-1074);
@@ -83,7 +102,12 @@ struct DecimalScalar {
   DecimalScalar(double x) : hi(x) {}  // NOLINT: a double is its own decimal
   DecimalScalar(const Decimal& d, int e)
       : hi(times_pow2(d.hi, -e)), lo(times_pow2(d.lo, -e)),
-        err(d.lo == 0 ? 0 : times_pow2(d.error(), -e) + 0x1p-1074), exact(&d), shift(-e) {}
+        err(d.lo == 0 ? 0 : times_pow2(d.error(), -e) + 0x1p-1074), exact(&d), shift(-e) {
+    if (detail::below_normal(d)) [[unlikely]] {
+      err = 0;
+      detail::exactly_scaled(exact::exact_value(d), e, hi, lo, err);
+    }
+  }
 };
 
 }  // namespace epure::geo

@@ -12,7 +12,12 @@
 // polynomial is zero), so that a quotient computed from it never contradicts the branch.
 //
 // The data are expected near unit size (the kernels scale them by powers of two first): the
-// filter bounds are relative, and the fma products exact, only away from underflow.
+// filter bounds are relative, and the fma products exact, only away from underflow (a line whose
+// numbers span more is refused: solve/number_span.h).
+//
+// The bound is the value's error too: a value within 2^56 of it (a decimal's digits beyond the
+// doubles cancelling the rest, 1e-20 of the terms) is taken from the slow path, exactly rounded,
+// so that quotients of these values stay within 4 ulps of the decimals' figure.
 #include <cmath>
 
 #include "geometry/decimal_vec.h"
@@ -47,6 +52,13 @@ inline constexpr double kCompensatedFilter = 64 * kEpsilon * kEpsilon;
 // A plain sum of two products of exact two-term values, off by at most a few ε of its terms:
 // 8·ε·T covers it.
 inline constexpr double kPlainFilter = 8 * kEpsilon;
+// The filter's bound is also the error of the value: beyond 2^56 times it, the value is within
+// 2^-56 of itself (a quarter ulp), and t = n / d keeps its 4 ulps. Nearer (a decimal's digits
+// beyond the doubles, 1e-20 of the terms, make the value: t_ab of segments parallel but for a
+// 20th digit), the slow path gives it exactly rounded. No worksheet line comes near: their
+// figures keep a margin from every boundary.
+inline constexpr double kValueMargin = 0x1p56;
+inline bool value_certain(double value, double bound) { return std::abs(value) > kValueMargin * bound; }
 
 // dot and cross of exact_vec.h, as hi + lo (their hi is those functions' result, bit for bit).
 inline exact::TwoTerm compensated_dot(const ExactVec2& u, const ExactVec2& v) {
@@ -102,7 +114,7 @@ Certain exact_sum_of_products(exact::TwoTerm x1, double y1, exact::TwoTerm x2, d
 inline Certain certain_dot(const ExactVec2& u, const ExactVec2& v) {
   const exact::TwoTerm value = detail::compensated_dot(u, v);
   const double terms = std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + detail::perturbation(u, v)))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_dot(u, v);
 }
@@ -110,7 +122,7 @@ inline Certain certain_dot(const ExactVec3& u, const ExactVec3& v) {
   const exact::TwoTerm value = detail::compensated_dot(u, v);
   const double terms =
       std::abs(u.hi.x * v.hi.x) + std::abs(u.hi.y * v.hi.y) + std::abs(u.hi.z * v.hi.z);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + detail::perturbation(u, v)))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_dot(u, v);
 }
@@ -119,7 +131,7 @@ inline Certain certain_dot(const ExactVec3& u, const ExactVec3& v) {
 inline Certain certain_cross(const ExactVec2& u, const ExactVec2& v) {
   const exact::TwoTerm value = detail::compensated_cross(u, v);
   const double terms = std::abs(u.hi.x * v.hi.y) + std::abs(u.hi.y * v.hi.x);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(u, v))
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + detail::perturbation(u, v)))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_cross(u, v);
 }
@@ -132,7 +144,7 @@ inline Certain certain_cross(const ExactVec3& u, const ExactVec3& v, int axis) {
   const ExactVec2 b{{at(v.hi, i), at(v.hi, j)}, {at(v.lo, i), at(v.lo, j)}, v.err};
   const exact::TwoTerm value = detail::compensated_cross(a, b);
   const double terms = std::abs(a.hi.x * b.hi.y) + std::abs(a.hi.y * b.hi.x);
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + detail::perturbation(a, b))
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + detail::perturbation(a, b)))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_cross(u, v, axis);
 }
@@ -151,7 +163,7 @@ inline Certain certain_excess(const ExactVec2& v, const DecimalScalar& radius) {
                            ? 0
                            : 4 * (v.err * (std::abs(v.hi.x) + std::abs(v.hi.y) + v.err) +
                                   radius.err * (std::abs(r) + radius.err)) + 0x1p-1060;
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + moved)
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + moved))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_excess(v, radius);
 }
@@ -170,7 +182,7 @@ inline Certain certain_excess(const ExactVec3& v, const DecimalScalar& radius) {
           ? 0
           : 4 * (v.err * (std::abs(v.hi.x) + std::abs(v.hi.y) + std::abs(v.hi.z) + v.err) +
                  radius.err * (std::abs(r) + radius.err)) + 0x1p-1060;
-  if (std::abs(value.hi) > detail::kCompensatedFilter * terms + moved)
+  if (detail::value_certain(value.hi, detail::kCompensatedFilter * terms + moved))
     return {sign_of(value.hi), value.hi, value.lo};
   return detail::exact_excess(v, radius);
 }

@@ -466,9 +466,67 @@ struct DdHit {
   Hit2 hit;  // rounded
   Dd t;      // t before its rounding
 };
-DdHit dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, const DPoint2& direction,
-             const std::array<Dd, 2>& rot, bool ellipse) {
+// An exact number as a double-double, to about 2^-104 of itself: p + q√K without cancellation,
+// (p² − Kq²)/(p − q√K) where p and q√K nearly cancel.
+Dd dd_of(const ExactDecimal& x) {
+  const exact::TwoTerm v = exact::two_term(x);
+  return {v.hi, v.lo};
+}
+template <int K>
+Dd dd_of(const exact::Quadratic<K>& x) {
+  const Dd root = K == 2 ? kSqrt2 : kSqrt3;
+  const Dd p = dd_of(x.p), q = dd_of(x.q) * root;
+  if (x.p.sign() * x.q.sign() >= 0) return p + q;
+  return dd_div(dd_of(x.p * x.p - exact::exact_value(static_cast<double>(K)) * (x.q * x.q)), p - q);
+}
+
+// The ellipse's γ (A's place: b²x² + a²y² − a²b²) and discriminant β² − αγ, which near the
+// boundary and near tangency are made of the data's last digits: in double-double from the
+// decimals' hi + lo they are off by about ε² of the data (2^-104 of A, far from the origin: 1e-24
+// of a small figure at 70), more than themselves when A is a hair of 1e-23 inside (a decimal of
+// 25 digits). Where the double-double is within 2^-40 of its terms, they are taken exactly in
+// the angle's field (multiples of 30°, 45°, 90°), then rounded to double-double; elsewhere (every
+// worksheet line) the double-double stays. At other angles such a line is refused before.
+struct Coefficients {
+  Dd gamma, disc;
+};
+constexpr double kCoarse = 0x1p-40;  // of the terms: the double-double keeps 2^-60 of the value beyond
+template <class Num>
+Coefficients exact_coefficients(const Turned<Num>& f) {
+  const auto &X = f.X, &U = f.U, &s = f.s;
+  const Num a2 = s[0] * s[0], b2 = s[1] * s[1];
+  const Num alpha = b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]);
+  const Num beta = b2 * (X[0] * U[0]) + a2 * (X[1] * U[1]);
+  const Num gamma = b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2;
+  return {dd_of(gamma), dd_of(beta * beta - alpha * gamma)};
+}
+// The same in the exact field of a special angle (k = 1, 2, 3).
+Coefficients exact_coefficients(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle) {
+  if (angle.k == 2) return exact_coefficients(turned<exact::Quadratic<2>>(w, direction, angle));
+  if (angle.k == 3) return exact_coefficients(turned<exact::Quadratic<3>>(w, direction, angle));
+  return exact_coefficients(turned<ExactDecimal>(w, direction, angle));
+}
+// A rectangle's gap to the side decided and the direction across it, exactly (as γ above).
+template <class Num>
+std::array<Dd, 2> exact_gap(const Turned<Num>& e, const Decisions& d) {
+  const int n = d.face->axis;
+  const Num g = d.inside ? (d.face->sign > 0 ? e.s[n] - e.X[n] : e.s[n] + e.X[n])
+                         : (d.face->sign > 0 ? e.X[n] - e.s[n] : -e.X[n] - e.s[n]);
+  return {dd_of(g), dd_of(e.U[n])};
+}
+std::array<Dd, 2> exact_gap(const WrittenTurned& w, const DPoint2& direction, const SpecialAngle& angle,
+                            const Decisions& d) {
+  if (angle.k == 2) return exact_gap(turned<exact::Quadratic<2>>(w, direction, angle), d);
+  if (angle.k == 3) return exact_gap(turned<exact::Quadratic<3>>(w, direction, angle), d);
+  return exact_gap(turned<ExactDecimal>(w, direction, angle), d);
+}
+
+DdHit dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, const DPoint2& direction, bool ellipse,
+             const SpecialAngle& angle) {
   Dd* tag = nullptr;
+  // cos θ, sin θ made here: passed in as the caller's temporary, g++ 12 -O3 read them as
+  // uninitialised (valgrind; a quarter turn's values) once this function grew
+  const std::array<Dd, 2> rot = dd_rotation(w, angle);
   const auto &X = f.X, &U = f.U, &s = f.s;
   Dd t;
   Dd g0, g1;  // the outward normal in the figure's frame (not normalised)
@@ -476,8 +534,16 @@ DdHit dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, co
     const Dd a2 = s[0] * s[0], b2 = s[1] * s[1];
     const Dd alpha = b2 * (U[0] * U[0]) + a2 * (U[1] * U[1]);
     const Dd beta = b2 * (X[0] * U[0]) + a2 * (X[1] * U[1]);
-    const Dd gamma = b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2;
-    const Dd root = dd_sqrt(beta * beta - alpha * gamma);
+    Dd gamma = b2 * (X[0] * X[0]) + a2 * (X[1] * X[1]) - a2 * b2;
+    Dd disc = beta * beta - alpha * gamma;
+    const double gamma_terms = (b2 * (X[0] * X[0])).hi + (a2 * (X[1] * X[1])).hi + (a2 * b2).hi;
+    const double disc_terms = (beta * beta).hi + std::abs((alpha * gamma).hi);
+    if (angle.k != 0 && (std::abs(gamma.hi) < kCoarse * gamma_terms || std::abs(disc.hi) < kCoarse * disc_terms)) {
+      const Coefficients exact = exact_coefficients(w, direction, angle);
+      gamma = exact.gamma;
+      disc = exact.disc;
+    }
+    const Dd root = dd_sqrt(disc);
     if (d.tangent) t = dd_div(-beta, alpha);  // the line tangent as written: no chord
     else if (d.inside) t = beta.hi <= 0 ? dd_div(root - beta, alpha) : dd_div(-gamma, beta + root);
     else t = dd_div(gamma, root - beta);
@@ -486,9 +552,17 @@ DdHit dd_hit(const Turned<Dd>& f, const Decisions& d, const WrittenTurned& w, co
     g1 = a2 * P1;
   } else {
     const int n = d.face->axis;
-    const Dd gap = d.inside ? (d.face->sign > 0 ? s[n] - X[n] : s[n] + X[n])
-                            : (d.face->sign > 0 ? X[n] - s[n] : -X[n] - s[n]);
-    t = dd_div(gap, U[n].hi < 0 ? -U[n] : U[n]);
+    Dd gap = d.inside ? (d.face->sign > 0 ? s[n] - X[n] : s[n] + X[n])
+                      : (d.face->sign > 0 ? X[n] - s[n] : -X[n] - s[n]);
+    Dd along = U[n];
+    // A a hair from the side, or the ray nearly along it: both exactly, as γ above
+    const double u_terms = std::abs(U[0].hi) + std::abs(U[1].hi);
+    if (angle.k != 0 && (std::abs(gap.hi) < kCoarse * std::abs(s[n].hi) || std::abs(along.hi) < kCoarse * u_terms)) {
+      const std::array<Dd, 2> exact = exact_gap(w, direction, angle, d);
+      gap = exact[0];
+      along = exact[1];
+    }
+    t = dd_div(gap, along.hi < 0 ? -along : along);
     if (t.hi < 0) t = {};
     (n == 0 ? g0 : g1) = Dd{static_cast<double>(d.face->sign), 0};
   }
@@ -516,7 +590,8 @@ Result refined(Result e, const Decisions& d, const WrittenTurned& w, const DPoin
   constexpr bool ellipse = std::is_same_v<Result, RayEllipse>;
   if constexpr (!ellipse)
     if (!d.face) return e;
-  const DdHit dd = dd_hit(turned<Dd>(w, direction, angle), d, w, direction, dd_rotation(w, angle), ellipse);
+  const Turned<Dd> frame = turned<Dd>(w, direction, angle);
+  const DdHit dd = dd_hit(frame, d, w, direction, ellipse, angle);
   const Hit2& h = dd.hit;
   const double S = std::max({std::abs(w.A[0].hi), std::abs(w.A[1].hi), std::abs(w.C[0].hi), std::abs(w.C[1].hi),
                              std::abs(w.sx.hi), std::abs(w.sy.hi)});

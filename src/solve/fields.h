@@ -56,6 +56,8 @@ class Fields {
  public:
   explicit Fields(std::span<const Field> figure) : figure_(figure) {}
 
+  // Every field of the line, in its order.
+  std::span<const Field> all() const { return figure_; }
   // The field, or null when the figure has none of that name.
   const Value* find(std::string_view name) const { return solve::find(figure_, name); }
 

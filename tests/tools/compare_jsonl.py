@@ -155,10 +155,13 @@ def may_refuse(fig):
     """Whether the contract may refuse this turned figure rather than decide it: an angle whose
     cos and sin are in no exact field of ours (not a whole multiple of 30° or 45° as written),
     unequal sizes. Such a line is "refused or right": a refusal is counted, never a wrong answer."""
+    def written(x):  # the decimal as written (a TextNumber's text; str() would give its double)
+        return Fraction(getattr(x, "text", str(x)))
+
     try:
-        if fig.get("kind") == "ray_ellipse" and Fraction(str(fig["radii"][0])) == Fraction(str(fig["radii"][1])):
+        if fig.get("kind") == "ray_ellipse" and written(fig["radii"][0]) == written(fig["radii"][1]):
             return False
-        angle = Fraction(str(fig["angle"]))
+        angle = written(fig["angle"])
         exact = (angle % 30 == 0 or angle % 45 == 0) and abs(angle) <= 2**53
         return fig.get("kind") in ("ray_ellipse", "ray_rectangle") and not exact
     except (TypeError, ValueError, KeyError, IndexError, ZeroDivisionError):

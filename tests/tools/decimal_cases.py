@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Figures degenerate as the decimals written, and not as their doubles (issue 35).
 
-usage: decimal_cases.py SEED N      (prints N lines of JSON Lines)
+usage: decimal_cases.py SEED N [--long]      (prints N lines of JSON Lines)
 
 A number means the decimal written ("0.1" is one tenth: README, one meaning for a number). Every
 figure here is exactly on a boundary as decimals: segments parallel or collinear, meeting at
@@ -10,6 +10,10 @@ origin on the circle or the sphere, a ray through a corner of the square or an e
 cube, vectors collinear or orthogonal, at every scale from 1e-8 to 1e8 and far from the origin.
 Their doubles are rounded, so that the same figure in binary is off the boundary (most lines) or
 on it by chance: an answer that decides on the doubles gets them wrong.
+
+--long: the same figures with 18 to 25 significant digits a number (more than a double holds),
+six in ten moved a hair (one unit of a 18th to 30th digit) off their boundary: their values are
+made of the digits beyond the doubles.
 
 Deterministic for a seed (random.Random(SEED)). The coordinates are integers on a decimal grid
 10^(s-d) (d decimals at the scale 10^s), written exactly ("-4.217e-6", "812.5").
@@ -441,11 +445,45 @@ MAKERS = [segments, projection, lambda g: ball(g, 2), lambda g: ball(g, 3), lamb
           turned_other]
 
 
-def lines(seed, count):
-    g = Gen(seed)
+class LongGen(Gen):
+    """Numbers of more digits than a double holds (18 to 25 significant ones): the same figures
+    1e12 to 1e17 grid steps from the origin, every boundary kept as written."""
+
+    def far(self, step, dim):
+        n = 10 ** self.rng.randint(12, 17)
+        return tuple(step * self.rng.randint(-n, n) for _ in range(dim))
+
+
+def hair(g, text_line):
+    """One number of the line moved by one unit of its 18th to 30th significant digit, either
+    way: a figure a hair off its boundary as written (t_ab of nearly parallel segments in the
+    1e19, a discriminant of 1e-25 of its terms), whose values are made of the digits beyond the
+    doubles."""
+    numbers = json.loads(text_line, parse_float=Fraction, parse_int=Fraction)
+    slots = [(k, i) for k, v in numbers.items() if k not in ("kind", "angle")
+             for i in (range(len(v)) if isinstance(v, list) else [None])
+             if (v[i] if i is not None else v) != 0]
+    if not slots:
+        return text_line
+    k, i = g.rng.choice(slots)
+    x = numbers[k][i] if i is not None else numbers[k]
+    unit = Fraction(10) ** (math.floor(math.log10(abs(float(x)))) - g.rng.randint(17, 29))
+    moved = x + g.rng.choice([-1, 1]) * unit
+    if i is not None:
+        numbers[k][i] = moved
+    else:
+        numbers[k] = moved
+    fields = {name: tuple(v) if isinstance(v, list) else v for name, v in numbers.items() if name != "kind"}
+    return line(numbers["kind"], **fields)
+
+
+def lines(seed, count, long=False):
+    g = LongGen(seed) if long else Gen(seed)
     out = []
     while len(out) < count:
         text_line = MAKERS[len(out) % len(MAKERS)](g)
+        if long and g.rng.random() < 0.6:
+            text_line = hair(g, text_line)
         # keep the figures whose doubles are not all the decimals: those test the semantics
         numbers = json.loads(text_line, parse_float=Fraction, parse_int=Fraction)
         values = [x for v in numbers.values() if not isinstance(v, str) for x in (v if isinstance(v, list) else [v])]
@@ -457,7 +495,8 @@ def lines(seed, count):
 
 def main():
     seed, count = int(sys.argv[1]), int(sys.argv[2])
-    sys.stdout.write("".join(l + "\n" for l in lines(seed, count)))
+    long = "--long" in sys.argv[3:]
+    sys.stdout.write("".join(l + "\n" for l in lines(seed, count, long)))
 
 
 if __name__ == "__main__":

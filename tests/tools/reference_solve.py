@@ -482,6 +482,51 @@ SOLVERS = {
 }
 
 
+# The fields each kind scales together (its figure: points and sizes) and the ones it scales
+# alone (directions, vectors); an angle is no length. The square's and the cube's half side, 1,
+# is a size of their figure.
+SCALED = {
+    "vectors": ([], ["u", "v"], 0), "projection": (["A", "B", "C"], [], 0),
+    "segments": (["A", "B", "C", "D"], [], 0), "ray_circle": (["A", "C", "r"], ["u"], 0),
+    "ray_sphere": (["A", "C", "r"], ["u"], 0), "ray_square": (["A"], ["u"], 1),
+    "ray_cube": (["A"], ["u"], 1), "ray_ellipse": (["A", "C", "radii"], ["u"], 0),
+    "ray_rectangle": (["A", "C", "half"], ["u"], 0),
+}
+
+
+def number_span(figure, kind):
+    """The contract's one limit (README, Accurate values): a line is refused when the smallest
+    non-zero number of a group, scaled by the power of two that brings the group's largest into
+    [1, 2), has a square below 2^-969 (products of the line's numbers would underflow). A number
+    whose double is zero is below every double."""
+    def numbers(name):
+        v = figure.get(name)
+        items = v if isinstance(v, list) else [v]
+        return [x for x in items if isinstance(x, (int, float, Fraction)) and not isinstance(x, bool)
+                and math.isfinite(x) and x != 0]
+
+    def check(names, size):
+        largest, smallest, at = float(size), None, None
+        for name in names:
+            for x in numbers(name):
+                h = abs(float(x))
+                largest = max(largest, h)
+                small = h if h != 0 else 2.0 ** -1075
+                if smallest is None or small < smallest:
+                    smallest, at = small, name
+        if smallest is None:
+            return
+        scaled = math.ldexp(smallest, -(math.frexp(largest)[1] - 1)) if largest > 0 else 0.0
+        if scaled * scaled < 2.0 ** -969:
+            raise BadLine(f"field '{at}': too small beside the largest number it is scaled with "
+                          "(products would underflow)")
+
+    figure_names, alone, size = SCALED[kind]
+    for name in alone:
+        check([name], 0)
+    check(figure_names, size)
+
+
 def solve_object(figure):
     """The result of one parsed line, with private '_' keys; raises BadLine."""
     if not isinstance(figure, dict):
@@ -491,7 +536,9 @@ def solve_object(figure):
         raise BadLine("field 'kind': expected a string")
     if kind not in SOLVERS:
         raise BadLine(f"field 'kind': unknown kind '{kind}'")
-    return {"kind": kind, **SOLVERS[kind](figure)}
+    result = SOLVERS[kind](figure)  # its own refusals first (a radius ≤ 0, a degenerate figure)
+    number_span(figure, kind)
+    return {"kind": kind, **result}
 
 
 def solve_line(line):

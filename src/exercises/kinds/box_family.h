@@ -276,6 +276,10 @@ struct Family {
     v("u", d.u, role::from("A"));
   }
 
+  // The square's and the cube's half side, a size of the figure that is no datum: A's numbers
+  // are as small beside it as beside a datum (solve/number_span.h).
+  static constexpr double kCanonicalSize = 1;
+
   static constexpr auto& kQuestions = S::kQuestions;
   static constexpr std::string_view kMistakes[] = {"faces_wrong_half_planes", "faces_inner_half_planes",
                                                    "faces_from_direction", "direction_not_unit", "normal_inward"};
