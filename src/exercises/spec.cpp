@@ -264,7 +264,7 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
                                 e.source().begin.column, e.description()));
   }
   Reader r(source_name);
-  r.only(root, "", {"title", "course", "author", "subject", "language", "page", "decimals",
+  r.only(root, "", {"title", "course", "author", "subject", "language", "page", "decimals", "student_number_digits",
                     "difficulty", "follow_through", "scale", "exercise"});
   WorksheetSpec spec;
   spec.source = std::string(source_name);
@@ -287,6 +287,15 @@ WorksheetSpec parse_spec(std::string_view toml_text, std::string_view source_nam
     auto* i = d->as_integer();
     if (!i || i->get() < 0 || i->get() > 6) r.fail(*d, "decimals", "expected an integer from 0 to 6");
     spec.decimals = static_cast<int>(i->get());
+  }
+  if (const toml::node* n = root.get("student_number_digits")) {
+    auto* i = n->as_integer();
+    if (!i || i->get() < kMinStudentNumberDigits || i->get() > kMaxStudentNumberDigits)
+      r.fail(*n, "student_number_digits",
+             fmt::format("expected an integer from {} to {} (the cells of the student number's comb)",
+                         kMinStudentNumberDigits, kMaxStudentNumberDigits));
+    else
+      spec.student_number_digits = static_cast<int>(i->get());
   }
   if (const toml::node* f = root.get("follow_through")) {
     if (!f->is_boolean()) r.fail(*f, "follow_through", "expected true or false");

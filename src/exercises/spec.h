@@ -58,6 +58,10 @@ struct SpecWords {
 // At most this many [[exercise]] tables in a spec (README, "Limits"): the course has 8, a long
 // exam 20; more is a mistake, refused before any sheet is drawn (20,000 ran out of memory).
 inline constexpr std::size_t kMaxExercises = 100;
+// The student number's comb: from 4 cells to 12, what the first page's header row holds beside
+// the name's writing line.
+inline constexpr int kMinStudentNumberDigits = 4;
+inline constexpr int kMaxStudentNumberDigits = 12;
 
 struct WorksheetSpec {
   std::string source;  // where it was read from, for messages
@@ -75,6 +79,9 @@ struct WorksheetSpec {
   std::string language = "en";
   std::string page = "A4";  // "A4" or "letter"
   int decimals = 2;         // students round data-derived answers to this many decimals
+  // The cells of the student number's comb on a sheet made without a roster (a university's
+  // numbers are 8 digits in France, up to 10 or 12 elsewhere).
+  int student_number_digits = 8;
   bool follow_through = true;
   // Reports also give the mark out of this (20 for the French "note sur 20"); unset: points only.
   std::optional<double> scale;

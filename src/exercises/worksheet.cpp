@@ -230,7 +230,7 @@ render::Document WorksheetSet::sheet_document(const Sheet& sheet) const {
   // number as a comb.
   doc.page_code = [id = doc.sheet_id](int page, int pages) { return page_code_text({id, page, pages}); };
   doc.decimal_separator = NumberStyle::for_language(language_).decimal_comma ? "," : ".";
-  doc.student_number_cells = kStudentNumberCells;
+  doc.student_number_cells = spec_.student_number_digits;
   render::Section intro;
   intro.add(render::Paragraph{texts.format("common.rounding", {{"decimals", std::to_string(spec_.decimals)}}) + " " +
                                   texts.get("common.tick_help"),

@@ -87,7 +87,6 @@ class WorksheetSet {
   // Sheets drawn to measure the reach, at least: a small set's combs are those of its first 64
   // sheets, so they do not depend on --sheets (nor tell one instance's digits).
   static constexpr int kReachSheets = 64;
-  static constexpr int kStudentNumberCells = 8;
   // Widens `cells` to hold the integer digits of every number answer of `sheet`, as written
   // with the set's decimals.
   void comb_reach(const Sheet& sheet, CombCells& cells) const;

@@ -2,6 +2,8 @@
 // line and key.
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
 #include "exercises/spec.h"
 
 using epure::parse_spec;
@@ -176,6 +178,11 @@ TEST_CASE("every mistake names the file, the line and the key") {
     CHECK(error_of("language = \"de\"\n[[exercise]]\nkind = \"projection\"\n").find("'language'") != std::string::npos);
     CHECK(error_of("page = \"A5\"\n[[exercise]]\nkind = \"projection\"\n").find("'page'") != std::string::npos);
     CHECK(error_of("decimals = 9\n[[exercise]]\nkind = \"projection\"\n").find("'decimals'") != std::string::npos);
+  }
+  SUBCASE("7b. the student number's comb: 4 to 12 cells") {
+    for (const char* bad : {"3", "13", "\"8\"", "8.0"})
+      CHECK(error_of(fmt::format("student_number_digits = {}\n[[exercise]]\nkind = \"projection\"\n", bad))
+                .find("'student_number_digits': expected an integer from 4 to 12") != std::string::npos);
   }
   SUBCASE("8. no exercise") { CHECK(error_of("title = \"x\"\n").find("no [[exercise]]") != std::string::npos); }
   SUBCASE("9. negative weight, zero total") {

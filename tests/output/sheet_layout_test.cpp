@@ -94,7 +94,7 @@ TEST_CASE("sheet_layout: marks and page codes on every page, a field for every q
         }
         // the student number's comb, on the first page
         REQUIRE(fields.count("student_number"));
-        CHECK(fields["student_number"]->cells.size() == WorksheetSet::kStudentNumberCells);
+        CHECK(fields["student_number"]->cells.size() == 8);
         // every question of the key has its field, and each answer fits
         for (const auto& e : sheet.exercises)
           for (const auto& q : e.questions) {
@@ -127,5 +127,42 @@ TEST_CASE("sheet_layout: marks and page codes on every page, a field for every q
             }
           }
       }
+    }
+}
+
+TEST_CASE("sheet_layout: the student number's comb has the spec's cells, clear of the code and the marks") {
+  for (const int digits : {4, 12})
+    for (const char* paper : {"A4", "letter"}) {
+      WorksheetSpec spec = builtin_spec();
+      spec.student_number_digits = digits;
+      SetOptions options;
+      options.language = "fr";
+      options.page = paper;
+      WorksheetSet set(spec, 7, options);
+      const Sheet sheet = set.next();
+      const auto pages = render::layout_document(set.sheet_document(sheet));
+      const scan::SheetLayout sl = output::sheet_layout(sheet.id.str(), pages);
+      CAPTURE(digits);
+      CAPTURE(paper);
+      const scan::PageLayout& first = sl.pages.front();
+      const scan::FieldLayout* number = nullptr;
+      for (const auto& f : first.fields)
+        if (f.question == "student_number") number = &f;
+      REQUIRE(number != nullptr);
+      CHECK(number->cells.size() == static_cast<std::size_t>(digits));
+      const scan::Rect code{first.code.x - 4 * 1.3, first.code.y - 4 * 1.3, first.code.width + 8 * 1.3, first.code.height + 8 * 1.3};
+      for (std::size_t i = 0; i < number->cells.size(); ++i) {
+        const scan::Rect& c = number->cells[i];
+        CHECK(inside(c, first.width, first.height));
+        CHECK(!overlap(c, code));
+        for (const auto& m : first.marks)
+          CHECK(!overlap(c, {m.x - first.mark_size / 2, m.y - first.mark_size / 2, first.mark_size, first.mark_size}));
+        for (std::size_t j = 0; j < i; ++j) CHECK(!overlap(c, number->cells[j]));
+      }
+      // and the other fields of the page stay clear of it
+      for (const auto& f : first.fields)
+        if (f.question != "student_number")
+          for (const auto& c : f.cells)
+            for (const auto& n : number->cells) CHECK(!overlap(c, n));
     }
 }
