@@ -120,7 +120,8 @@ void paint_page(Canvas& canvas, const LaidOutPage& page, const PageStyle& style)
     canvas.begin_group("boxes");
     // Neighbouring boxes of one paint (a comb's cells, a row of ticks) as one path of
     // rectangles: the same marks as one path each, in a fraction of the bytes and the PDF's
-    // operators. Boxes do not overlap, so filling them together changes no pixel.
+    // operators. Boxes do not overlap; only the antialiasing along an edge two cells share
+    // differs (each cell's fill no longer covers half of its neighbour's stroke there).
     Path batch;
     std::optional<BoxKind> batch_kind;
     const auto flush = [&] {

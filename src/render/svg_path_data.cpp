@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstddef>
-#include <vector>
 
 #include "render/svg_writer.h"
 
@@ -93,23 +92,23 @@ void append_absolute(std::string& d, const Path& path) {
 }  // namespace
 
 void append_path_data(std::string& d, const Path& path) {
-  // Every coordinate in hundredths first; a path with one out of range is written absolute.
-  std::vector<std::array<Scaled, 3>> scaled(path.cmds().size());
-  for (std::size_t i = 0; i < path.cmds().size(); ++i) {
-    const Path::Cmd& c = path.cmds()[i];
-    const int points = c.op == Path::Op::cubic ? 3 : c.op == Path::Op::close ? 0 : 1;
-    for (int k = 0; k < points; ++k) {
-      if (!scale(c.p[k], scaled[i][static_cast<std::size_t>(k)])) {
-        append_absolute(d, path);
-        return;
-      }
-    }
-  }
+  // Written as the coordinates are rounded; a path with one beyond the fast form (never in a
+  // drawing) is taken back and written absolute. No copy of the path's points is made: the SVG
+  // writer runs for every path of every page.
+  const std::size_t mark = d.size();
   Scaled at{}, start{};  // the current point, and the current subpath's first (where Z returns)
   bool have_point = false;
   for (std::size_t i = 0; i < path.cmds().size(); ++i) {
     const Path::Cmd& c = path.cmds()[i];
-    const auto& s = scaled[i];
+    std::array<Scaled, 3> s{};
+    const int points = c.op == Path::Op::cubic ? 3 : c.op == Path::Op::close ? 0 : 1;
+    for (int k = 0; k < points; ++k) {
+      if (!scale(c.p[k], s[static_cast<std::size_t>(k)])) {
+        d.resize(mark);
+        append_absolute(d, path);
+        return;
+      }
+    }
     switch (c.op) {
       case Path::Op::move:
         // The path's first move is absolute in SVG whatever its letter: written M.
