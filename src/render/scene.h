@@ -66,6 +66,10 @@ struct Ray {
   P2 origin;
   P2 dir;
   Role role = Role::data;
+  // Where the ray is followed to: its first hit, in a key. Past it the ray is drawn muted, as
+  // not followed (a ray tracer stops there), so a normal drawn along the ray from that point (an
+  // exit square to the side) is the one solid stroke there instead of lying on the ray.
+  std::optional<P2> followed_to = std::nullopt;
 };
 
 // A vector drawn as an arrow from `from` to `to` (a direction u, a normal N).

@@ -251,8 +251,21 @@ class PanelPainter {
     const Box inner{v.x_min + inset, v.y_min + inset, v.x_max - inset, v.y_max - inset};
     const auto range = clip(r.origin, r.dir, 0, kInf, inner);
     if (!range) return;
-    arrow(frame_.to_page(add_p(r.origin, range->first, r.dir)),
-          frame_.to_page(add_p(r.origin, range->second, r.dir)), r.role);
+    const P2 start = add_p(r.origin, range->first, r.dir), end = add_p(r.origin, range->second, r.dir);
+    // the hit's parameter along the ray, in steps of dir as the clip's
+    double t_hit = kInf;
+    if (r.followed_to) {
+      const P2 to_hit = sub(*r.followed_to, r.origin);
+      t_hit = (to_hit.x * r.dir.x + to_hit.y * r.dir.y) / (r.dir.x * r.dir.x + r.dir.y * r.dir.y);
+    }
+    if (!(t_hit < range->second)) {  // no hit, or past the view: the ray as far as it is seen
+      arrow(frame_.to_page(start), frame_.to_page(end), r.role);
+      return;
+    }
+    // solid up to the hit, muted past it
+    const P2 hit = add_p(r.origin, std::max(t_hit, range->first), r.dir);
+    stroke_segment(frame_.to_page(start), frame_.to_page(hit), r.role, style_.of(r.role).dash);
+    arrow(frame_.to_page(hit), frame_.to_page(end), Role::muted);
   }
 
   void item(const Arrow& a) { arrow(frame_.to_page(a.from), frame_.to_page(a.to), a.role); }

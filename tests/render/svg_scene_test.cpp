@@ -153,6 +153,57 @@ TEST_CASE("lines and rays are clipped to the view; zero directions draw nothing"
   CHECK(canvas.groups.empty());
 }
 
+TEST_CASE("a ray followed to its hit: solid up to it, muted past it, a normal there stands alone") {
+  // A key's ray from A(1, 5) along (2, 0), followed to its hit I(6, 5); the normal at I points
+  // along the ray (an exit square to a side). The direction is not unit: the hit's parameter
+  // is in steps of dir.
+  Scene s;
+  Panel p;
+  p.view = {0, 0, 10, 10};
+  p.add(Ray{{1, 5}, {2, 0}, Role::data, P2{6, 5}});
+  p.add(Arrow{{6, 5}, {7, 5}, Role::normal});
+  s.panels.push_back(p);
+  RecordingCanvas canvas;
+  const SceneReport r = paint_scene(canvas, s, 0, 0, 100);
+  const Box& area = r.panels[0].area;
+  const Frame frame(p.view, area);
+  const P2 A = frame.to_page({1, 5}), I = frame.to_page({6, 5});
+  std::vector<RecordingCanvas::Stroke> data, muted, normal;
+  for (const auto& st : canvas.strokes) {
+    if (st.group == "data") data.push_back(st);
+    if (st.group == "muted") muted.push_back(st);
+    if (st.group == "normal") normal.push_back(st);
+  }
+  // the followed part: one stroke from A to I, no head
+  REQUIRE(data.size() == 1);
+  CHECK(data[0].a.x == doctest::Approx(A.x));
+  CHECK(data[0].b.x == doctest::Approx(I.x));
+  CHECK(data[0].a.y == doctest::Approx(A.y));
+  CHECK(data[0].b.y == doctest::Approx(I.y));
+  // past I: a muted shaft from I and its head, all on the ray's line, towards the view's edge
+  REQUIRE(muted.size() == 1 + 3);
+  CHECK(muted[0].a.x == doctest::Approx(I.x));
+  CHECK(muted[0].b.x > frame.to_page({9, 5}).x);
+  for (const auto& st : muted) CHECK(std::min(st.a.x, st.b.x) >= I.x - 1e-9);
+  CHECK(normal.size() == 1 + 3);  // the normal drawn as before, over the muted part only
+
+  SUBCASE("a hit beyond the view: the ray as far as it is seen, with its head") {
+    Scene far;
+    Panel q = p;
+    q.items.clear();
+    q.add(Ray{{1, 5}, {2, 0}, Role::data, P2{40, 5}});
+    far.panels.push_back(q);
+    RecordingCanvas c2;
+    paint_scene(c2, far, 0, 0, 100);
+    int data_strokes = 0;
+    for (const auto& st : c2.strokes) {
+      CHECK((st.group == "data" || st.group == "panel"));
+      data_strokes += st.group == "data";
+    }
+    CHECK(data_strokes == 1 + 3);
+  }
+}
+
 TEST_CASE("scene_to_svg: a standalone SVG 1.1 document, grouped by role, escaped") {
   const std::string svg = scene_to_svg(projection_key(), 320);
   CHECK(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg "

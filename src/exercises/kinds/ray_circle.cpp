@@ -98,7 +98,9 @@ struct RayCircle : ball::Family<2> {
       panel.add(render::Polygon{{p2(d.C), p2(rc.P), p2(I)}, true, Role::construction, true});
     }
     panel.add(render::Circle{p2(d.C), d.r, Role::data});
-    panel.add(render::Ray{p2(d.A), p2(d.u), Role::data});
+    std::optional<render::P2> followed_to;
+    if (rc.hit) followed_to = p2(rc.hit->I);
+    panel.add(render::Ray{p2(d.A), p2(d.u), Role::data, followed_to});
     panel.add(render::Segment{p2(d.C), p2(rc.P), Role::construction, true});
     panel.add(render::RightAngle{p2(rc.P), p2(d.C - rc.P), p2(d.u), Role::construction});
     panel.add(render::Arrow{p2(d.A), p2(d.A + uh), Role::construction});

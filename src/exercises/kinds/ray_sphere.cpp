@@ -151,7 +151,7 @@ struct RaySphere : ball::Family<3> {
       plane.add(render::Polygon{{C, P, *I}, true, Role::construction, true});
     }
     plane.add(render::Circle{C, d.r, Role::data});
-    plane.add(render::Ray{A, {1, 0}, Role::data});
+    plane.add(render::Ray{A, {1, 0}, Role::data, I});
     plane.add(render::Segment{C, P, Role::construction, true});
     plane.add(render::RightAngle{P, {0, 1}, {1, 0}, Role::construction});
     if (I) {

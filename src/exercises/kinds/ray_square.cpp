@@ -120,7 +120,9 @@ struct RaySquare : box::Family<2> {
       const Role role = !in_play ? Role::muted : rs.inside ? Role::data : Role::highlight;
       panel.add(render::Segment{p2(mid - along), p2(mid + along), role});
     }
-    panel.add(render::Ray{p2(d.A), p2(d.u), Role::data});
+    std::optional<render::P2> followed_to;
+    if (rs.hit) followed_to = p2(rs.hit->I);
+    panel.add(render::Ray{p2(d.A), p2(d.u), Role::data, followed_to});
     panel.add(render::Arrow{p2(d.A), p2(d.A + uh), Role::construction});
     panel.add(render::Label{T.get("ray_square.figure.u_hat"), p2(d.A + uh), render::Side::auto_, Role::construction});
     for (const Side& side : sides)

@@ -203,7 +203,7 @@ void world_steps(render::Section& s, const ExerciseContext& ctx, const KeySoluti
 
 // ---- diagrams ----------------------------------------------------------------------------------
 
-render::Panel world_panel(const Data& d, Shape shape, const Solved& s) {
+render::Panel world_panel(const Data& d, Shape shape, const Solved& s, bool ray_followed_to_hit) {
   const Vec2 u_hat = *geo::normalized(d.u);
   std::vector<render::P2> extent{p2(d.A), p2(d.C), p2(d.A + u_hat)};
   // the figure lies in the image of the canonical square
@@ -231,7 +231,9 @@ render::Panel world_panel(const Data& d, Shape shape, const Solved& s) {
   panel.add(render::Label{b, p2(d.C + 0.5 * (end_b - d.C)), render::Side::auto_, render::Role::muted});
   panel.add(render::PointMark{p2(d.C), render::Role::data, render::Label{"C", p2(d.C)}});
 
-  panel.add(render::Ray{p2(d.A), p2(u_hat), render::Role::data});
+  std::optional<render::P2> followed_to;
+  if (ray_followed_to_hit && s.hit) followed_to = p2(s.hit->I);
+  panel.add(render::Ray{p2(d.A), p2(u_hat), render::Role::data, followed_to});
   panel.add(render::Arrow{p2(d.A), p2(d.A + u_hat), render::Role::data});
   panel.add(render::Label{"û", p2(d.A + 0.5 * u_hat)});
   panel.add(render::PointMark{p2(d.A), render::Role::data, render::Label{"A", p2(d.A)}});
@@ -258,7 +260,9 @@ render::Panel canonical_panel(const Solved& s) {
 void add_canonical_ray(render::Panel& panel, const Solved& s) {
   const Point2 Ac = s.canonical_ray.origin;
   const Vec2 uc = s.canonical_ray.direction;
-  panel.add(render::Ray{p2(Ac), p2(uc), render::Role::data});
+  std::optional<render::P2> followed_to;
+  if (s.canonical_hit) followed_to = p2(s.canonical_hit->I);
+  panel.add(render::Ray{p2(Ac), p2(uc), render::Role::data, followed_to});
   panel.add(render::Arrow{p2(Ac), p2(Ac + uc), render::Role::data});
   panel.add(render::Label{"\\vec{u}_{c}", p2(Ac + 0.5 * uc)});
   panel.add(render::PointMark{p2(Ac), render::Role::data, render::Label{"A_{c}", p2(Ac)}});
@@ -275,7 +279,7 @@ render::Scene question_scene(const ExerciseContext& ctx, const Data& d, Shape sh
   render::Scene scene;
   scene.title = ctx.texts.get(key(ctx, "title"));
   scene.description = ctx.texts.get(key(ctx, "figure.question"));
-  scene.panels.push_back(world_panel(d, shape, s));
+  scene.panels.push_back(world_panel(d, shape, s, false));
   return scene;
 }
 
@@ -284,7 +288,7 @@ render::Scene key_scene(const ExerciseContext& ctx, const Data& d, Shape shape, 
   render::Scene scene;
   scene.title = ctx.texts.get(key(ctx, "title"));
   scene.description = ctx.texts.get(key(ctx, "figure.key"));
-  render::Panel world = world_panel(d, shape, s);
+  render::Panel world = world_panel(d, shape, s, true);
   if (s.hit) add_world_hit(world, *s.hit);
   world.caption = ctx.texts.get(key(ctx, "panel.world"));
   canonical.caption = ctx.texts.get(key(ctx, "panel.canonical"));

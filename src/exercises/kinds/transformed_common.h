@@ -280,8 +280,9 @@ void world_steps(render::Section& s, const ExerciseContext& ctx, const KeySoluti
 
 // ---- diagrams ----------------------------------------------------------------------------------
 
-// The world frame on a grid: the figure, C, its two semi-axes labelled, A, the ray and û.
-render::Panel world_panel(const Data& d, Shape shape, const Solved& s);
+// The world frame on a grid: the figure, C, its two semi-axes labelled, A, the ray and û; in a
+// key (ray_followed_to_hit) the ray is solid only up to its hit.
+render::Panel world_panel(const Data& d, Shape shape, const Solved& s, bool ray_followed_to_hit);
 // The hit in the world frame: I and the normal N.
 void add_world_hit(render::Panel& panel, const geo::Hit2& hit);
 // The canonical frame's view and grid around the unit figure, A_c and the hit.
