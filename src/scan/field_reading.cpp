@@ -69,29 +69,34 @@ InkLevels border_levels(const cv::Mat& g, const PageMap& map, const FieldLayout&
 TickReading read_tick(const cv::Mat& g, const PageMap& map, const Rect& box, const InkLevels& levels) {
   const double inset = std::max(1.2, 0.2 * std::min(box.width, box.height));
   constexpr int kGrid = 12;
-  int filled = 0, faint = 0;
+  int filled = 0, faint = 0, light = 0;
   // the middles of the four sides: rows 0-2 and 9-11 at columns 4-7, columns 0-2 and 9-11 at rows 4-7
-  int side[4] = {0, 0, 0, 0};
+  int side[4] = {0, 0, 0, 0}, light_side[4] = {0, 0, 0, 0};
   for (int j = 0; j < kGrid; ++j)
     for (int i = 0; i < kGrid; ++i) {
       const double x = box.x + inset + (box.width - 2 * inset) * (i + 0.5) / kGrid;
       const double y = box.y + inset + (box.height - 2 * inset) * (j + 0.5) / kGrid;
       const double ink = levels.to_ink(sample_pt(g, map, x, y));
-      const bool dark = ink > 0.5;
+      const bool dark = ink > 0.5, lit = ink > kLightInk;
       filled += dark;
       faint += ink > 0.25;
+      light += lit;
       const bool mid_i = i >= 4 && i <= 7, mid_j = j >= 4 && j <= 7;
-      if (dark && mid_i && j <= 2) ++side[0];
-      if (dark && mid_i && j >= 9) ++side[1];
-      if (dark && mid_j && i <= 2) ++side[2];
-      if (dark && mid_j && i >= 9) ++side[3];
+      const int which = mid_i && j <= 2 ? 0 : mid_i && j >= 9 ? 1 : mid_j && i <= 2 ? 2 : mid_j && i >= 9 ? 3 : -1;
+      if (which >= 0) {
+        side[which] += dark;
+        light_side[which] += lit;
+      }
     }
   TickReading r;
   r.filled = static_cast<double>(filled) / (kGrid * kGrid);
   r.faint = static_cast<double>(faint) / (kGrid * kGrid);
   r.sides = static_cast<double>(*std::min_element(side, side + 4)) / 12;
+  r.light = static_cast<double>(light) / (kGrid * kGrid);
+  r.light_sides = static_cast<double>(*std::min_element(light_side, light_side + 4)) / 12;
   if (r.filled >= kTickFilled && r.sides >= kSidesFilled) r.state = TickState::cancelled;
   else if (r.filled >= kTickMarked && (r.filled < kTickFilled || r.sides < kSidesOpen)) r.state = TickState::ticked;
+  else if (r.filled < kTickMarked && r.light >= kTickLight && r.light_sides < kSidesOpen) r.state = TickState::ticked;
   else if (r.filled <= kTickEmpty && r.faint < kTickFaint) r.state = TickState::empty;
   else r.state = TickState::uncertain;
   return r;

@@ -106,11 +106,12 @@ TEST_CASE("registration: a blank page, and a page with no marks") {
   CHECK(t.problem == "0 of the 4 corner marks found: 3 are needed");
 }
 
-TEST_CASE("ticks: a cross, a check mark read as ticked; a filled box as cancelled; a faint one to review") {
+TEST_CASE("ticks: a cross, a check mark, a light pen's cross read as ticked; a filled box as cancelled; a mark "
+          "an eraser leaves or a box filled lightly never as ticked") {
   const PageLayout page = page_with_ticks();
   const double dpi = 200;
   Writing w;
-  const TickStyle styles[] = {TickStyle::cross, TickStyle::check, TickStyle::cross, TickStyle::check,
+  const TickStyle styles[] = {TickStyle::cross, TickStyle::check, TickStyle::erased, TickStyle::light_fill,
                               TickStyle::faint, TickStyle::cross, TickStyle::check, TickStyle::cross};
   for (int i = 0; i < 8; ++i) {
     const std::string q = "t" + std::to_string(i);
@@ -135,8 +136,25 @@ TEST_CASE("ticks: a cross, a check mark read as ticked; a filled box as cancelle
     for (int i = 0; i < 8; ++i) {
       CAPTURE(i);
       const FieldReading r = read_field(scan, *f.map, page.fields[static_cast<std::size_t>(i)], paper, f.ink, ".", DigitClassifier::builtin());
-      if (styles[i] == TickStyle::faint) {
-        // faint: sent to review, or read right; never wrong
+      if (styles[i] == TickStyle::light_fill && d.bilevel) {
+        // Not pinned: a copier thresholding at the fill's own grey turns it into 60 % black
+        // speckle over the whole box, sides included, which the reader takes for a heavy tick
+        // (README, Limits). A student who cancels fills the box in the pen they ticked with.
+        continue;
+      }
+      if (styles[i] == TickStyle::erased || styles[i] == TickStyle::light_fill) {
+        // the student's intent is not clear from the ink: review or nothing, never a tick
+        const TickReading& marked = r.ticks[static_cast<std::size_t>(i % 2)];
+        CAPTURE(marked.light);
+        CAPTURE(marked.filled);
+        CAPTURE(marked.sides);
+        CAPTURE(marked.light_sides);
+        CHECK(marked.state != TickState::ticked);
+        CHECK((r.uncertain || r.blank));
+        continue;
+      }
+      if (styles[i] == TickStyle::faint && d.bilevel) {
+        // a copier's threshold may break a light pen's strokes: read right or sent to review
         CHECK((r.uncertain || r.value == "true"));
         continue;
       }
@@ -146,5 +164,5 @@ TEST_CASE("ticks: a cross, a check mark read as ticked; a filled box as cancelle
       if (i == 5) CHECK(r.ticks[0].state == TickState::cancelled);
     }
   }
-  CHECK(seen == 42);
+  CHECK(seen == 35);
 }

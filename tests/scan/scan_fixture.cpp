@@ -100,10 +100,13 @@ void tick_box(cv::Mat& page, const Rect& b, TickStyle style, double s, Rng& rng)
   const int t = std::max(1, static_cast<int>(std::lround(rng.uniform(0.9, 1.5) * s)));
   const double j = 0.12 * b.width;
   auto jitter = [&] { return rng.uniform(-j, j); };
-  const int pen = style == TickStyle::faint ? 150 : static_cast<int>(rng.integer(20, 70));
+  const int pen = style == TickStyle::faint || style == TickStyle::light_fill ? 150
+                  : style == TickStyle::erased                                 ? 225
+                                                                               : static_cast<int>(rng.integer(20, 70));
   switch (style) {
     case TickStyle::cross:
     case TickStyle::faint:
+    case TickStyle::erased:
       cv::line(page, px(b.x + jitter(), b.y + jitter(), s), px(b.x + b.width + jitter(), b.y + b.height + jitter(), s), cv::Scalar(pen), t, cv::LINE_AA);
       cv::line(page, px(b.x + b.width + jitter(), b.y + jitter(), s), px(b.x + jitter(), b.y + b.height + jitter(), s), cv::Scalar(pen), t, cv::LINE_AA);
       break;
@@ -116,7 +119,8 @@ void tick_box(cv::Mat& page, const Rect& b, TickStyle style, double s, Rng& rng)
       break;
     }
     case TickStyle::filled:
-    case TickStyle::corrected: {
+    case TickStyle::corrected:
+    case TickStyle::light_fill: {
       // filled as a pen fills a box: a little over or short of its edges
       const double m = rng.uniform(-0.05, 0.08) * b.width;
       cv::rectangle(page, px(b.x + m, b.y + m, s), px(b.x + b.width - m, b.y + b.height - m, s), cv::Scalar(pen), cv::FILLED, cv::LINE_AA);

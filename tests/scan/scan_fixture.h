@@ -42,7 +42,9 @@ PageLayout furniture_page(int page);
 std::vector<PageLayout> lay_out_fields(const std::vector<FieldSpec>& fields);
 
 // What a student writes: per question, the text (a comb) or the ticked values, and how.
-enum class TickStyle { cross, check, filled, faint, corrected };
+// faint: a cross at 40 % ink (a light pen); erased: a cross at 12 % ink (what an eraser leaves
+// of a pencil tick); light_fill: a box filled at 40 % ink.
+enum class TickStyle { cross, check, filled, faint, corrected, erased, light_fill };
 struct Writing {
   std::map<std::string, std::string> comb;                 // question → "−12,5" as written in the cells
   std::map<std::string, std::vector<std::string>> ticks;   // question → values ticked

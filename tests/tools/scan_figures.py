@@ -27,7 +27,8 @@ def norm(v):
 def main():
     args = sys.argv[1:]
     check = "--check" in args
-    bounds = {"--max-silent": 0.001, "--max-review": 0.05, "--min-tick": 0.999, "--min-digits": 0.0}
+    bounds = {"--max-silent": 0.001, "--max-review": 0.05, "--min-tick": 0.999, "--max-tick-review": 1.0,
+              "--min-digits": 0.0}
     for k in list(bounds):
         if k in args:
             bounds[k] = float(args[args.index(k) + 1])
@@ -109,6 +110,9 @@ def main():
             bad.append(f"fields sent to review {figures['review_rate']:.4f} > {bounds['--max-review']}")
         if figures["tick_right_or_review_rate"] < bounds["--min-tick"]:
             bad.append(f"ticks right or sent to review {figures['tick_right_or_review_rate']:.4f} < {bounds['--min-tick']}")
+        tick_review = counts["tick_review"] / max(1, counts["tick_fields"])
+        if tick_review > bounds["--max-tick-review"]:
+            bad.append(f"tick fields sent to review {tick_review:.4f} > {bounds['--max-tick-review']}")
         if figures["digit_accuracy"] is not None and figures["digit_accuracy"] < bounds["--min-digits"]:
             bad.append(f"digits read right {figures['digit_accuracy']:.4f} < {bounds['--min-digits']}")
         if bad:
