@@ -353,8 +353,8 @@ void SectionAtoms::answer_line(int si, int bi, const AnswerLine& l, bool follows
   }
   a.height = text_h + 2 * pad;
   // A table: a rule above the first row and under every row.
-  if (!follows_line) a.content.rules.push_back({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
-  a.content.rules.push_back({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});
+  if (!follows_line) a.content.rule({{left_, 0}, {right_, 0}, 0.4, Ink::muted});
+  a.content.rule({{left_, a.height}, {right_, a.height}, 0.4, Ink::muted});
   remember(key, a);
   push(std::move(a));
 }

@@ -106,8 +106,12 @@ class DocumentLayout {
   // The pages at these levels, counted from shapes (the fallbacks taken page by page).
   std::size_t pages(const std::vector<int>& levels) {
     if (!opening_) opening_ = sections_.opening(true);
-    std::vector<Atom> atoms = *opening_;
     std::vector<bool> side_used;
+    std::size_t n = opening_->size();
+    for (std::size_t si = 0; si < levels.size(); ++si) n += shapes(static_cast<int>(si), levels[si]).atoms.size();
+    std::vector<Atom> atoms;
+    atoms.reserve(n);
+    atoms.insert(atoms.end(), opening_->begin(), opening_->end());
     for (std::size_t si = 0; si < levels.size(); ++si) {
       const auto& built = shapes(static_cast<int>(si), levels[si]);
       atoms.insert(atoms.end(), built.atoms.begin(), built.atoms.end());

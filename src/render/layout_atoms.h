@@ -55,6 +55,11 @@ struct Fragment {
     if (keep_texts) images.push_back(std::move(i));
   }
 
+  // (a shape's rows, remembered and replayed many times, then copy no rule either)
+  void rule(const PlacedRule& r) {
+    if (keep_texts) rules.push_back(r);
+  }
+
   void box(PlacedBox b) {
     box_right_edge = std::max(box_right_edge, b.rect.right());
     if (keep_texts) boxes.push_back(std::move(b));

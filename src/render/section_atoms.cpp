@@ -18,6 +18,9 @@ constexpr double kSideSaving = 0.5;
 constexpr std::size_t kMaxSideParagraphs = 8;
 // Of the column beside a figure, at most this share for the fields' prompts.
 constexpr double kSidePromptShare = 0.3;
+// A course's section is 10 to 50 atoms (a line of a paragraph, a row of fields or of a key's
+// table, a figure with its neighbours).
+constexpr std::size_t kSectionAtoms = 48;
 
 }  // namespace
 
@@ -56,6 +59,9 @@ std::vector<Atom> SectionAtoms::opening(bool shapes_only) {
 
 SectionAtoms::Built SectionAtoms::section(int si, double scale, bool shapes_only, bool allow_side) {
   atoms_.clear();
+  // (the last section's atoms were moved out: room for a usual section's, not grown from one
+  // atom by doubling, each growth moving every atom)
+  atoms_.reserve(kSectionAtoms);
   after_heading_ = after_figure_ = false;
   scale_ = scale;
   shapes_ = shapes_only;
@@ -77,7 +83,7 @@ bool SectionAtoms::replay(const RowKey& key) {
   if (!shapes_) return false;
   auto it = memo_.rows.find(key);
   if (it == memo_.rows.end()) return false;
-  push(it->second);
+  push(Atom(it->second));
   return true;
 }
 
@@ -94,7 +100,7 @@ Atom SectionAtoms::new_atom() const {
   return a;
 }
 
-void SectionAtoms::push(Atom atom) {
+void SectionAtoms::push(Atom&& atom) {
   if (after_heading_) atom.break_before = false;  // a heading never ends a page
   atom.follows_heading = after_heading_;
   if (after_figure_) atom.space_before = std::max(atom.space_before, s_.figure_space);
@@ -429,7 +435,13 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
     // A narrow column keeps its boxes whole and wraps its long prompts instead.
     prompt_share_ = kSidePromptShare;
     in_column_ = true;
-    for (std::size_t n = 0; n < side_blocks.size(); ++n) {
+    // Whether the column's atoms so far fit it: everything left of the question id (the one
+    // muted text of a row, set flush right), and no value wrapped to fit the column (worse than
+    // the answers under the figure). The first block that does not fit ends this width's try:
+    // the blocks after it would be built only to be dropped.
+    bool fits = true;
+    std::size_t checked = before.atoms;
+    for (std::size_t n = 0; n < side_blocks.size() && fits; ++n) {
       const std::size_t i = side_blocks[n];
       const int b = static_cast<int>(i);
       const bool run_start = n == 0 || side_blocks[n - 1] + 1 != i || std::holds_alternative<Paragraph>(blocks[i - 1]);
@@ -442,29 +454,30 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
         if (run_start) key_column_ = key_prompt_column(blocks, i);
         answer_line(si, b, std::get<AnswerLine>(blocks[i]), !run_start);
       }
+      for (; checked < atoms_.size(); ++checked) {
+        const Atom& atom = atoms_[checked];
+        const Fragment& content = atom.content;
+        const double room = std::min(right_, content.muted_left - kIdGap / 2);
+        fits = fits && content.box_right_edge <= room + kFitSlack && content.text_right_edge <= room + kFitSlack;
+        fits = fits && !atom.wrapped;
+      }
     }
-    Column out{figure_w, left_, {}};
+    const double column_left = left_;
     left_ = full_left;
     width_ = full_width;
     prompt_share_ = s_.prompt_column_max;
     in_column_ = false;
+    if (!fits) {
+      undo(before);
+      continue;
+    }
+    Column out{figure_w, column_left, {}};
     out.atoms.assign(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(before.atoms)),
                      std::make_move_iterator(atoms_.end()));
     undo(before);
 
     double height = 0;
-    bool fits = true;
-    for (std::size_t k = 0; k < out.atoms.size(); ++k) {
-      const Atom& atom = out.atoms[k];
-      height += (k > 0 ? atom.space_before : 0) + atom.height;
-      // Everything left of the question id (the one muted text of a row), set flush right.
-      const Fragment& content = atom.content;
-      const double room = std::min(right_, content.muted_left - kIdGap / 2);
-      fits = fits && content.box_right_edge <= room + kFitSlack && content.text_right_edge <= room + kFitSlack;
-      // A value wrapped to fit the column is worse than the answers under the figure.
-      fits = fits && !atom.wrapped;
-    }
-    if (!fits) continue;
+    for (std::size_t k = 0; k < out.atoms.size(); ++k) height += (k > 0 ? out.atoms[k].space_before : 0) + out.atoms[k].height;
     if (height > std::max(figure_size(f, figure_w).second, max_h)) return std::nullopt;  // a wider column would not be shorter by much
     return out;
   }

@@ -81,7 +81,7 @@ class SectionAtoms {
   Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
   void undo(const Mark& m);
   Atom new_atom() const;
-  void push(Atom atom);
+  void push(Atom&& atom);
   RowKey row_key(const void* block, double column, bool follows) const;
   bool replay(const RowKey& key);
   void remember(const RowKey& key, const Atom& a);

@@ -18,22 +18,17 @@ struct Scaled {
 
 bool scale(P2 p, Scaled& s) { return round_scaled(p.x, kDecimals, s.x) && round_scaled(p.y, kDecimals, s.y); }
 
-// The length of append_scaled's text for `n`, without writing it.
+// The length of append_scaled's text for `n`, without writing it: the integer part's digits,
+// then ".d" or ".dd" for the decimals that are not trailing zeros.
 int scaled_length(long long n) {
+  static_assert(kDecimals == 2);
   if (n == 0) return 1;
   unsigned long long m = n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
-  int length = n < 0 ? 1 : 0;
-  int d = 0;
-  for (; d < kDecimals && m % 10 == 0; ++d) m /= 10;
-  if (d < kDecimals) {
-    length += kDecimals - d + 1;  // the decimals left and the point
-    for (; d < kDecimals; ++d) m /= 10;
-  }
-  do {
-    ++length;
-    m /= 10;
-  } while (m != 0);
-  return length;
+  const unsigned long long decimals = m % 100;
+  int length = (n < 0 ? 1 : 0) + (decimals == 0 ? 0 : decimals % 10 == 0 ? 2 : 3);
+  m /= 100;
+  for (; m >= 1000; m /= 1000) length += 3;
+  return length + (m >= 100 ? 3 : m >= 10 ? 2 : 1);
 }
 
 // A command's numbers after its letter: a separator only where a number would run into the

@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <stdexcept>
 #include <string_view>
@@ -19,6 +20,11 @@ namespace {
 // (never in a drawing) fmt's exact conversion takes over.
 constexpr double kFastLimit = 1e12;
 constexpr long long kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+// "00" to "99", for writing numbers two digits at a time.
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
 
 // Appends `s` without the trailing zeros of its decimals, and without a bare point.
 void append_trimmed(std::string& out, std::string_view s) {
@@ -51,20 +57,41 @@ void append_scaled(std::string& out, long long n, int decimals) {
     return;
   }
   // Numbers are most of an SVG's bytes: the digits are written backwards into a buffer instead
-  // of going through a general float conversion.
+  // of going through a general float conversion, the integer part two digits at a time (a
+  // page's coordinates have three).
   unsigned long long m = n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
   char buf[32];
   char* p = std::end(buf);
   int d = 0;
+  if (decimals == 2) {  // the usual case, without a loop: "", ".d" or ".dd"
+    const unsigned long long hundredths = m % 100;
+    m /= 100;
+    d = 2;
+    if (hundredths % 10 != 0) {
+      p -= 3;
+      p[0] = '.';
+      std::memcpy(p + 1, kDigitPairs + 2 * hundredths, 2);
+    } else if (hundredths != 0) {
+      p -= 2;
+      p[0] = '.';
+      p[1] = static_cast<char>('0' + hundredths / 10);
+    }
+  }
   for (; d < decimals && m % 10 == 0; ++d) m /= 10;  // trailing zeros of the decimals: none
   if (d < decimals) {
     for (; d < decimals; ++d, m /= 10) *--p = static_cast<char>('0' + m % 10);
     *--p = '.';
   }
-  do {
-    *--p = static_cast<char>('0' + m % 10);
-    m /= 10;
-  } while (m != 0);
+  for (; m >= 100; m /= 100) {
+    p -= 2;
+    std::memcpy(p, kDigitPairs + 2 * (m % 100), 2);
+  }
+  if (m >= 10) {
+    p -= 2;
+    std::memcpy(p, kDigitPairs + 2 * m, 2);
+  } else {
+    *--p = static_cast<char>('0' + m);
+  }
   if (n < 0) *--p = '-';
   out.append(p, static_cast<std::size_t>(std::end(buf) - p));
 }
@@ -196,32 +223,40 @@ void SvgWriter::open(std::string_view tag) {
   opening_ = tag;
 }
 
-void SvgWriter::attribute(std::string_view name, std::string_view value) {
+// ` name="`, in one append for a usual name: a page writes a few hundred thousand attributes.
+void SvgWriter::attribute_name(std::string_view name) {
   if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
-  out_ += ' ';
-  out_ += name;
-  out_ += "=\"";
+  char buf[32];
+  if (name.size() + 3 > sizeof buf) {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    return;
+  }
+  buf[0] = ' ';
+  std::memcpy(buf + 1, name.data(), name.size());
+  buf[name.size() + 1] = '=';
+  buf[name.size() + 2] = '"';
+  out_.append(buf, name.size() + 3);
+}
+
+void SvgWriter::attribute(std::string_view name, std::string_view value) {
+  attribute_name(name);
   append_escaped(out_, value, true);
   out_ += '"';
 }
 
 void SvgWriter::plain_attribute(std::string_view name, std::string_view value) {
-  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
   assert(std::all_of(value.begin(), value.end(), [](char c) {
     return c >= 0x20 && c < 0x7F && c != '&' && c != '<' && c != '>' && c != '"';
   }));
-  out_ += ' ';
-  out_ += name;
-  out_ += "=\"";
+  attribute_name(name);
   out_ += value;
   out_ += '"';
 }
 
 void SvgWriter::attribute(std::string_view name, double value) {
-  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
-  out_ += ' ';
-  out_ += name;
-  out_ += "=\"";
+  attribute_name(name);
   append_number(out_, value);
   out_ += '"';
 }

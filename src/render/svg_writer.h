@@ -95,6 +95,7 @@ class SvgWriter {
   };
   void open_tag(std::string_view tag, const Attr* begin, const Attr* end, bool self_close);
   void before_child();
+  void attribute_name(std::string_view name);
   void new_line();
   bool in_inline() const { return !stack_.empty() && stack_.back().inline_content; }
 

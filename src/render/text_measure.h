@@ -4,10 +4,13 @@
 // whole layout of a document (the options tried for a figure and its neighbours, and the
 // layouts a page budget tries, ask the same texts at the same widths again and again). A wrapped
 // text is first only line spans: enough to count its lines, know the widest and where a sentence
-// ends; the lines' markup and runs are made when a line is set.
+// ends; the lines' markup and runs are made when a line is set. A text's measured words are
+// also shared, by content, with the thread's later documents (a set's sheets repeat their
+// headings, prompts and notes, and a key its sheet's statements).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -81,9 +84,12 @@ class TextMeasure {
 
   Entry& entry(const RichText& text, double size, double width, Weight weight, std::size_t from);
   const Measured& measured(const RichText& text, double size, Weight weight);
+  // The same text measured in an earlier document of this thread (see text_measure.cpp).
+  static std::shared_ptr<const Measured> shared(const RichText& text, double size, Weight weight);
 
   std::unordered_map<Key, Entry, Hash> wrapped_;
-  std::unordered_map<Key, Measured, Hash> measured_;
+  // shared with the thread's cache of texts by content, which may drop them while they are used
+  std::unordered_map<Key, std::shared_ptr<const Measured>, Hash> measured_;
 };
 
 }  // namespace epure::render::layout_detail

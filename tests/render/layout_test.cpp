@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <map>
 #include <set>
+#include <thread>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -959,4 +960,34 @@ TEST_CASE("layout: a document over its page budget sets some figures smaller, do
     reachable.page_budget = static_cast<int>(squeezed.size());
     CHECK(dump(layout_document(reachable, style)) == dump(squeezed));
   }
+}
+
+TEST_CASE("layout: a text measured in an earlier document of the thread gives the pages a fresh measure gives") {
+  // A thread keeps the texts it measured by their content (text_measure.cpp) and finds them by
+  // their length and ends: two statements alike but for the words inside must be told apart.
+  const auto repeat = [](const std::string& word, int n) {
+    std::string s;
+    for (int i = 0; i < n; ++i) s += word;
+    return s;
+  };
+  const std::string head = "Les points A, B et C sont donnés, et ", tail = " : calculer t_{ab} puis P.";
+  std::string narrow = head, wide = head;
+  narrow += repeat("iii ", 40);
+  narrow += tail;
+  wide += repeat("WWW ", 40);
+  wide += tail;
+  REQUIRE(narrow.size() == wide.size());
+  const auto document = [&](const std::string& text) {
+    Document doc = sample(2);
+    for (auto& section : doc.sections)
+      for (auto& block : section.blocks)
+        if (auto* p = std::get_if<Paragraph>(&block)) p->text = text;
+    return doc;
+  };
+  const Document first = document(narrow), second = document(wide);
+  std::string fresh;
+  std::thread([&] { fresh = dump(layout_document(second)); }).join();  // a thread that measured nothing yet
+  const std::string after_first = dump(layout_document(first));
+  CHECK(dump(layout_document(second)) == fresh);
+  CHECK(after_first != fresh);  // the two texts do break differently: the test can tell
 }

@@ -4,7 +4,9 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -157,4 +159,33 @@ TEST_CASE("path data: a coordinate beyond the fast form writes the path absolute
   Path p;
   p.move_to({0, 0}).line_to({2e12, 1}).close();
   CHECK(data(p) == "M0 0 L2000000000000 1 Z");
+}
+
+TEST_CASE("path data: a horizontal step is the shorter of H and h by the written numbers, over digit-count edges") {
+  // The writer counts a number's characters without writing it; the reference writes both forms
+  // with format_number and compares their lengths (absolute on a tie). The values sit on the
+  // edges where the count changes: 9.99 → 10, 0.1 → 0.05, 99.9 → 100, 999.99 → 1000, signs.
+  epure::Rng rng(34, 9);
+  const double edges[] = {0, 0.01, 0.05, 0.1, 0.5, 0.99, 1, 9.9, 9.99, 10, 10.01, 99.9, 99.99, 100, 100.5,
+                          999.99, 1000, 1000.01, 9999.99, 10000, 123456.78};
+  for (int n = 0; n < 20000; ++n) {
+    const auto pick = [&] {
+      const double e = edges[rng.integer(0, static_cast<std::int64_t>(std::size(edges)) - 1)];
+      return rng.chance(0.5) ? -e : e;
+    };
+    const double x0 = pick(), x1 = pick(), y = 7;
+    Path p;
+    p.move_to({x0, y}).line_to({x1, y});
+    const std::string absolute = format_number(x1);
+    const std::string relative = format_number(std::round(x1 * 100) / 100 - std::round(x0 * 100) / 100);
+    std::string want = "M";
+    want += format_number(x0);
+    want += " 7";
+    want += relative.size() < absolute.size() ? 'h' : 'H';
+    want += relative.size() < absolute.size() ? relative : absolute;
+    CAPTURE(x0);
+    CAPTURE(x1);
+    if (std::round(x1 * 100) == std::round(x0 * 100)) continue;  // no step: H or h of nothing, either way
+    REQUIRE(data(p) == want);
+  }
 }
