@@ -366,7 +366,8 @@ TEST_CASE("layout: page breaks") {
       if (on_pages.size() < 2) continue;
       ++across;
       for (const auto& [page, height] : on_pages) {
-        CAPTURE(page);
+        const auto page_number = page;  // CAPTURE's lambda cannot take a structured binding (clang 14)
+        CAPTURE(page_number);
         CHECK(height >= 2 * line - kPt);
       }
     }
