@@ -15,6 +15,8 @@ namespace {
 // us allocate, far above any network worth running per cell.
 constexpr std::uint32_t kMaxWidth = 1024;
 constexpr std::size_t kHeader = 28;  // "EPDG", version, count, the four widths
+// The most networks a version-3 file may hold: each costs a forward pass per cell.
+constexpr std::uint32_t kMaxMembers = 8;
 
 std::size_t weight_count(const NetShape& s) {
   const std::size_t c1 = s.conv1, c2 = s.conv2, c3 = s.conv3, h = s.hidden;
@@ -76,6 +78,34 @@ void conv_relu_pool(const float* in, int cin, int n, const float* w, const float
   }
 }
 
+// One network from a version-2 file's bytes (exactly those: a member of a version-3 file is
+// handed its own span).
+DigitNetwork read_network(std::string_view b) {
+  if (b.size() < kHeader || b.substr(0, 4) != "EPDG" || read_u32(b, 4) != 2)
+    throw std::runtime_error("digit classifier: not a version-2 or 3 weights file (EPDG)");
+  DigitNetwork net;
+  const std::uint32_t count = read_u32(b, 8);
+  net.shape = {read_u32(b, 12), read_u32(b, 16), read_u32(b, 20), read_u32(b, 24)};
+  for (std::uint32_t width : {net.shape.conv1, net.shape.conv2, net.shape.conv3, net.shape.hidden})
+    if (width == 0 || width > kMaxWidth) throw std::runtime_error("digit classifier: the weights file declares a layer of no or too many units");
+  if (count != weight_count(net.shape) || b.size() != kHeader + 4 * static_cast<std::size_t>(count))
+    throw std::runtime_error("digit classifier: the weights file's size is not its network's");
+  net.w.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t bits = read_u32(b, kHeader + 4 * i);
+    std::memcpy(&net.w[i], &bits, 4);
+  }
+  const std::size_t c1 = net.shape.conv1, c2 = net.shape.conv2, c3 = net.shape.conv3, h = net.shape.hidden;
+  std::size_t at = 0;
+  auto take = [&](std::size_t n) { const std::size_t here = at; at += n; return here; };
+  net.conv1_w = take(c1 * 9); net.conv1_b = take(c1);
+  net.conv2_w = take(c2 * c1 * 9); net.conv2_b = take(c2);
+  net.conv3_w = take(c3 * c2 * 9); net.conv3_b = take(c3);
+  net.fc1_w = take(h * c3 * 9); net.fc1_b = take(h);
+  net.fc2_w = take(kClassCount * h); net.fc2_b = take(kClassCount);
+  return net;
+}
+
 }  // namespace
 
 char class_char(CellClass c) {
@@ -85,27 +115,21 @@ char class_char(CellClass c) {
 }
 
 DigitClassifier::DigitClassifier(std::string_view b) {
-  if (b.size() < kHeader || b.substr(0, 4) != "EPDG" || read_u32(b, 4) != 2)
-    throw std::runtime_error("digit classifier: not a version-2 weights file (EPDG)");
-  const std::uint32_t count = read_u32(b, 8);
-  shape_ = {read_u32(b, 12), read_u32(b, 16), read_u32(b, 20), read_u32(b, 24)};
-  for (std::uint32_t width : {shape_.conv1, shape_.conv2, shape_.conv3, shape_.hidden})
-    if (width == 0 || width > kMaxWidth) throw std::runtime_error("digit classifier: the weights file declares a layer of no or too many units");
-  if (count != weight_count(shape_) || b.size() != kHeader + 4 * static_cast<std::size_t>(count))
-    throw std::runtime_error("digit classifier: the weights file's size is not its network's");
-  w_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t bits = read_u32(b, kHeader + 4 * i);
-    std::memcpy(&w_[i], &bits, 4);
+  if (b.size() >= 12 && b.substr(0, 4) == "EPDG" && read_u32(b, 4) == 3) {
+    const std::uint32_t n = read_u32(b, 8);
+    if (n == 0 || n > kMaxMembers) throw std::runtime_error("digit classifier: the weights file declares no or too many networks");
+    std::size_t at = 12;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      // each member's size from its own header, read only once that header is there
+      const std::string_view rest = b.substr(at);
+      const std::size_t size = rest.size() >= kHeader ? kHeader + 4 * static_cast<std::size_t>(read_u32(rest, 8)) : rest.size();
+      nets_.push_back(read_network(rest.substr(0, std::min(size, rest.size()))));
+      at += size;
+    }
+    if (at != b.size()) throw std::runtime_error("digit classifier: the weights file's size is not its networks'");
+  } else {
+    nets_.push_back(read_network(b));
   }
-  const std::size_t c1 = shape_.conv1, c2 = shape_.conv2, c3 = shape_.conv3, h = shape_.hidden;
-  std::size_t at = 0;
-  auto take = [&](std::size_t n) { const std::size_t here = at; at += n; return here; };
-  conv1_w_ = take(c1 * 9); conv1_b_ = take(c1);
-  conv2_w_ = take(c2 * c1 * 9); conv2_b_ = take(c2);
-  conv3_w_ = take(c3 * c2 * 9); conv3_b_ = take(c3);
-  fc1_w_ = take(h * c3 * 9); fc1_b_ = take(h);
-  fc2_w_ = take(kClassCount * h); fc2_b_ = take(kClassCount);
 }
 
 const DigitClassifier& DigitClassifier::builtin() {
@@ -117,26 +141,28 @@ const DigitClassifier& DigitClassifier::builtin() {
   return net;
 }
 
-std::array<float, kClassCount> DigitClassifier::logits(const CellCrop& crop) const {
-  const int c1 = static_cast<int>(shape_.conv1), c2 = static_cast<int>(shape_.conv2), c3 = static_cast<int>(shape_.conv3);
-  const std::size_t hidden = shape_.hidden;
+std::array<float, kClassCount> DigitClassifier::logits(std::size_t member, const CellCrop& crop) const {
+  const DigitNetwork& n = nets_.at(member);
+  const std::vector<float>& w = n.w;
+  const int c1 = static_cast<int>(n.shape.conv1), c2 = static_cast<int>(n.shape.conv2), c3 = static_cast<int>(n.shape.conv3);
+  const std::size_t hidden = n.shape.hidden;
   std::array<float, kCropSide * kCropSide> in;
   for (std::size_t i = 0; i < in.size(); ++i) in[i] = static_cast<float>(crop[i]) / 255.0f;
   std::vector<float> a1(static_cast<std::size_t>(c1) * 14 * 14), a2(static_cast<std::size_t>(c2) * 7 * 7),
       a3(static_cast<std::size_t>(c3) * 3 * 3), h(hidden);
-  conv_relu_pool(in.data(), 1, 28, &w_[conv1_w_], &w_[conv1_b_], c1, a1.data());
-  conv_relu_pool(a1.data(), c1, 14, &w_[conv2_w_], &w_[conv2_b_], c2, a2.data());
-  conv_relu_pool(a2.data(), c2, 7, &w_[conv3_w_], &w_[conv3_b_], c3, a3.data());
+  conv_relu_pool(in.data(), 1, 28, &w[n.conv1_w], &w[n.conv1_b], c1, a1.data());
+  conv_relu_pool(a1.data(), c1, 14, &w[n.conv2_w], &w[n.conv2_b], c2, a2.data());
+  conv_relu_pool(a2.data(), c2, 7, &w[n.conv3_w], &w[n.conv3_b], c3, a3.data());
   for (std::size_t j = 0; j < hidden; ++j) {
-    float s = w_[fc1_b_ + j];
-    const float* row = &w_[fc1_w_ + j * a3.size()];
+    float s = w[n.fc1_b + j];
+    const float* row = &w[n.fc1_w + j * a3.size()];
     for (std::size_t i = 0; i < a3.size(); ++i) s += row[i] * a3[i];
     h[j] = std::max(s, 0.0f);
   }
   std::array<float, kClassCount> out;
   for (std::size_t c = 0; c < kClassCount; ++c) {
-    float s = w_[fc2_b_ + c];
-    const float* row = &w_[fc2_w_ + c * hidden];
+    float s = w[n.fc2_b + c];
+    const float* row = &w[n.fc2_w + c * hidden];
     for (std::size_t i = 0; i < hidden; ++i) s += row[i] * h[i];
     out[c] = s;
   }
@@ -144,13 +170,17 @@ std::array<float, kClassCount> DigitClassifier::logits(const CellCrop& crop) con
 }
 
 CellReading DigitClassifier::classify(const CellCrop& crop) const {
-  const auto z = logits(crop);
-  const float top = *std::max_element(z.begin(), z.end());
+  std::array<double, kClassCount> mean{};
+  for (std::size_t m = 0; m < nets_.size(); ++m) {
+    const auto z = logits(m, crop);
+    const float top = *std::max_element(z.begin(), z.end());
+    std::array<double, kClassCount> e;
+    double sum = 0;
+    for (std::size_t c = 0; c < kClassCount; ++c) sum += e[c] = std::exp(static_cast<double>(z[c] - top));
+    for (std::size_t c = 0; c < kClassCount; ++c) mean[c] += e[c] / sum;
+  }
   CellReading r;
-  double sum = 0;
-  std::array<double, kClassCount> e;
-  for (int c = 0; c < kClassCount; ++c) sum += e[static_cast<std::size_t>(c)] = std::exp(static_cast<double>(z[static_cast<std::size_t>(c)] - top));
-  for (int c = 0; c < kClassCount; ++c) r.probability[static_cast<std::size_t>(c)] = static_cast<float>(e[static_cast<std::size_t>(c)] / sum);
+  for (std::size_t c = 0; c < kClassCount; ++c) r.probability[c] = static_cast<float>(mean[c] / static_cast<double>(nets_.size()));
   const auto best = std::max_element(r.probability.begin(), r.probability.end());
   r.best = static_cast<CellClass>(best - r.probability.begin());
   r.confidence = *best;

@@ -1,16 +1,18 @@
 #pragma once
-// The comb-cell classifier: a small convolutional network (train_digits.py beside it in
-// classifier/ trains it on the mnist package's handwritten digits and writes its weights) that
-// reads one cell's crop as a digit 0-9, a minus sign or an empty cell.
+// The comb-cell classifier: three small convolutional networks whose probabilities are averaged
+// (train_digits.py beside it in classifier/ trains them on the mnist package's handwritten digits
+// and writes their weights), reading one cell's crop as a digit 0-9, a minus sign or an empty
+// cell.
 //
 // The forward pass is written here (about a hundred lines) rather than run by OpenCV's dnn
-// module: the network is small (conv 32, 64, 128 channels, 128 hidden units: 241,804 weights,
+// module: each network is small (conv 32, 64, 128 channels, 128 hidden units: 241,804 weights,
 // 7.6 M multiply-adds a cell, batch norm folded into the convolutions), dnn would bring
 // protobuf and a model-format exporter for it, and its kernels are chosen per CPU (SIMD widths,
 // Winograd), so the same crop could give other bits on another machine. Here every sum runs in
 // one fixed order in float with no contraction (-ffp-contract=off): the same crop gives the same
 // probabilities on every run and every x86-64 or ARM machine.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -40,28 +42,41 @@ struct NetShape {
   std::uint32_t conv1 = 0, conv2 = 0, conv3 = 0, hidden = 0;
 };
 
+// One trained network: its widths and every layer's weights and biases, in the file's order.
+struct DigitNetwork {
+  NetShape shape;
+  std::vector<float> w;
+  std::size_t conv1_w, conv1_b, conv2_w, conv2_b, conv3_w, conv3_b, fc1_w, fc1_b, fc2_w, fc2_b;
+};
+
+// A deep ensemble: several networks of one architecture trained from other seeds (or other
+// augmentations), whose probabilities are averaged. Members disagree most on the ambiguous
+// digits, so the mean's best probability falls on them: an ensemble is better calibrated than
+// any one member, which is what sending uncertain cells to review needs.
 class DigitClassifier {
  public:
-  // The weights file's bytes: "EPDG", u32 version 2, u32 count, u32 conv1, conv2, conv3 and hidden
-  // widths, then count float32 (all little endian): conv1 weights (conv1 x 1 x 3 x 3) and biases,
-  // conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's (hidden x conv3·9), fc2's (12 x hidden).
-  // Throws std::runtime_error when they are not a version-2 weights file whose size is its
-  // network's (version 1, the first network's 16-32-64-64 with no widths in the header, is no
-  // longer read: train_digits.py writes version 2).
+  // The weights file's bytes, version 3: "EPDG", u32 version 3, u32 member count (1 to 8), then
+  // each member as a version-2 file: "EPDG", u32 version 2, u32 count, u32 conv1, conv2, conv3 and
+  // hidden widths, then count float32 (all little endian): conv1 weights (conv1 x 1 x 3 x 3) and
+  // biases, conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's (hidden x conv3·9), fc2's
+  // (12 x hidden). A version-2 file alone is read as a one-network ensemble. Throws
+  // std::runtime_error when the bytes are not that (version 1, the first network's 16-32-64-64
+  // with no widths in the header, is no longer read).
   explicit DigitClassifier(std::string_view weights);
-  // The network epure carries (classifier/digits.weights, compiled in).
+  // The networks epure carries (classifier/digits.weights, compiled in).
   static const DigitClassifier& builtin();
 
+  // The members' probabilities (each a softmax of its logits, in double), summed in the file's
+  // order and divided by their count: the same crop gives the same bits on every run.
   CellReading classify(const CellCrop& crop) const;
-  // The network's raw outputs (before the softmax), for the test against train_digits.py.
-  std::array<float, kClassCount> logits(const CellCrop& crop) const;
+  // One member's raw outputs (before the softmax), for the test against train_digits.py.
+  std::array<float, kClassCount> logits(std::size_t member, const CellCrop& crop) const;
 
-  NetShape shape() const { return shape_; }
+  std::size_t members() const { return nets_.size(); }
+  NetShape shape(std::size_t member) const { return nets_.at(member).shape; }
 
  private:
-  NetShape shape_;
-  std::vector<float> w_;  // every layer's weights and biases, in the file's order
-  std::size_t conv1_w_, conv1_b_, conv2_w_, conv2_b_, conv3_w_, conv3_b_, fc1_w_, fc1_b_, fc2_w_, fc2_b_;
+  std::vector<DigitNetwork> nets_;
 };
 
 }  // namespace epure::scan

@@ -60,9 +60,11 @@ struct TickReading {
 // A cell read by the network below this confidence sends its field to review. Chosen on the
 // trade-off between fields sent to review and silent errors (a wrong value not sent to review)
 // measured on the suite's scans of generate's French sheets (README, "epure scan": four stacks
-// of 24 sheets, 3,651 comb fields; comb fields to review / silent errors at 0.75: 405 / 22,
-// 0.80: 512 / 17, 0.85: 686 / 6, 0.90: 1,031 / 2). The network is trained with label smoothing
-// (0.05), so its confidence never passes 0.954: a threshold near that would send every field.
+// of 24 sheets, 3,655 comb fields; comb fields to review / silent errors with the ensemble of
+// three networks, 2026-12-06: 0.75: 365 / 18, 0.80: 486 / 8, 0.85: 636 / 5, 0.90: 931 / 2):
+// 0.85 is where the silent errors reach the 0.1 %. The networks are trained with label
+// smoothing (0.05), so their confidence never passes about 0.95: a threshold near that would send
+// every field.
 inline constexpr float kCellConfidence = 0.85f;
 
 // A comb cell as a field's reading keeps it: the network's best class and its probability, not

@@ -24,8 +24,10 @@ key=$tmp/set/key.json
 # the committed classifier (the 32-64-128 network, cells below 0.85 sent to review) on generate's
 # sheets of today's course (2026-12-05, 11:55 UTC: silent errors 0 of 182 on the JPEG PDF, 0 of
 # 196 on the bilevel TIFF, 0 of 196 at 300 dpi, 1 of 196 in the PNGs; fields sent to review
-# 14-23.5 %; digits 98.2-99.7 %), with a margin. The targets (silent errors 0.1 %, review
-# 5 %, digits 99 %) are NOT all met: README, "epure scan", has the figures on stacks of 24 sheets.
+# 14-23.5 %; digits 98.2-99.7 %), with a margin; with the ensemble of three networks that
+# replaced it (2026-12-06): silent errors 0 on each stack, review 14.9-18.7 %, digits
+# 97.5-99.3 %. The targets (silent errors 0.1 %, review 5 %, digits 99 %) are NOT all
+# met: README, "epure scan", has the figures on stacks of 24 sheets.
 # Digits: about 400 a stack, so one standard deviation of the rate is 0.7 %; the bilevel stack's
 # rate is 97.9 % on 24 sheets (bench/scan_accuracy.sh), and draw version 2, which writes other
 # answers on these four sheets, read 391 of 402 there (97.3 %; the other stacks 99.0-99.5 %): the
