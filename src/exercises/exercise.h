@@ -105,6 +105,11 @@ struct ExerciseContext {
   // when a student rounds an intermediate); false for the explorer's views, which mark nothing
   // (ExerciseInstance::questions then carry a zero tolerance; the key's text never shows one).
   bool tolerances = true;
+  // Whether to build the instance at all past its identity and questions; false when only the
+  // answers' values are wanted (the combs' reach: WorksheetSet::measure_combs draws every sheet
+  // of the set once before the set is drawn for its pages). The instance then carries its
+  // identity and its questions (their tolerances as `tolerances` says), no solution, no sections.
+  bool sections = true;
 };
 
 // An answer field of the printed sheet: the same for every branch of a kind, so that the sheet

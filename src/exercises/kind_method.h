@@ -278,6 +278,16 @@ class MethodKind : public ExerciseKind {
   ExerciseInstance key_of(const nlohmann::json& instance, const ExerciseContext& ctx) const override {
     return build(read(instance), ctx);
   }
+  // What make() gives for drawn data no earlier sheet holds: the instance built, or, when the
+  // context asks for values only (ExerciseContext::sections), its identity and its questions,
+  // which every kind takes from the key's solution as they are (key_solution), so that they are
+  // the built instance's (tests/exercises/values_only_test.cpp).
+  ExerciseInstance made(const Data& d, const ExerciseContext& ctx) const {
+    if (ctx.sections) return build(d, ctx);
+    ExerciseInstance inst = identity_of(d, ctx);
+    inst.questions = key_solution(d, ctx).questions.take_questions();
+    return inst;
+  }
 
   std::vector<method::Recorded<method::Traced>> evaluate(const std::any& data, const method::GivenAnswers* given,
                                                          method::Switches switches, int decimals) const override {
@@ -391,13 +401,19 @@ class MethodKind : public ExerciseKind {
   // The identity of a drawn instance and, unless an earlier sheet holds it, its key solution
   // and the common parts of the ExerciseInstance (the kind adds the sections).
   static ExerciseInstance begin_instance(const Data& d, const ExerciseContext& ctx) {
+    ExerciseInstance inst = identity_of(d, ctx);
+    inst.solution = solve_instance(inst.instance);
+    return inst;
+  }
+  // A drawn instance's identity alone: its place, number, kind, branch, data (as a solve input)
+  // and fingerprint.
+  static ExerciseInstance identity_of(const Data& d, const ExerciseContext& ctx) {
     ExerciseInstance inst;
     inst.n = ctx.n;
     inst.number = number_of(ctx);
     inst.kind = std::string(Kind::kName);
     inst.branch = ctx.branch;
     inst.instance = write(d);
-    inst.solution = solve_instance(inst.instance);
     inst.fingerprint = fingerprint(inst.instance);
     return inst;
   }

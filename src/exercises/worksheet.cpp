@@ -61,6 +61,7 @@ ExerciseInstance WorksheetSet::draw(int index, int slot, int attempt, const std:
   ExerciseContext ctx = context(slot, slot + 1, branch);
   ctx.taken = taken;
   ctx.widening = widening;
+  ctx.sections = ctx.tolerances = !values_only_;
   const ExerciseKind& kind = *find_kind(spec_.exercises[slot].kind);
   ExerciseInstance instance = kind.make(rng, ctx);
   instance.number = ctx.number;
@@ -209,7 +210,11 @@ void WorksheetSet::comb_reach(const Sheet& sheet, CombCells& cells) const {
 }
 
 void WorksheetSet::measure_combs(int sheets) {
+  measure_work();  // with built instances, as branch() would (and once: the probe shares it)
+  // The probe draws the same sheets (the same data, collisions and branches) with their answers
+  // only: the combs need no pages, and building them cost as much as the pages' own draw.
   WorksheetSet probe = *this;
+  probe.values_only_ = true;
   CombCells cells;
   for (int i = 0; i < std::max(sheets, kReachSheets); ++i) comb_reach(probe.next(), cells);
   comb_cells_ = std::move(cells);

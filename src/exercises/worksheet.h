@@ -91,8 +91,9 @@ class WorksheetSet {
   // with the set's decimals.
   void comb_reach(const Sheet& sheet, CombCells& cells) const;
   void set_comb_cells(CombCells cells) { comb_cells_ = std::move(cells); }
-  // The combs of a fresh set's first `sheets` sheets (at least kReachSheets), drawn on a copy,
-  // set on this one, as `epure generate` does (there in parallel: the same result).
+  // The combs of a fresh set's first `sheets` sheets (at least kReachSheets), drawn on a copy
+  // for their answers only (ExerciseContext::sections), set on this one, as `epure generate`
+  // does.
   void measure_combs(int sheets = 0);
 
   // The printed documents of a sheet: the student's sheet and its answer key.
@@ -115,6 +116,9 @@ class WorksheetSet {
   std::vector<std::unordered_set<std::uint64_t>> used_;  // fingerprints per slot
   int next_index_ = 0;
   CombCells comb_cells_;
+  // draws instances with their identity and questions only (ExerciseContext::sections): the
+  // probe set of measure_combs
+  bool values_only_ = false;
 };
 
 }  // namespace epure

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -196,32 +199,183 @@ std::string layout_json_begin(const SetLayout& layout) {
   return head + ",\n \"sheets\": [\n";
 }
 
-std::string layout_json_sheet(const SheetLayout& s, bool first) {
-  auto rect = [](const Rect& r) { return json::array({r.x, r.y, r.width, r.height}); };
-  json pages = json::array();
-  for (const auto& p : s.pages) {
-    json fields = json::array();
-    for (const auto& f : p.fields) {
-      json cells = json::array();
-      for (const auto& c : f.cells) cells.push_back(rect(c));
-      json o = {{"question", f.question}, {"type", f.type == FieldType::comb ? "comb" : "tick"}, {"cells", cells}};
-      if (f.type == FieldType::comb) {
-        o["sign"] = f.sign;
-        o["decimals"] = f.decimals;
-      } else {
-        o["values"] = f.values;
-        o["select"] = f.multiple ? "any" : "one";
-      }
-      fields.push_back(std::move(o));
-    }
-    json marks = json::array();
-    for (const auto& m : p.marks) marks.push_back(json::array({m.x, m.y}));
-    pages.push_back({{"page", p.page}, {"width", p.width}, {"height", p.height}, {"marks", marks},
-                     {"mark_size", p.mark_size}, {"code", rect(p.code)}, {"fields", fields}});
+namespace {
+
+// A sheet's JSON written straight into a string, byte for byte as nlohmann's dump(1) writes the
+// same value (the file's bytes do not change), without building the tree: `epure generate`
+// writes one per sheet, and building and dumping nlohmann's tree of maps cost 9 % of an SVG set's
+// CPU (bench/README.md, "Pages"). dump(1) puts every member and element on a line of its own,
+// indented one space a level, an empty list as `[]`; an object's members come in nlohmann's
+// order, its keys sorted, so callers give them sorted. Numbers go through nlohmann's own double
+// formatting (Grisu2, `12.0` for an integral value), which is not always the shortest fmt
+// would write; strings that need escaping go through nlohmann itself.
+class Dump1 {
+ public:
+  explicit Dump1(std::string& out) : out_(out) {}
+
+  void begin_object() { open('{'); }
+  void end_object() { close('}'); }
+  void begin_array() { open('['); }
+  void end_array() { close(']'); }
+  // the next value is this member's
+  void key(std::string_view k) {
+    item();
+    string_text(k);
+    out_ += ": ";
+    keyed_ = true;
   }
-  json sheet = {{"sheet", s.sheet}, {"pages", pages}};
-  if (s.student) sheet["student"] = {{"number", s.student->number}, {"name", s.student->name}};
-  return (first ? "" : ",\n") + sheet.dump(1);
+  void value(double d) {
+    item();
+    if (!std::isfinite(d)) {
+      out_ += "null";
+      return;
+    }
+    std::array<char, 64> buf;  // nlohmann's own number buffer's size
+    char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), d);
+    out_.append(buf.data(), static_cast<std::size_t>(end - buf.data()));
+  }
+  void value(int n) {
+    item();
+    fmt::format_to(std::back_inserter(out_), "{}", n);
+  }
+  void value(bool b) {
+    item();
+    out_ += b ? "true" : "false";
+  }
+  void value(std::string_view s) {
+    item();
+    string_text(s);
+  }
+  void value(const char* s) { value(std::string_view(s)); }
+
+ private:
+  // before a value: a member's value follows its key; an element starts a line of its own
+  void item() {
+    if (std::exchange(keyed_, false) || open_.empty()) return;
+    if (open_.back()) open_.back() = false;
+    else out_ += ',';
+    out_ += '\n';
+    out_.append(open_.size(), ' ');
+  }
+  void open(char c) {
+    item();
+    out_ += c;
+    open_.push_back(true);
+  }
+  void close(char c) {
+    const bool empty = open_.back();
+    open_.pop_back();
+    if (!empty) {
+      out_ += '\n';
+      out_.append(open_.size(), ' ');
+    }
+    out_ += c;
+  }
+  void string_text(std::string_view s) {
+    // printable ASCII without a quote or backslash is written as it is; the rest (controls,
+    // UTF-8, whose validity nlohmann checks) as nlohmann escapes it
+    const bool plain = std::all_of(s.begin(), s.end(), [](char c) {
+      const auto u = static_cast<unsigned char>(c);
+      return u >= 0x20 && u < 0x80 && c != '"' && c != '\\';
+    });
+    if (plain) {
+      out_ += '"';
+      out_ += s;
+      out_ += '"';
+    } else {
+      out_ += json(std::string(s)).dump();
+    }
+  }
+
+  std::string& out_;
+  std::vector<bool> open_;  // per open object or list: nothing written in it yet
+  bool keyed_ = false;
+};
+
+void put_rect(Dump1& d, const Rect& r) {
+  d.begin_array();
+  for (double v : {r.x, r.y, r.width, r.height}) d.value(v);
+  d.end_array();
+}
+
+}  // namespace
+
+std::string layout_json_sheet(const SheetLayout& s, bool first) {
+  std::string out = first ? "" : ",\n";
+  Dump1 d(out);
+  // keys in sorted order throughout (Dump1)
+  d.begin_object();
+  d.key("pages");
+  d.begin_array();
+  for (const auto& p : s.pages) {
+    d.begin_object();
+    d.key("code");
+    put_rect(d, p.code);
+    d.key("fields");
+    d.begin_array();
+    for (const auto& f : p.fields) {
+      d.begin_object();
+      d.key("cells");
+      d.begin_array();
+      for (const auto& c : f.cells) put_rect(d, c);
+      d.end_array();
+      if (f.type == FieldType::comb) {
+        d.key("decimals");
+        d.value(f.decimals);
+        d.key("question");
+        d.value(f.question);
+        d.key("sign");
+        d.value(f.sign);
+        d.key("type");
+        d.value("comb");
+      } else {
+        d.key("question");
+        d.value(f.question);
+        d.key("select");
+        d.value(f.multiple ? "any" : "one");
+        d.key("type");
+        d.value("tick");
+        d.key("values");
+        d.begin_array();
+        for (const auto& v : f.values) d.value(v);
+        d.end_array();
+      }
+      d.end_object();
+    }
+    d.end_array();
+    d.key("height");
+    d.value(p.height);
+    d.key("mark_size");
+    d.value(p.mark_size);
+    d.key("marks");
+    d.begin_array();
+    for (const auto& m : p.marks) {
+      d.begin_array();
+      d.value(m.x);
+      d.value(m.y);
+      d.end_array();
+    }
+    d.end_array();
+    d.key("page");
+    d.value(p.page);
+    d.key("width");
+    d.value(p.width);
+    d.end_object();
+  }
+  d.end_array();
+  d.key("sheet");
+  d.value(s.sheet);
+  if (s.student) {
+    d.key("student");
+    d.begin_object();
+    d.key("name");
+    d.value(s.student->name);
+    d.key("number");
+    d.value(s.student->number);
+    d.end_object();
+  }
+  d.end_object();
+  return out;
 }
 
 std::string layout_json_end() { return "\n]}\n"; }

@@ -310,7 +310,7 @@ class BallKind final : public MethodKind<Kind> {
       return x;
     });
     if (auto taken = already_taken(ctx, this->write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:

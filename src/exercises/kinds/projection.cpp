@@ -124,7 +124,7 @@ class Projection final : public MethodKind<ProjectionMethod> {
       return x;
     });
     if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:

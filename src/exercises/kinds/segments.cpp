@@ -267,7 +267,7 @@ class Segments final : public MethodKind<SegmentsMethod> {
     const Data d = draw_until(20000, fmt::format("segments, branch {} (parameters, angle, lengths, gap, separation)", ctx.branch),
                               draw);
     if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:

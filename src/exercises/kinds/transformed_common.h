@@ -358,7 +358,7 @@ class TransformedKind final : public MethodKind<Kind> {
       return d;
     });
     if (auto taken = already_taken(ctx, this->write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:

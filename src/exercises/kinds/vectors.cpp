@@ -192,7 +192,7 @@ class Vectors final : public MethodKind<VectorsMethod> {
       return x;
     });
     if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:

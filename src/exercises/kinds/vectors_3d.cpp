@@ -184,7 +184,7 @@ class Vectors3d final : public MethodKind<Vectors3dMethod> {
       return x;
     });
     if (auto taken = already_taken(ctx, write(d))) return *std::move(taken);
-    return build(d, ctx);
+    return this->made(d, ctx);
   }
 
  private:
