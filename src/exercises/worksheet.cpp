@@ -119,9 +119,15 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
   for (std::size_t slot = 0; slot < spec_.exercises.size(); ++slot) {
     const int s = static_cast<int>(slot);
     const std::string scheduled = branch(index, s);
+    // Attempt 0 of the scheduled branch first, given (drawn in parallel by generate) or drawn
+    // here: the same instance either way, and the retries after a collision start at attempt 1
+    // either way, so a sheet is the same however it is made (generate, the combs' probe,
+    // rebuild, which grade and check use). Starting the sequential retries at attempt 0 drew
+    // that collision again and left the scheduled branch one try short: once a branch ran out,
+    // every later attempt number, and so the sheet, differed.
     std::optional<ExerciseInstance> chosen;
-    if (first_attempts && !used_[slot].count((*first_attempts)[slot].fingerprint))
-      chosen = std::move((*first_attempts)[slot]);
+    ExerciseInstance first = first_attempts ? std::move((*first_attempts)[slot]) : draw(index, s, 0, scheduled, &used_[slot]);
+    if (!used_[slot].count(first.fingerprint)) chosen = std::move(first);
     // A collision draws again. A branch whose instances are all taken (a small grid: a ray from
     // inside the canonical square has one integer origin) gives way to the kind's other branches
     // in the schedule's order, rather than repeating an instance or looping forever.
@@ -131,7 +137,7 @@ Sheet WorksheetSet::next(std::vector<ExerciseInstance>* first_attempts) {
     for (const auto& [name, weight] : weights)
       if (weight > 0 && name != scheduled) branches.push_back(name);
     // When every branch has run out, the kind's data ranges widen (ExerciseContext::widening).
-    int attempt = first_attempts ? 1 : 0;
+    int attempt = 1;
     for (int widening = 0; !chosen && widening <= kMaxWidening; ++widening) {
       for (std::size_t b = 0; !chosen && b < branches.size(); ++b) {
         for (int tries = 0; tries < kAttemptsPerBranch && !chosen; ++tries, ++attempt) {

@@ -78,6 +78,40 @@ TEST_CASE("parallel first attempts give the same sheets as sequential drawing") 
   }
 }
 
+TEST_CASE("parallel first attempts give the same sheets as sequential drawing when a branch runs out") {
+  // ray_square from inside at easy: few integer origins and easy directions, so attempt 0
+  // collides on most sheets and, from about sheet 250, the branch's 64 retries run out into wider
+  // ranges. The sequential path (the combs' probe, rebuild) once retried from attempt 0, one try
+  // short, and from there drew other sheets (this test failed at sheet 256).
+  const auto spec = epure::parse_spec(R"(
+title = "Test"
+[[exercise]]
+kind = "ray_square"
+difficulty = "easy"
+branches = { inside = 1 }
+)", "test.toml");
+  epure::WorksheetSet sequential(spec, 21), parallel(spec, 21);
+  int collided = 0;
+  for (int i = 0; i < 400; ++i) {
+    std::vector<epure::ExerciseInstance> first{parallel.draw(i, 0, 0, parallel.branch(i, 0))};
+    const std::uint64_t first_fingerprint = first[0].fingerprint;
+    auto a = sequential.next();
+    auto b = parallel.next(&first);
+    CAPTURE(i);
+    REQUIRE(a.exercises[0].instance == b.exercises[0].instance);
+    collided += b.exercises[0].fingerprint != first_fingerprint;
+  }
+  CHECK(collided > 100);  // the case this test is about: most sheets retried
+  epure::WorksheetSet fresh(spec, 21);
+  epure::WorksheetSet again(spec, 21);
+  std::vector<epure::Sheet> made;
+  for (int i = 0; i < 400; ++i) {
+    std::vector<epure::ExerciseInstance> first{again.draw(i, 0, 0, again.branch(i, 0))};
+    made.push_back(again.next(&first));
+  }
+  for (int i : {399, 7, 250}) CHECK(fresh.rebuild(made[static_cast<std::size_t>(i)].id).exercises[0].instance == made[static_cast<std::size_t>(i)].exercises[0].instance);
+}
+
 TEST_CASE("a seed beyond what an id can hold is refused") {
   CHECK_THROWS_AS(epure::WorksheetSet(two_projections(), epure::kMaxSeed + 1), epure::SpecError);
 }
