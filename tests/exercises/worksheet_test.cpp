@@ -4,6 +4,7 @@
 
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_set>
 
 #include <fmt/format.h>
@@ -21,6 +22,11 @@ difficulty = "easy"
 [[exercise]]
 kind = "projection"
 )", "test.toml");
+}
+// One ray_square exercise at easy, whose small grid runs out of instances in a large set.
+epure::WorksheetSpec ray_square_easy(std::string_view extra = "") {
+  return epure::parse_spec(fmt::format("title = \"Test\"\n[[exercise]]\nkind = \"ray_square\"\ndifficulty = \"easy\"\n{}\n", extra),
+                           "test.toml");
 }
 }  // namespace
 
@@ -83,13 +89,7 @@ TEST_CASE("parallel first attempts give the same sheets as sequential drawing wh
   // collides on most sheets and, from about sheet 250, the branch's 64 retries run out into wider
   // ranges. The sequential path (the combs' probe, rebuild) once retried from attempt 0, one try
   // short, and from there drew other sheets (this test failed at sheet 256).
-  const auto spec = epure::parse_spec(R"(
-title = "Test"
-[[exercise]]
-kind = "ray_square"
-difficulty = "easy"
-branches = { inside = 1 }
-)", "test.toml");
+  const auto spec = ray_square_easy("branches = { inside = 1 }");
   epure::WorksheetSet sequential(spec, 21), parallel(spec, 21);
   int collided = 0;
   for (int i = 0; i < 400; ++i) {
@@ -145,12 +145,7 @@ TEST_CASE("a draw already taken comes back unbuilt, with the same identity, for 
 TEST_CASE("a set larger than a kind's usual ranges widens them instead of failing") {
   // ray_square at easy: Pythagorean directions and integer origins hold about 1,660 instances;
   // beyond that the data ranges widen (ExerciseContext::widening), and no instance repeats.
-  const auto spec = epure::parse_spec(R"(
-title = "Test"
-[[exercise]]
-kind = "ray_square"
-difficulty = "easy"
-)", "test.toml");
+  const auto spec = ray_square_easy();
   epure::WorksheetSet set(spec, 4);
   std::set<std::string> seen;
   bool widened = false;
