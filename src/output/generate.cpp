@@ -172,6 +172,9 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   if (set.next_index() != 0) throw std::logic_error("generate_set needs a fresh set");
   if (!options.students.empty() && options.students.size() != static_cast<std::size_t>(options.sheets))
     throw std::logic_error("generate_set: one sheet per student");
+  // The combs' widths (what the set's answers reach): drawn first, so that a set that cannot be
+  // drawn fails before anything is created on disk
+  set.measure_combs(options.sheets);
   if (options.svg || (options.pdf && options.split)) {
     fs::create_directories(options.out / "sheets");
     fs::create_directories(options.out / "keys");
@@ -198,7 +201,6 @@ GenerateReport generate_set(WorksheetSet& set, const GenerateOptions& options) {
   }
   const int slots = static_cast<int>(set.spec().exercises.size());
   GenerateReport report;
-  set.measure_combs(options.sheets);  // the combs' widths: what the set's answers reach
   // layout.json, where a scan looks, written from the sheets' pages as they come
   const bool laid_out = options.svg || options.pdf;
   std::optional<AtomicFile> layout_file;

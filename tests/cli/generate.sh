@@ -106,4 +106,11 @@ printf 'title = "x"\n[[exercise]]\nkind = "ray_torus"\n' > "$tmp/bad.toml"
 [ "$status" -eq 2 ] || fail "bad spec: exit $status, expected 2"
 grep -q "bad.toml:3:.*exercise\[1\].kind" "$tmp/err" || { cat "$tmp/err"; fail "bad spec message"; }
 "$EPURE" generate --sheets 0 --out "$tmp/zero" --quiet 2>/dev/null && fail "--sheets 0 accepted"
+# a set that cannot hold that many distinct sheets (the default course at easy runs the vectors'
+# branches out after 549): said, exit 2, and nothing created, not even the empty sheets/ and keys/
+# directories generate used to leave behind
+"$EPURE" generate --difficulty easy --sheets 550 --seed 11 --out "$tmp/full" --quiet 2> "$tmp/err"; status=$?
+[ "$status" -eq 2 ] || fail "a set too large for its branches: exit $status, expected 2"
+grep -q "run out of new instances after 549 sheets" "$tmp/err" || { cat "$tmp/err"; fail "a set too large: message"; }
+[ ! -e "$tmp/full" ] || fail "a set that cannot be drawn left $(ls -A "$tmp/full" | tr '\n' ' ')behind"
 echo "generate: ok"
