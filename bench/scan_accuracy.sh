@@ -9,13 +9,16 @@
 #
 # WORK_DIR keeps the stacks (made once, reused when present: to compare two binaries on the same
 # scans, run with the same WORK_DIR; EPURE=path overrides BUILD_DIR/epure for the scan).
+# SET_SEED (default 5) and STACK_SEED (default 40: the stacks' seeds are 41-44) make other stacks:
+# a second sample of the same kind, to confirm on scans a choice was not made on.
 set -eu
 build=$(cd "$1" && pwd); sheets=${2:-24}; work=${3:-$(mktemp -d)}
+set_seed=${SET_SEED:-5}; stack_seed=${STACK_SEED:-40}
 src=$(cd "$(dirname "$0")/.." && pwd)
 epure=${EPURE:-$build/epure}
 mkdir -p "$work"
 if [ ! -f "$work/set/key.json" ]; then
-  "$build/epure" generate --format pdf --sheets "$sheets" --seed 5 --lang fr --jobs 2 --quiet --out "$work/set"
+  "$build/epure" generate --format pdf --sheets "$sheets" --seed "$set_seed" --lang fr --jobs 2 --quiet --out "$work/set"
 fi
 i=0
 for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300" "png copier 150"; do
@@ -24,7 +27,7 @@ for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300"
   d=$work/s$i
   if [ ! -f "$d/truth.json" ]; then
     "$build/epure_scan_fixture" --key "$work/set/key.json" --set "$work/set" --out "$d" --sheets "$sheets" \
-      --format "$1" --degrade "$2" --dpi "$3" --seed $((40 + i)) ${4:-} >/dev/null
+      --format "$1" --degrade "$2" --dpi "$3" --seed $((stack_seed + i)) ${4:-} >/dev/null
   fi
   rm -rf "$d/out"
   "$epure" scan "$d"/scan* --key "$work/set/key.json" --layout "$d/layout.json" --out "$d/out" --jobs 2 -q 2>"$d/err" || [ $? = 1 ]
