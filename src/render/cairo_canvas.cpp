@@ -56,6 +56,7 @@ CairoCanvas::CairoCanvas(cairo_t* cr, PangoFontMap* fonts)
 }
 
 CairoCanvas::~CairoCanvas() {
+  flush_text();
   for (auto& [key, layout] : shaped_) g_object_unref(layout);
   for (LoadedFace& f : faces_) {
     if (f.face != nullptr) cairo_font_face_destroy(f.face);
@@ -71,13 +72,17 @@ void CairoCanvas::begin_group(std::string_view, std::string_view) {}
 void CairoCanvas::end_group() {}
 
 void CairoCanvas::push_clip(const Box& box) {
+  flush_text();
   cairo_save(cr_);
   cairo_new_path(cr_);
   cairo_rectangle(cr_, box.x_min, box.y_min, box.width(), box.height());
   cairo_clip(cr_);
 }
 
-void CairoCanvas::pop_clip() { cairo_restore(cr_); }
+void CairoCanvas::pop_clip() {
+  flush_text();
+  cairo_restore(cr_);
+}
 
 void CairoCanvas::fill_and_stroke(const Paint& paint) {
   if (paint.fill) {
@@ -101,6 +106,7 @@ void CairoCanvas::fill_and_stroke(const Paint& paint) {
 
 void CairoCanvas::path(const Path& path, const Paint& paint) {
   if (path.empty()) return;
+  flush_text();
   trace(cr_, path);
   fill_and_stroke(paint);
 }
@@ -127,6 +133,7 @@ cairo_status_t read_png_bytes(void* closure, unsigned char* data, unsigned int l
 // not lost for it (the reader, support/png_size.h, has already refused what is not a PNG).
 void CairoCanvas::image(const Raster& raster, const Box& box) {
   if (raster.empty()) return;
+  flush_text();
   PngBytes in{raster.png.get()};
   cairo_surface_t* png = cairo_image_surface_create_from_png_stream(read_png_bytes, &in);
   if (cairo_surface_status(png) == CAIRO_STATUS_SUCCESS) {
@@ -145,6 +152,7 @@ void CairoCanvas::image(const Raster& raster, const Box& box) {
 }
 
 void CairoCanvas::disc(P2 centre, double radius, const Paint& paint) {
+  flush_text();
   cairo_new_path(cr_);
   cairo_arc(cr_, centre.x, centre.y, radius, 0, 2 * 3.14159265358979323846);
   cairo_close_path(cr_);
@@ -198,13 +206,15 @@ CairoCanvas::LoadedFace& CairoCanvas::face(bool bold) {
   return f;
 }
 
-bool CairoCanvas::set_glyphs(const TextRun& run, double size, double x, double baseline) {
+bool CairoCanvas::set_glyphs(const TextRun& run, double size, double x, double baseline, Colour colour) {
   LoadedFace& f = face(run.bold);
   if (f.face == nullptr) return false;
+  // Another face, size or colour needs other operators first (Tf, rg): what is held is drawn.
+  // The size is compared exactly: any other value is another font matrix to cairo.
+  if (pending_.face != &f || pending_.size != size || pending_.colour != colour) flush_text();
   const std::string_view text = run.text;
   const Face face_kind = run.bold ? Face::bold : Face::regular;
-  glyph_buffer_.clear();
-  cluster_buffer_.clear();
+  const std::size_t held = pending_.glyphs.size();
   for (std::size_t i = 0; i < text.size();) {
     const utf8::Decoded d = utf8::decode(text, i);
     auto it = f.glyphs.find(d.cp);
@@ -221,20 +231,36 @@ bool CairoCanvas::set_glyphs(const TextRun& run, double size, double x, double b
       cairo_glyph_free(glyphs);
       it = f.glyphs.emplace(d.cp, index).first;
     }
-    if (it->second == 0) return false;
-    glyph_buffer_.push_back({it->second, x, baseline});
-    cluster_buffer_.push_back({static_cast<int>(d.length), 1});
+    if (it->second == 0) {  // this run goes to pango; what was held before it stays
+      pending_.glyphs.resize(held);
+      pending_.clusters.resize(held);
+      return false;
+    }
+    pending_.glyphs.push_back({it->second, x, baseline});
+    pending_.clusters.push_back({static_cast<int>(d.length), 1});
     x += advance_em(d.cp, face_kind) * size;
     i += d.length;
   }
-  cairo_set_font_face(cr_, f.face);
-  cairo_set_font_size(cr_, size);
-  cairo_set_font_options(cr_, font_options_);
-  // With the characters each glyph stands for: a PDF's text can be searched and copied.
-  cairo_show_text_glyphs(cr_, text.data(), static_cast<int>(text.size()), glyph_buffer_.data(),
-                         static_cast<int>(glyph_buffer_.size()), cluster_buffer_.data(),
-                         static_cast<int>(cluster_buffer_.size()), cairo_text_cluster_flags_t{});
+  pending_.face = &f;
+  pending_.size = size;
+  pending_.colour = colour;
+  pending_.utf8 += text;
   return true;
+}
+
+void CairoCanvas::flush_text() {
+  if (pending_.glyphs.empty()) return;
+  cairo_set_font_face(cr_, pending_.face->face);
+  cairo_set_font_size(cr_, pending_.size);
+  cairo_set_font_options(cr_, font_options_);
+  set_colour(cr_, pending_.colour);
+  // With the characters each glyph stands for: a PDF's text can be searched and copied.
+  cairo_show_text_glyphs(cr_, pending_.utf8.data(), static_cast<int>(pending_.utf8.size()), pending_.glyphs.data(),
+                         static_cast<int>(pending_.glyphs.size()), pending_.clusters.data(),
+                         static_cast<int>(pending_.clusters.size()), cairo_text_cluster_flags_t{});
+  pending_.utf8.clear();
+  pending_.glyphs.clear();
+  pending_.clusters.clear();
 }
 
 void CairoCanvas::text(const TextLine& line) {
@@ -244,12 +270,13 @@ void CairoCanvas::text(const TextLine& line) {
     const double width = text_width(line.runs, line.size);
     left -= line.anchor == Anchor::middle ? width / 2 : width;
   }
-  set_colour(cr_, line.colour);
   for (std::size_t i = 0; i < line.runs.size(); ++i) {
     const TextRun& run = line.runs[i];
     if (run.text.empty()) continue;
     const RunPlacement& p = placed[i];
-    if (set_glyphs(run, p.size, left + p.x, line.at.y - p.rise)) continue;
+    if (set_glyphs(run, p.size, left + p.x, line.at.y - p.rise, line.colour)) continue;
+    flush_text();
+    set_colour(cr_, line.colour);
     PangoLayout* layout = shaped(run, p.size);
     const double baseline = pango_layout_get_baseline(layout) / static_cast<double>(PANGO_SCALE);
     cairo_move_to(cr_, left + p.x, line.at.y - p.rise - baseline);

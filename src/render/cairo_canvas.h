@@ -42,6 +42,10 @@ class CairoCanvas final : public Canvas {
   void text(const TextLine& line) override;
   void image(const Raster& raster, const Box& box) override;
 
+  // Draws the text still held back (see pending_): before the page is shown or the surface read.
+  // Every other drawing call, and the destructor, does it first.
+  void flush_text();
+
   // The advance width pango sets `run` at, `size` points: font_metrics.h's widths must be these
   // (the tests compare them), or the PDF's text would not be where layout measured it.
   double set_width(const TextRun& run, double size);
@@ -49,9 +53,9 @@ class CairoCanvas final : public Canvas {
  private:
   void fill_and_stroke(const Paint& paint);
   PangoLayout* shaped(const TextRun& run, double size);
-  // A run set glyph by glyph at font_metrics.h's advances; false (nothing drawn) when the face
-  // lacks one of its characters, which pango then sets from a fallback font.
-  bool set_glyphs(const TextRun& run, double size, double x, double baseline);
+  // A run set glyph by glyph at font_metrics.h's advances, in `colour`; false (nothing drawn nor
+  // held) when the face lacks one of its characters, which pango then sets from a fallback font.
+  bool set_glyphs(const TextRun& run, double size, double x, double baseline, Colour colour);
 
   // DejaVu Sans (regular, bold) as pango chose it, and its glyph for each character met so far
   // (0: none). Text is set from these directly: shaping through pango costs more than all the
@@ -66,8 +70,22 @@ class CairoCanvas final : public Canvas {
   LoadedFace& face(bool bold);
   std::array<LoadedFace, 2> faces_;
   cairo_font_options_t* font_options_ = nullptr;
-  std::vector<cairo_glyph_t> glyph_buffer_;
-  std::vector<cairo_text_cluster_t> cluster_buffer_;
+
+  // Runs set but not drawn yet, all in one face, size and colour, drawn by one
+  // cairo_show_text_glyphs when the next run differs or anything else is drawn. cairo's PDF
+  // writer keeps a text object's glyphs across calls and writes the same operators whether
+  // glyphs came in one call or many; but each call costs, before a byte is written, a copy into
+  // cairo's recording of the page, an analysis pass over it, the glyphs' extents and the
+  // font's state twice over: about as much as setting the glyphs themselves.
+  struct PendingText {
+    const LoadedFace* face = nullptr;
+    double size = 0;
+    Colour colour;
+    std::string utf8;
+    std::vector<cairo_glyph_t> glyphs;
+    std::vector<cairo_text_cluster_t> clusters;
+  };
+  PendingText pending_;
 
   cairo_t* cr_;
   PangoContext* context_ = nullptr;

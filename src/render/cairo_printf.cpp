@@ -25,13 +25,20 @@ thread_local std::uint64_t fast_calls = 0;
 
 enum class NumberFormat { other, fixed_6, fixed_18, fixed_star, decimal_int };
 
+// Read character by character rather than compared with strcmp: this runs for every number of
+// every page, and all but a few of cairo's calls are one of these formats. (The && stop at
+// the format's end: nothing past its NUL is read.)
 NumberFormat classify(const char* format) {
   if (format[0] != '%') return NumberFormat::other;
-  if (std::strcmp(format + 1, "f") == 0) return NumberFormat::fixed_6;
-  if (std::strcmp(format + 1, ".*f") == 0) return NumberFormat::fixed_star;
-  if (std::strcmp(format + 1, ".18f") == 0) return NumberFormat::fixed_18;
-  if (std::strcmp(format + 1, "d") == 0) return NumberFormat::decimal_int;
-  return NumberFormat::other;
+  switch (format[1]) {
+    case 'f': return format[2] == '\0' ? NumberFormat::fixed_6 : NumberFormat::other;
+    case 'd': return format[2] == '\0' ? NumberFormat::decimal_int : NumberFormat::other;
+    case '.':
+      if (format[2] == '*' && format[3] == 'f' && format[4] == '\0') return NumberFormat::fixed_star;
+      if (format[2] == '1' && format[3] == '8' && format[4] == 'f' && format[5] == '\0') return NumberFormat::fixed_18;
+      return NumberFormat::other;
+    default: return NumberFormat::other;
+  }
 }
 
 // What printf would write for `format` and its one argument, or nullopt if it must write it.
@@ -72,13 +79,19 @@ extern "C" int __snprintf_chk(char* s, std::size_t maxlen, int flag, std::size_t
   const NumberFormat kind = classify(format);
   if (kind != NumberFormat::other && c_numbers()) {
     if (slen < maxlen) __chk_fail();  // as glibc's: the caller's buffer is smaller than it says
-    char text[fixed_decimal_max];
+    // Straight into the caller's buffer when the longest number and its NUL fit (cairo's is
+    // 512 bytes), else through a buffer of our own, cut as snprintf cuts.
+    char own[fixed_decimal_max];
+    const bool direct = maxlen > fixed_decimal_max;
+    char* text = direct ? s : own;
     va_list copy;
     va_copy(copy, args);
     const std::optional<std::size_t> length = format_number(kind, copy, text);
     va_end(copy);
     if (length) {
-      if (maxlen > 0) {
+      if (direct) {
+        s[*length] = '\0';
+      } else if (maxlen > 0) {
         const std::size_t kept = *length < maxlen ? *length : maxlen - 1;
         std::memcpy(s, text, kept);
         s[kept] = '\0';

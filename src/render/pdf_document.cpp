@@ -167,6 +167,7 @@ void PdfDocument::add(const std::vector<LaidOutPage>& pages, std::string_view la
       if (static_cast<std::size_t>(link.page) == i) on_page.push_back(link);
     stream_->writer.begin_page(pages_, page.size.height_pt, on_page);
     paint_page(*canvas_, page, style);
+    canvas_->flush_text();
     cairo_show_page(cr_);
     check_stream();
     stream_->writer.end_page();

@@ -1,5 +1,6 @@
 #include "render/pdf_document.h"
 
+#include <cairo-pdf.h>
 #include <cairo.h>
 #include <doctest/doctest.h>
 #include <pango/pangocairo.h>
@@ -197,6 +198,50 @@ TEST_CASE("pdf: text set glyph by glyph looks as pango sets it, and pango still 
     CHECK(total > 1000);             // something was drawn
     CHECK(differ * 50 < total / 255);  // and where pango draws it: antialiasing apart
   }
+}
+
+// The canvas holds runs of one face, size and colour back and draws them with one cairo call
+// (cairo_canvas.h, PendingText): cairo's PDF writer must then write the bytes it writes for a
+// call a line. If a cairo release wrote its text objects call by call, this fails, and the
+// holding back must go (the class sets would no longer be the same bytes as before it).
+TEST_CASE("pdf: text held back and drawn in one call writes the bytes of text drawn line by line") {
+  auto pdf = [](bool line_by_line) {
+    std::string bytes;
+    cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(
+        [](void* closure, const unsigned char* data, unsigned int length) {
+          static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+          return CAIRO_STATUS_SUCCESS;
+        },
+        &bytes, 595, 842);
+    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
+    cairo_t* cr = cairo_create(surface);
+    {
+      CairoCanvas canvas(cr);
+      // Plain, bold, a subscript (another size), accents, symbols, and a character DejaVu Sans
+      // lacks (pango's road, between held runs).
+      const std::vector<TextRun> runs[] = {
+          {{"Intersection d'un rayon ", Shift::none, false, false}, {"et d'un cercle", Shift::none, false, false}},
+          {{"Exercice 2 : ", Shift::none, false, true}, {"projection de C sur la droite", Shift::none, false, false}},
+          {{"t", Shift::none, false, false}, {"1", Shift::sub, false, false}, {" = 2,17 ≈ √(x² + y²)", Shift::none, false, false}},
+          {{"u∧v · t ≤ 1 → θ = −45° ", Shift::none, false, false}, {"中", Shift::none, false, false}, {" fin", Shift::none, false, false}},
+      };
+      Path box;
+      box.move_to({40, 0}).line_to({60, 0}).line_to({60, 10}).close();
+      for (int i = 0; i < 48; ++i) {
+        const Colour colour = i % 6 == 5 ? Colour{200, 0, 0} : Colour{0, 0, 0};
+        canvas.text(TextLine{{50, 40 + 15.0 * i}, Anchor::start, i % 8 == 0 ? 12.0 : 10.0, runs[i % 4], colour});
+        if (line_by_line) canvas.flush_text();
+        if (i % 9 == 4) canvas.path(box, Paint{std::nullopt, Colour{0, 0, 200}, 1});
+      }
+    }
+    cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    cairo_surface_destroy(surface);
+    return bytes;
+  };
+  const std::string held = pdf(false);
+  CHECK(held.size() > 2000);
+  CHECK(held == pdf(true));
 }
 
 TEST_CASE("png: a page and a scene drawn as PNG images of the asked size") {
