@@ -1,4 +1,5 @@
 #include "render/cairo_deflate.h"
+#include "pdf_surface_into.h"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -43,12 +44,7 @@ std::string inflated(const std::string& bytes) {
 TEST_CASE("cairo_deflate: cairo's PDF streams are compressed at the fast level, other levels as asked") {
   const std::uint64_t before = cairo_deflate_streams();
   std::string pdf;
-  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(
-      [](void* closure, const unsigned char* data, unsigned int length) {
-        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-        return CAIRO_STATUS_SUCCESS;
-      },
-      &pdf, 200, 200);
+  cairo_surface_t* surface = test::pdf_surface_into(pdf, 200, 200);
   cairo_pdf_surface_restrict_to_version(surface, CAIRO_PDF_VERSION_1_5);
   cairo_t* cr = cairo_create(surface);
   for (int i = 0; i < 3000; ++i) {  // a content stream long enough for the levels to differ

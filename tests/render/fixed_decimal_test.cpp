@@ -1,4 +1,5 @@
 #include "render/fixed_decimal.h"
+#include "pdf_surface_into.h"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -93,12 +94,7 @@ TEST_CASE("fixed_decimal: what glibc's %.*f writes") {
 TEST_CASE("cairo_printf: cairo's numbers reach the fast path, other formats reach glibc") {
   const std::uint64_t before = cairo_printf_fast_calls();
   std::string pdf;
-  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(
-      [](void* closure, const unsigned char* data, unsigned int length) {
-        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-        return CAIRO_STATUS_SUCCESS;
-      },
-      &pdf, 100, 100);
+  cairo_surface_t* surface = test::pdf_surface_into(pdf, 100, 100);
   cairo_pdf_surface_restrict_to_version(surface, CAIRO_PDF_VERSION_1_5);
   cairo_t* cr = cairo_create(surface);
   cairo_move_to(cr, 10.125, 20.0625);

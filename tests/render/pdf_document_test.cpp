@@ -1,4 +1,5 @@
 #include "render/pdf_document.h"
+#include "pdf_surface_into.h"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -207,12 +208,7 @@ TEST_CASE("pdf: text set glyph by glyph looks as pango sets it, and pango still 
 TEST_CASE("pdf: text held back and drawn in one call writes the bytes of text drawn line by line") {
   auto pdf = [](bool line_by_line) {
     std::string bytes;
-    cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(
-        [](void* closure, const unsigned char* data, unsigned int length) {
-          static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-          return CAIRO_STATUS_SUCCESS;
-        },
-        &bytes, 595, 842);
+    cairo_surface_t* surface = test::pdf_surface_into(bytes, 595, 842);
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
     cairo_t* cr = cairo_create(surface);
     {
