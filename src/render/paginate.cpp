@@ -100,7 +100,10 @@ bool Paginator::fits(double h) const { return y_ + h <= bottom_ + kFitSlack; }
 // every combination of these choices is tried on the atoms' shapes, and the one that gives the
 // fewest pages, none of them but the last less than half full, is set; on a tie, the
 // page-by-page choice. Each section with a fallback is a bit of the choice mask (set: take the
-// fallback when its opening does not fit).
+// fallback when its opening does not fit). A trial reads only the bits of the sections whose
+// opening did not fit where it came; a mask that agrees with an earlier trial's on the bits that
+// trial read would replay it step for step, so its pages are that trial's, not flowed again (a
+// key with 6 fallbacks flows a handful of its 64 masks).
 void Paginator::choose_fallbacks() {
   fallback_mask_ = ~std::uint32_t{0};
   fallback_bit_.clear();
@@ -111,14 +114,27 @@ void Paginator::choose_fallbacks() {
   std::vector<Atom> shapes;
   shapes.reserve(atoms_.size());
   for (const Atom& a : atoms_) shapes.push_back(shape(a));
+  struct Trial {
+    std::uint32_t mask = 0, read = 0;  // read: the bits the flow looked at
+    std::size_t pages = 0;
+    bool filled = false;  // no page but the last less than kMinPageFill full
+  };
+  std::vector<Trial> trials;
+  const auto trial = [&](std::uint32_t mask) -> Trial {
+    for (const Trial& t : trials)
+      if (((mask ^ t.mask) & t.read) == 0) return t;
+    Trial t{mask, 0, trial_pages(mask, shapes), false};
+    t.read = bits_read_;
+    t.filled = std::all_of(dry_fills_.begin(), dry_fills_.end(), [](double f) { return f >= kMinPageFill; });
+    return trials.emplace_back(t);
+  };
   const std::uint32_t all = (std::uint32_t{1} << bit) - 1;
-  std::size_t best_pages = trial_pages(all, shapes);
+  std::size_t best_pages = trial(all).pages;
   std::uint32_t best = all;
   for (std::uint32_t mask = all; mask-- > 0;) {
-    const std::size_t pages = trial_pages(mask, shapes);
-    const bool filled = std::all_of(dry_fills_.begin(), dry_fills_.end(), [](double f) { return f >= kMinPageFill; });
-    if (pages < best_pages && filled) {
-      best_pages = pages;
+    const Trial t = trial(mask);
+    if (t.pages < best_pages && t.filled) {
+      best_pages = t.pages;
       best = mask;
     }
   }
@@ -132,6 +148,7 @@ std::size_t Paginator::trial_pages(std::uint32_t mask, const std::vector<Atom>& 
   std::swap(atoms_, copies);
   const bool dry = dry_;
   fallback_mask_ = mask;
+  bits_read_ = 0;
   dry_ = true;
   dry_pages_ = 0;
   dry_fills_.clear();
@@ -204,8 +221,10 @@ void Paginator::open_section(std::size_t i, double space) {
     const bool little_left = bottom_ - y_ <= kMaxOpeningWaste * (bottom_ - top_);
     std::size_t head_end = std::min(i + atoms_[i].head_atoms, end);
     const auto bit = fallback_bit_.find(si);
+    const bool open = !fits(space + span(i, head_end)) && !little_left;
+    if (open && bit != fallback_bit_.end()) bits_read_ |= std::uint32_t{1} << bit->second;
     const bool chosen = bit == fallback_bit_.end() || ((fallback_mask_ >> bit->second) & 1) != 0;
-    if (!fits(space + span(i, head_end)) && !little_left && chosen) {
+    if (open && chosen) {
       std::vector<Atom> other = dry_ ? shapes->second : fallbacks_->build(si);
       atoms_.erase(atoms_.begin() + static_cast<std::ptrdiff_t>(i), atoms_.begin() + static_cast<std::ptrdiff_t>(end));
       const std::size_t n = other.size();

@@ -56,6 +56,7 @@ class Paginator {
   const Fallbacks* fallbacks_ = nullptr;
   std::map<int, std::uint32_t> fallback_bit_;    // a fallback's bit in a choice mask
   std::uint32_t fallback_mask_ = ~std::uint32_t{0};  // set: the fallback is taken (see choose_fallbacks)
+  std::uint32_t bits_read_ = 0;  // the mask's bits a flow looked at (choose_fallbacks)
   bool dry_ = false;                // counting pages only (count, trial_pages)
   std::size_t dry_pages_ = 0;
   std::vector<double> dry_fills_;   // a trial's pages but the last: the share of the text height used
