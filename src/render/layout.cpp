@@ -87,6 +87,16 @@ class DocumentLayout {
     return it->second;
   }
 
+  // A section's fallback (no paragraph beside a figure) as shapes at a level, made once: the
+  // count of the page budget and the pages built ask for the same ones.
+  const std::vector<Atom>& fallback_shapes(int si, int level) {
+    auto key = std::pair{si, level};
+    auto it = fallback_shapes_.find(key);
+    if (it == fallback_shapes_.end())
+      it = fallback_shapes_.emplace(key, sections_.section(si, scale(level), true, false).atoms).first;
+    return it->second;
+  }
+
   // The fallbacks of the sections (with paragraphs beside a figure) at their levels: shapes, and
   // how to build one.
   Fallbacks fallbacks(const std::vector<int>& levels, const std::vector<bool>& side_used) {
@@ -95,7 +105,7 @@ class DocumentLayout {
     for (std::size_t si = 0; si < levels.size(); ++si) {
       if (!side_used[si]) continue;
       const int s = static_cast<int>(si);
-      f.shapes.emplace(s, sections_.section(s, scale(levels[si]), true, false).atoms);
+      f.shapes.emplace(s, fallback_shapes(s, levels[si]));
     }
     f.build = [this, levels](int s) {
       return sections_.section(s, scale(levels[static_cast<std::size_t>(s)]), false, false).atoms;
@@ -144,6 +154,7 @@ class DocumentLayout {
   Paginator paginator_;
   std::vector<double> scales_;  // below full size, largest first
   std::map<std::pair<int, int>, SectionAtoms::Built> shapes_;
+  std::map<std::pair<int, int>, std::vector<Atom>> fallback_shapes_;
   std::optional<std::vector<Atom>> opening_;  // its shapes
 };
 
