@@ -4,6 +4,7 @@
 // lengths they share. Not a public header: backends see LaidOutPage only.
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,12 +37,31 @@ inline std::vector<TextRun> plain(std::string text, bool bold = false) {
 
 // Everything one atom puts on the page; x in page coordinates, y from the atom's top.
 struct Fragment {
-  std::vector<PlacedBox> boxes;
-  std::vector<PlacedRule> rules;
-  std::vector<PlacedFigure> figures;
-  std::vector<PlacedText> texts;
-  std::vector<PlacedQr> codes;
-  std::vector<PlacedImage> images;
+  // The marks themselves live on the heap, made when the first is kept: a shape (an option
+  // measured, a page count) keeps none, and the layout makes, copies, moves and drops ten times
+  // as many shapes as atoms it puts on pages; six empty vectors in each cost more than one
+  // pointer.
+  struct Marks {
+    std::vector<PlacedBox> boxes;
+    std::vector<PlacedRule> rules;
+    std::vector<PlacedFigure> figures;
+    std::vector<PlacedText> texts;
+    std::vector<PlacedQr> codes;
+    std::vector<PlacedImage> images;
+  };
+  // Copied whole with its atom (a row remembered and replayed), as the vectors were.
+  struct MarksPtr {
+    std::unique_ptr<Marks> p;
+    MarksPtr() = default;
+    MarksPtr(const MarksPtr& o) : p(o.p ? std::make_unique<Marks>(*o.p) : nullptr) {}
+    MarksPtr& operator=(const MarksPtr& o) {
+      if (this != &o) p = o.p ? std::make_unique<Marks>(*o.p) : nullptr;
+      return *this;
+    }
+    MarksPtr(MarksPtr&&) noexcept = default;
+    MarksPtr& operator=(MarksPtr&&) noexcept = default;
+  };
+  MarksPtr marks;
   // A layout option only measured (its height, whether it fits a column) keeps no text: the
   // options tried for a figure and its neighbours would otherwise copy every run of every line
   // again for each one. What the fit test needs of the texts is kept as two extents.
@@ -51,27 +71,32 @@ struct Fragment {
   double muted_left = 1e300;        // the left end of the first muted text (a question id)
   double box_right_edge = -1e300;   // the right end of the furthest box
 
+  Marks& kept() {
+    if (!marks.p) marks.p = std::make_unique<Marks>();
+    return *marks.p;
+  }
+
   void image(PlacedImage i) {
-    if (keep_texts) images.push_back(std::move(i));
+    if (keep_texts) kept().images.push_back(std::move(i));
   }
 
   // (a shape's rows, remembered and replayed many times, then copy no rule either)
   void rule(const PlacedRule& r) {
-    if (keep_texts) rules.push_back(r);
+    if (keep_texts) kept().rules.push_back(r);
   }
 
   void box(PlacedBox b) {
     box_right_edge = std::max(box_right_edge, b.rect.right());
-    if (keep_texts) boxes.push_back(std::move(b));
+    if (keep_texts) kept().boxes.push_back(std::move(b));
   }
 
   void text(const std::vector<TextRun>& runs, double x, double baseline, double size, Ink ink = Ink::text) {
     note_extent(runs, x, size, ink);
-    if (keep_texts) texts.push_back({{x, baseline}, size, runs, ink});
+    if (keep_texts) kept().texts.push_back({{x, baseline}, size, runs, ink});
   }
   void text(std::vector<TextRun>&& runs, double x, double baseline, double size, Ink ink = Ink::text) {
     note_extent(runs, x, size, ink);
-    if (keep_texts) texts.push_back({{x, baseline}, size, std::move(runs), ink});
+    if (keep_texts) kept().texts.push_back({{x, baseline}, size, std::move(runs), ink});
   }
   // Right-aligned on `right`.
   void text_right(std::vector<TextRun> runs, double right, double baseline, double size, Ink ink) {
@@ -81,7 +106,7 @@ struct Fragment {
     } else {
       text_right_edge = std::max(text_right_edge, right);
     }
-    if (keep_texts) texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
+    if (keep_texts) kept().texts.push_back({{right - width, baseline}, size, std::move(runs), ink});
   }
   void note_extent(const std::vector<TextRun>& runs, double x, double size, Ink ink) {
     if (!track_extents) return;
@@ -92,57 +117,62 @@ struct Fragment {
     }
   }
 
-  // Appends `other`'s content, moved down by dy.
+  // Appends `other`'s content, moved down by dy (not its QR codes: a column holds none).
   void append(Fragment&& other, double dy) {
-    for (auto& b : other.boxes) {
-      b.rect.y += dy;
-      boxes.push_back(std::move(b));
-    }
-    for (auto& r : other.rules) {
-      r.a.y += dy;
-      r.b.y += dy;
-      rules.push_back(r);
-    }
-    for (auto& f : other.figures) {
-      f.rect.y += dy;
-      figures.push_back(f);
-    }
-    for (auto& t : other.texts) {
-      t.baseline.y += dy;
-      texts.push_back(std::move(t));
-    }
-    for (auto& i : other.images) {
-      i.rect.y += dy;
-      images.push_back(std::move(i));
-    }
     text_right_edge = std::max(text_right_edge, other.text_right_edge);
     box_right_edge = std::max(box_right_edge, other.box_right_edge);
     muted_left = std::min(muted_left, other.muted_left);
+    if (!other.marks.p) return;
+    Marks& from = *other.marks.p;
+    Marks& to = kept();
+    for (auto& b : from.boxes) {
+      b.rect.y += dy;
+      to.boxes.push_back(std::move(b));
+    }
+    for (auto& r : from.rules) {
+      r.a.y += dy;
+      r.b.y += dy;
+      to.rules.push_back(r);
+    }
+    for (auto& f : from.figures) {
+      f.rect.y += dy;
+      to.figures.push_back(f);
+    }
+    for (auto& t : from.texts) {
+      t.baseline.y += dy;
+      to.texts.push_back(std::move(t));
+    }
+    for (auto& i : from.images) {
+      i.rect.y += dy;
+      to.images.push_back(std::move(i));
+    }
   }
 
   void move_into(LaidOutPage& page, double dy) {
-    for (auto& b : boxes) {
+    if (!marks.p) return;
+    Marks& m = *marks.p;
+    for (auto& b : m.boxes) {
       b.rect.y += dy;
       page.boxes.push_back(std::move(b));
     }
-    for (auto& r : rules) {
+    for (auto& r : m.rules) {
       r.a.y += dy;
       r.b.y += dy;
       page.rules.push_back(r);
     }
-    for (auto& f : figures) {
+    for (auto& f : m.figures) {
       f.rect.y += dy;
       page.figures.push_back(f);
     }
-    for (auto& t : texts) {
+    for (auto& t : m.texts) {
       t.baseline.y += dy;
       page.texts.push_back(std::move(t));
     }
-    for (auto& q : codes) {
+    for (auto& q : m.codes) {
       q.rect.y += dy;
       page.codes.push_back(std::move(q));
     }
-    for (auto& i : images) {
+    for (auto& i : m.images) {
       i.rect.y += dy;
       page.images.push_back(std::move(i));
     }

@@ -51,15 +51,15 @@ Atom name_row(const Document& doc, const LayoutStyle& s, const TextArea& area) {
                      "student_number", {}, false, 0});
     const double number_x = comb_x - kWritingLineGap - number_w;
     a.content.text(std::move(name), left, baseline, size);
-    a.content.rules.push_back({{left + name_w + kWritingLineGap, line_y}, {number_x - kHeaderGap, line_y}, 0.6, Ink::text});
+    a.content.kept().rules.push_back({{left + name_w + kWritingLineGap, line_y}, {number_x - kHeaderGap, line_y}, 0.6, Ink::text});
     a.content.text(std::move(number), number_x, baseline, size);
     return a;
   }
   const double split = left + (area.right - left) * kNameShare;
   a.content.text(std::move(name), left, baseline, size);
-  a.content.rules.push_back({{left + name_w + kWritingLineGap, line_y}, {split - kHeaderGap, line_y}, 0.6, Ink::text});
+  a.content.kept().rules.push_back({{left + name_w + kWritingLineGap, line_y}, {split - kHeaderGap, line_y}, 0.6, Ink::text});
   a.content.text(std::move(number), split, baseline, size);
-  a.content.rules.push_back({{split + number_w + kWritingLineGap, line_y}, {area.right, line_y}, 0.6, Ink::text});
+  a.content.kept().rules.push_back({{split + number_w + kWritingLineGap, line_y}, {area.right, line_y}, 0.6, Ink::text});
   return a;
 }
 
@@ -105,7 +105,7 @@ void add_header(LaidOutPage& page, const Document& doc, const LayoutStyle& s, co
   f.text(std::move(title), area.left, first, title_size);
   f.text(std::move(course), area.left, second, course_size, Ink::muted);
   const double rule_y = top + s.header_height;
-  f.rules.push_back({{area.left, rule_y}, {doc.page_code ? right + 2 : right, rule_y}, 0.6, Ink::muted});
+  f.kept().rules.push_back({{area.left, rule_y}, {doc.page_code ? right + 2 : right, rule_y}, 0.6, Ink::muted});
 
   // The header goes first, so that it is also first in every list of the page.
   LaidOutPage head;

@@ -513,7 +513,7 @@ bool SectionAtoms::beside(int si, int bi, const Figure& f, bool follows_paragrap
     y += side[k].height;
   }
   a.height = std::max(h, y);
-  if (!shapes_) a.content.figures.push_back({{left_, 0, w, h}, &f.scene});
+  if (!shapes_) a.content.kept().figures.push_back({{left_, 0, w, h}, &f.scene});
   push(std::move(a));
   after_figure_ = true;
   return true;
@@ -528,7 +528,7 @@ void SectionAtoms::figure(int si, int bi, const Figure& f, bool follows_paragrap
   a.height = h;
   a.break_before = !follows_paragraph;
   a.figure = true;
-  if (!shapes_) a.content.figures.push_back({{left_ + (width_ - w) / 2, 0, w, h}, &f.scene});
+  if (!shapes_) a.content.kept().figures.push_back({{left_ + (width_ - w) / 2, 0, w, h}, &f.scene});
   push(std::move(a));
   after_figure_ = true;
 }
