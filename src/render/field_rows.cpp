@@ -135,7 +135,8 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
     // before the decimals.
     auto box = [&](double x, double w, std::string value) {
       if (!comb) {
-        a.content.box({{x, 0, w, bh}, BoxKind::answer, f.question_id, std::move(value)});
+        const PageRect rect{x, 0, w, bh};
+        a.content.box(rect, [&] { return PlacedBox{rect, BoxKind::answer, f.question_id, std::move(value)}; });
         return;
       }
       const int n = 1 + f.integer_cells + f.decimals;
@@ -146,8 +147,8 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
           glyph(doc_.decimal_separator, x + (s_.comb_separator_gap - sep_w) / 2);
           x += s_.comb_separator_gap;
         }
-        a.content.box({{x, top, s_.comb_cell_width, s_.comb_cell_height}, BoxKind::cell, f.question_id, value, true,
-                       f.decimals});
+        const PageRect rect{x, top, s_.comb_cell_width, s_.comb_cell_height};
+        a.content.box(rect, [&] { return PlacedBox{rect, BoxKind::cell, f.question_id, value, true, f.decimals}; });
         x += s_.comb_cell_width;
       }
     };
@@ -268,8 +269,10 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
       }
       const double top = ticks_top + static_cast<double>(row) * s_.tick_row_height;
       const double ty = top + (s_.tick_row_height - s_.tick_size) / 2;
-      a.content.box({{x, ty, s_.tick_size, s_.tick_size}, BoxKind::tick, f.question_id,
-                     std::move(options[i].second), false, 0, f.kind == K::faces});
+      const PageRect rect{x, ty, s_.tick_size, s_.tick_size};
+      a.content.box(rect, [&] {
+        return PlacedBox{rect, BoxKind::tick, f.question_id, std::move(options[i].second), false, 0, f.kind == K::faces};
+      });
       a.content.text(std::move(labels[i]), x + s_.tick_size + kTickGap, top + baseline, size);
     }
     body_h = ticks_top + static_cast<double>(grid.rows) * s_.tick_row_height;

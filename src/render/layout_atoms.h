@@ -89,6 +89,13 @@ struct Fragment {
     box_right_edge = std::max(box_right_edge, b.rect.right());
     if (keep_texts) kept().boxes.push_back(std::move(b));
   }
+  // The box `make()` gives, at `rect`, made only when kept: a shape notes how far it reaches
+  // without copying its question id and value (a comb is a box a cell, each with both).
+  template <class Make>
+  void box(const PageRect& rect, Make&& make) {
+    box_right_edge = std::max(box_right_edge, rect.right());
+    if (keep_texts) kept().boxes.push_back(make());
+  }
 
   void text(const std::vector<TextRun>& runs, double x, double baseline, double size, Ink ink = Ink::text) {
     note_extent(runs, x, size, ink);
