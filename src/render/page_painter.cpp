@@ -36,6 +36,16 @@ void paint_shade(Canvas& canvas, const PageRect& rect, const PageStyle& style) {
   canvas.path(rectangle(bar), Paint{std::nullopt, style.shade_bar, 1});
 }
 
+// A code's modules with a ring of light ones around them, a byte each, row by row ((n + 2)²):
+// paint_qr's edge scan reads every module eight times, without bounds tests or bit extraction.
+std::vector<std::uint8_t> padded_modules(const QrCode& code) {
+  const int n = code.size, padded = n + 2;
+  std::vector<std::uint8_t> grid(static_cast<std::size_t>(padded * padded), 0);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) grid[static_cast<std::size_t>((y + 1) * padded + x + 1)] = code.dark(x, y) ? 1 : 0;
+  return grid;
+}
+
 // The dark modules as one path: the outlines of the dark regions, a corner a point. Each region
 // is traced clockwise (on the page, y down) and each light hole inside one anticlockwise, so
 // the nonzero fill paints exactly the dark modules, with no seam between neighbours at any zoom.
@@ -48,7 +58,10 @@ void paint_qr(Canvas& canvas, const PlacedQr& qr, const PageStyle& style) {
   const int n = code.size;
   const double module = qr.rect.width / (n + 2 * kQrQuietZone);
   const double x0 = qr.rect.x + module * kQrQuietZone, y0 = qr.rect.y + module * kQrQuietZone;
-  const auto dark = [&](int x, int y) { return x >= 0 && y >= 0 && x < n && y < n && code.dark(x, y); };
+  const int padded = n + 2;
+  const std::vector<std::uint8_t> grid = padded_modules(code);
+  // (-1 <= x, y <= n)
+  const auto dark = [&](int x, int y) { return grid[static_cast<std::size_t>((y + 1) * padded + x + 1)] != 0; };
   // The outline's edges, one module long, leaving each grid corner (x, y) (0 <= x, y <= n), the
   // dark side on their right: a bit per direction (right, down, left, up). A corner where two
   // dark modules touch diagonally has two.
