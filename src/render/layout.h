@@ -125,17 +125,21 @@ struct PlacedBlock {
   int block = -1;
 };
 
-struct LaidOutPage {
-  int number = 1;  // 1-based
-  int count = 1;   // pages in the document
-  PageSize size;
-  // Backends draw boxes, then rules, figures and texts, so that shades lie under the text.
+// What a page shows, mark by mark (the layout's atoms carry the same lists, layout_atoms.h).
+// Backends draw boxes, then rules, figures and texts, so that shades lie under the text.
+struct PageMarks {
   std::vector<PlacedBox> boxes;
   std::vector<PlacedRule> rules;
   std::vector<PlacedFigure> figures;
   std::vector<PlacedText> texts;
   std::vector<PlacedQr> codes;
   std::vector<PlacedImage> images;
+};
+
+struct LaidOutPage : PageMarks {
+  int number = 1;  // 1-based
+  int count = 1;   // pages in the document
+  PageSize size;
   std::vector<PlacedBlock> blocks;
   // The corner marks (solid squares) a scan registers the page on: top-left, top-right,
   // bottom-right, bottom-left; empty for a page without scan furniture.

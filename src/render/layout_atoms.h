@@ -41,14 +41,7 @@ struct Fragment {
   // measured, a page count) keeps none, and the layout makes, copies, moves and drops ten times
   // as many shapes as atoms it puts on pages; six empty vectors in each cost more than one
   // pointer.
-  struct Marks {
-    std::vector<PlacedBox> boxes;
-    std::vector<PlacedRule> rules;
-    std::vector<PlacedFigure> figures;
-    std::vector<PlacedText> texts;
-    std::vector<PlacedQr> codes;
-    std::vector<PlacedImage> images;
-  };
+  using Marks = PageMarks;
   // Copied whole with its atom (a row remembered and replayed), as the vectors were.
   struct MarksPtr {
     std::unique_ptr<Marks> p;
@@ -129,9 +122,16 @@ struct Fragment {
     text_right_edge = std::max(text_right_edge, other.text_right_edge);
     box_right_edge = std::max(box_right_edge, other.box_right_edge);
     muted_left = std::min(muted_left, other.muted_left);
-    if (!other.marks.p) return;
-    Marks& from = *other.marks.p;
-    Marks& to = kept();
+    if (other.marks.p) move_marks(*other.marks.p, kept(), dy, false);
+  }
+
+  void move_into(LaidOutPage& page, double dy) {
+    if (marks.p) move_marks(*marks.p, page, dy, true);
+  }
+
+ private:
+  // Each of `from`'s marks moved down by dy, to the end of its list in `to`.
+  static void move_marks(Marks& from, PageMarks& to, double dy, bool codes) {
     for (auto& b : from.boxes) {
       b.rect.y += dy;
       to.boxes.push_back(std::move(b));
@@ -149,39 +149,14 @@ struct Fragment {
       t.baseline.y += dy;
       to.texts.push_back(std::move(t));
     }
+    if (codes)
+      for (auto& q : from.codes) {
+        q.rect.y += dy;
+        to.codes.push_back(std::move(q));
+      }
     for (auto& i : from.images) {
       i.rect.y += dy;
       to.images.push_back(std::move(i));
-    }
-  }
-
-  void move_into(LaidOutPage& page, double dy) {
-    if (!marks.p) return;
-    Marks& m = *marks.p;
-    for (auto& b : m.boxes) {
-      b.rect.y += dy;
-      page.boxes.push_back(std::move(b));
-    }
-    for (auto& r : m.rules) {
-      r.a.y += dy;
-      r.b.y += dy;
-      page.rules.push_back(r);
-    }
-    for (auto& f : m.figures) {
-      f.rect.y += dy;
-      page.figures.push_back(f);
-    }
-    for (auto& t : m.texts) {
-      t.baseline.y += dy;
-      page.texts.push_back(std::move(t));
-    }
-    for (auto& q : m.codes) {
-      q.rect.y += dy;
-      page.codes.push_back(std::move(q));
-    }
-    for (auto& i : m.images) {
-      i.rect.y += dy;
-      page.images.push_back(std::move(i));
     }
   }
 };
