@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 
 #include "render/svg_writer.h"
 
@@ -40,13 +41,18 @@ int numbers_length(const std::array<long long, N>& values) {
   return length;
 }
 
+// Written backwards into a buffer, the last number first, and appended in one piece.
 template <std::size_t N>
 void write_command(std::string& d, char letter, const std::array<long long, N>& values) {
-  d += letter;
-  for (std::size_t i = 0; i < N; ++i) {
-    if (i > 0 && values[i] >= 0) d += ' ';
-    append_scaled(d, values[i], kDecimals);
+  char buf[1 + N * (kScaledRoom + 1)];
+  char* const end = std::end(buf);
+  char* p = end;
+  for (std::size_t i = N; i-- > 0;) {
+    p = scaled_before(p, values[i], kDecimals);
+    if (i > 0 && values[i] >= 0) *--p = ' ';
   }
+  *--p = letter;
+  d.append(p, static_cast<std::size_t>(end - p));
 }
 
 // The shorter of a command's absolute and relative forms (absolute on a tie: the choice depends

@@ -51,17 +51,16 @@ bool round_scaled(double v, int decimals, long long& n) {
   return true;
 }
 
-void append_scaled(std::string& out, long long n, int decimals) {
+char* scaled_before(char* end, long long n, int decimals) {
+  char* p = end;
   if (n == 0) {
-    out += '0';
-    return;
+    *--p = '0';
+    return p;
   }
   // Numbers are most of an SVG's bytes: the digits are written backwards into a buffer instead
   // of going through a general float conversion, the integer part two digits at a time (a
   // page's coordinates have three).
   unsigned long long m = n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
-  char buf[32];
-  char* p = std::end(buf);
   int d = 0;
   if (decimals == 2) {  // the usual case, without a loop: "", ".d" or ".dd"
     const unsigned long long hundredths = m % 100;
@@ -93,7 +92,14 @@ void append_scaled(std::string& out, long long n, int decimals) {
     *--p = static_cast<char>('0' + m);
   }
   if (n < 0) *--p = '-';
-  out.append(p, static_cast<std::size_t>(std::end(buf) - p));
+  return p;
+}
+
+void append_scaled(std::string& out, long long n, int decimals) {
+  char buf[kScaledRoom];
+  char* const end = std::end(buf);
+  const char* p = scaled_before(end, n, decimals);
+  out.append(p, static_cast<std::size_t>(end - p));
 }
 
 void append_number(std::string& out, double v, int decimals) {
@@ -256,6 +262,25 @@ void SvgWriter::plain_attribute(std::string_view name, std::string_view value) {
 }
 
 void SvgWriter::attribute(std::string_view name, double value) {
+  // ` name="value"` in one append for a usual name and number (a page writes hundreds of
+  // them), else piece by piece; the same bytes either way.
+  constexpr std::size_t kNameRoom = 32;
+  long long n = 0;
+  if (opening_.empty()) throw std::logic_error("SVG writer: an attribute outside a start tag");
+  if (name.size() <= kNameRoom && round_scaled(value, 2, n)) {
+    char buf[kNameRoom + 4 + kScaledRoom];
+    char* const end = std::end(buf);
+    end[-1] = '"';
+    char* p = scaled_before(end - 1, n, 2);
+    p -= 2;
+    p[0] = '=';
+    p[1] = '"';
+    p -= name.size();
+    std::memcpy(p, name.data(), name.size());
+    *--p = ' ';
+    out_.append(p, static_cast<std::size_t>(end - p));
+    return;
+  }
   attribute_name(name);
   append_number(out_, value);
   out_ += '"';

@@ -27,6 +27,11 @@ void append_number(std::string& out, double v, int decimals = 2);
 // when `v` is too large for the fast form: write it with append_number), and such a count's text.
 bool round_scaled(double v, int decimals, long long& n);
 void append_scaled(std::string& out, long long n, int decimals);
+// append_scaled's text written to end just before `end`, for a writer that puts several pieces
+// in one append; returns where it starts. It takes at most kScaledRoom bytes (a count below
+// 10^18: a sign, 19 digits and a point).
+inline constexpr std::size_t kScaledRoom = 24;
+char* scaled_before(char* end, long long n, int decimals);
 
 // (append_escaped, the escaping of its text and attribute values: render/markup_escape.h)
 

@@ -173,6 +173,24 @@ TEST_CASE("SvgWriter: the streamed form writes what the list form writes") {
   }
 }
 
+TEST_CASE("SvgWriter: a number attribute is ` name=\"` format_number `\"`, short or long, near or far") {
+  // The writer puts a usual name and number in one append and falls back to piece by piece for
+  // a long name or a number beyond the fast form: the same bytes either way.
+  epure::Rng rng(7, 3);
+  const std::string long_name(40, 'n');
+  for (int i = 0; i < 20000; ++i) {
+    const double v = (rng.uniform() - 0.5) * std::pow(10.0, static_cast<double>(rng.integer(-3, 15)));
+    const std::string name = i % 5 == 0 ? long_name : std::string(static_cast<std::size_t>(rng.integer(1, 32)), 'a');
+    CAPTURE(v);
+    CAPTURE(name);
+    SvgWriter w;
+    w.open("g");
+    w.attribute(name, v);
+    w.close_empty();
+    CHECK(w.finish() == "<g " + name + "=\"" + format_number(v) + "\"/>\n");
+  }
+}
+
 TEST_CASE("format_number: rounds half away from zero, as llround of the scaled value, over random values") {
   // The reference: the plain way (llround of v·10^d, then the integer and its decimals), which
   // the writer's digit loop must match byte for byte, halves and near-halves included.
