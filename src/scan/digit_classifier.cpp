@@ -14,13 +14,29 @@ namespace {
 // The largest layer a weights file may declare: a bound on what a damaged or foreign file makes
 // us allocate, far above any network worth running per cell.
 constexpr std::uint32_t kMaxWidth = 1024;
-constexpr std::size_t kHeader = 28;  // "EPDG", version, count, the four widths
+constexpr std::size_t kHeader = 28;  // "EPDG", version 2, count, the four widths
+constexpr std::size_t kHeader4 = 32;  // "EPDG", version 4, count, depth, the four widths
+// The most convolutions a stage may hold in a version-4 file.
+constexpr std::uint32_t kMaxDepth = 3;
 // The most networks a version-3 file may hold: each costs a forward pass per cell.
 constexpr std::uint32_t kMaxMembers = 8;
 
+// The stages' widths in order, each `depth` times: the convolutions a shape declares.
+std::vector<std::uint32_t> conv_widths(const NetShape& s) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t width : {s.conv1, s.conv2, s.conv3})
+    for (std::uint32_t k = 0; k < s.depth; ++k) out.push_back(width);
+  return out;
+}
+
 std::size_t weight_count(const NetShape& s) {
-  const std::size_t c1 = s.conv1, c2 = s.conv2, c3 = s.conv3, h = s.hidden;
-  return c1 * 9 + c1 + c2 * c1 * 9 + c2 + c3 * c2 * 9 + c3 + h * c3 * 9 + h + kClassCount * h + kClassCount;
+  std::size_t n = 0, cin = 1;
+  for (std::size_t c : conv_widths(s)) {
+    n += c * cin * 9 + c;
+    cin = c;
+  }
+  const std::size_t h = s.hidden;
+  return n + h * cin * 9 + h + kClassCount * h + kClassCount;
 }
 
 std::uint32_t read_u32(std::string_view b, std::size_t at) {
@@ -30,8 +46,8 @@ std::uint32_t read_u32(std::string_view b, std::size_t at) {
          static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 3])) << 24;
 }
 
-// A 3x3 convolution with a padding of 1, then ReLU, then a 2x2 max pool (floor): `in` is
-// cin planes of side n, `out` cout planes of side n / 2.
+// A 3x3 convolution with a padding of 1, then ReLU, then (when `pool`) a 2x2 max pool (floor):
+// `in` is cin planes of side n, `out` cout planes of side n / 2 (n without the pool).
 //
 // The input's 3x3 neighbourhoods are laid out first (im2col: row k = 9 i + 3 ky + kx holds input
 // plane i shifted by (kx - 1, ky - 1), zeros past the border), so that each output plane is
@@ -40,7 +56,7 @@ std::uint32_t read_u32(std::string_view b, std::size_t at) {
 // pixel still sums its bias, then its terms in the order i, ky, kx, each rounded in turn: the
 // padding's terms add a zero, which leaves a sum as it was, so the logits are the same bits as
 // a direct convolution's (and the same on every machine).
-void conv_relu_pool(const float* in, int cin, int n, const float* w, const float* b, int cout, float* out) {
+void conv_relu(const float* in, int cin, int n, const float* w, const float* b, int cout, bool pool, float* out) {
   const std::size_t area = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   const std::size_t taps = static_cast<std::size_t>(cin) * 9;
   std::vector<float> col(taps * area, 0.0f);
@@ -57,51 +73,112 @@ void conv_relu_pool(const float* in, int cin, int n, const float* w, const float
         }
       }
   }
-  std::vector<float> plane(area);
+  // The products as a small matrix product, out[o][p] = b[o] + Σ_t k[o][t]·col[t][p], four
+  // output planes by eight pixels at a time: their 32 sums stay in registers over all the taps
+  // and each tap's eight inputs are loaded once for the four planes (one plane at a time, every
+  // multiply-add loaded and stored its sum). Each sum still starts from its bias and adds its
+  // terms in tap order, rounded in turn: the same bits as before and as a direct convolution.
+  constexpr int kPlanes = 4;
+  constexpr std::size_t kPixels = 8;
+  std::vector<float> planes(static_cast<std::size_t>(cout) * area);
+  for (int o0 = 0; o0 < cout; o0 += kPlanes) {
+    const int no = std::min(kPlanes, cout - o0);
+    for (std::size_t p0 = 0; p0 < area; p0 += kPixels) {
+      const std::size_t np = std::min(kPixels, area - p0);
+      if (no == kPlanes && np == kPixels) {
+        // GCC's and Clang's vector types (elementwise IEEE arithmetic, no contraction): the
+        // compiler keeps the eight accumulators in registers, which it did not for arrays
+        typedef float Lanes __attribute__((vector_size(16)));
+        Lanes acc[kPlanes][2];
+        for (int j = 0; j < kPlanes; ++j) acc[j][0] = acc[j][1] = Lanes{} + b[o0 + j];
+        const float* k0 = w + static_cast<std::ptrdiff_t>(o0) * static_cast<std::ptrdiff_t>(taps);
+        for (std::size_t t = 0; t < taps; ++t) {
+          const float* c = col.data() + t * area + p0;
+          Lanes lo, hi;
+          std::memcpy(&lo, c, sizeof lo);
+          std::memcpy(&hi, c + 4, sizeof hi);
+          for (int j = 0; j < kPlanes; ++j) {
+            const float kv = k0[static_cast<std::size_t>(j) * taps + t];
+            acc[j][0] += kv * lo;
+            acc[j][1] += kv * hi;
+          }
+        }
+        for (int j = 0; j < kPlanes; ++j)
+          std::memcpy(planes.data() + static_cast<std::size_t>(o0 + j) * area + p0, acc[j], sizeof acc[j]);
+      } else {  // the edges: fewer planes or pixels left than a block, a sum at a time in a register
+        for (int j = 0; j < no; ++j) {
+          float* pl = planes.data() + static_cast<std::size_t>(o0 + j) * area + p0;
+          const float* k = w + static_cast<std::ptrdiff_t>(o0 + j) * static_cast<std::ptrdiff_t>(taps);
+          for (std::size_t q = 0; q < np; ++q) {
+            float sum = b[o0 + j];
+            for (std::size_t t = 0; t < taps; ++t) sum += k[t] * col[t * area + p0 + q];
+            pl[q] = sum;
+          }
+        }
+      }
+    }
+  }
   const int half = n / 2;
   for (int o = 0; o < cout; ++o) {
-    std::fill(plane.begin(), plane.end(), b[o]);
-    const float* k = w + static_cast<std::ptrdiff_t>(o) * static_cast<std::ptrdiff_t>(taps);
-    for (std::size_t t = 0; t < taps; ++t) {
-      const float kv = k[t];
-      const float* c = col.data() + t * area;
-      float* pl = plane.data();
-      for (std::size_t p = 0; p < area; ++p) pl[p] += kv * c[p];
+    const float* plane = planes.data() + static_cast<std::size_t>(o) * area;
+    if (!pool) {
+      float* dst = out + static_cast<std::ptrdiff_t>(o) * static_cast<std::ptrdiff_t>(area);
+      for (std::size_t p = 0; p < area; ++p) dst[p] = std::max(plane[p], 0.0f);
+      continue;
     }
     float* dst = out + static_cast<std::ptrdiff_t>(o) * half * half;
     for (int y = 0; y < half; ++y)
       for (int x = 0; x < half; ++x) {
-        const float* p = plane.data() + static_cast<std::ptrdiff_t>(2 * y) * n + 2 * x;
+        const float* p = plane + static_cast<std::ptrdiff_t>(2 * y) * n + 2 * x;
         const float m = std::max(std::max(p[0], p[1]), std::max(p[n], p[n + 1]));
         dst[y * half + x] = std::max(m, 0.0f);  // ReLU and max commute
       }
   }
 }
 
-// One network from a version-2 file's bytes (exactly those: a member of a version-3 file is
-// handed its own span).
+// One network from a version-2 or version-4 file's bytes (exactly those: a member of a version-3
+// file is handed its own span).
 DigitNetwork read_network(std::string_view b) {
-  if (b.size() < kHeader || b.substr(0, 4) != "EPDG" || read_u32(b, 4) != 2)
-    throw std::runtime_error("digit classifier: not a version-2 or 3 weights file (EPDG)");
+  const std::uint32_t version = b.size() >= 8 && b.substr(0, 4) == "EPDG" ? read_u32(b, 4) : 0;
+  const std::size_t header = version == 4 ? kHeader4 : kHeader;
+  if ((version != 2 && version != 4) || b.size() < header)
+    throw std::runtime_error("digit classifier: not a version-2, 3 or 4 weights file (EPDG)");
   DigitNetwork net;
   const std::uint32_t count = read_u32(b, 8);
-  net.shape = {read_u32(b, 12), read_u32(b, 16), read_u32(b, 20), read_u32(b, 24)};
+  const std::size_t widths = version == 4 ? 16 : 12;
+  net.shape = {read_u32(b, widths), read_u32(b, widths + 4), read_u32(b, widths + 8), read_u32(b, widths + 12), version == 4 ? read_u32(b, 12) : 1};
+  if (net.shape.depth == 0 || net.shape.depth > kMaxDepth)
+    throw std::runtime_error("digit classifier: the weights file declares no or too many convolutions a stage");
   for (std::uint32_t width : {net.shape.conv1, net.shape.conv2, net.shape.conv3, net.shape.hidden})
     if (width == 0 || width > kMaxWidth) throw std::runtime_error("digit classifier: the weights file declares a layer of no or too many units");
-  if (count != weight_count(net.shape) || b.size() != kHeader + 4 * static_cast<std::size_t>(count))
+  if (count != weight_count(net.shape) || b.size() != header + 4 * static_cast<std::size_t>(count))
     throw std::runtime_error("digit classifier: the weights file's size is not its network's");
   net.w.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t bits = read_u32(b, kHeader + 4 * i);
+    const std::uint32_t bits = read_u32(b, header + 4 * i);
     std::memcpy(&net.w[i], &bits, 4);
   }
-  const std::size_t c1 = net.shape.conv1, c2 = net.shape.conv2, c3 = net.shape.conv3, h = net.shape.hidden;
   std::size_t at = 0;
   auto take = [&](std::size_t n) { const std::size_t here = at; at += n; return here; };
-  net.conv1_w = take(c1 * 9); net.conv1_b = take(c1);
-  net.conv2_w = take(c2 * c1 * 9); net.conv2_b = take(c2);
-  net.conv3_w = take(c3 * c2 * 9); net.conv3_b = take(c3);
+  const std::vector<std::uint32_t> convs = conv_widths(net.shape);
+  int cin = 1;
+  for (std::size_t i = 0; i < convs.size(); ++i) {
+    ConvLayer layer;
+    layer.cin = cin;
+    layer.cout = static_cast<int>(convs[i]);
+    layer.w = take(static_cast<std::size_t>(layer.cout) * static_cast<std::size_t>(cin) * 9);
+    layer.b = take(static_cast<std::size_t>(layer.cout));
+    layer.pool = (i + 1) % net.shape.depth == 0;  // a stage's last convolution
+    net.convs.push_back(layer);
+    cin = layer.cout;
+  }
+  const std::size_t h = net.shape.hidden, c3 = net.shape.conv3;
   net.fc1_w = take(h * c3 * 9); net.fc1_b = take(h);
+  // fc1's weights by input, then by hidden unit (see logits)
+  const std::size_t flat = c3 * 9;
+  net.fc1_by_input.resize(h * flat);
+  for (std::size_t j = 0; j < h; ++j)
+    for (std::size_t i = 0; i < flat; ++i) net.fc1_by_input[i * h + j] = net.w[net.fc1_w + j * flat + i];
   net.fc2_w = take(kClassCount * h); net.fc2_b = take(kClassCount);
   return net;
 }
@@ -122,7 +199,8 @@ DigitClassifier::DigitClassifier(std::string_view b) {
     for (std::uint32_t i = 0; i < n; ++i) {
       // each member's size from its own header, read only once that header is there
       const std::string_view rest = b.substr(at);
-      const std::size_t size = rest.size() >= kHeader ? kHeader + 4 * static_cast<std::size_t>(read_u32(rest, 8)) : rest.size();
+      const std::size_t header = rest.size() >= 8 && read_u32(rest, 4) == 4 ? kHeader4 : kHeader;
+      const std::size_t size = rest.size() >= header ? header + 4 * static_cast<std::size_t>(read_u32(rest, 8)) : rest.size();
       nets_.push_back(read_network(rest.substr(0, std::min(size, rest.size()))));
       at += size;
     }
@@ -144,19 +222,46 @@ const DigitClassifier& DigitClassifier::builtin() {
 std::array<float, kClassCount> DigitClassifier::logits(std::size_t member, const CellCrop& crop) const {
   const DigitNetwork& n = nets_.at(member);
   const std::vector<float>& w = n.w;
-  const int c1 = static_cast<int>(n.shape.conv1), c2 = static_cast<int>(n.shape.conv2), c3 = static_cast<int>(n.shape.conv3);
   const std::size_t hidden = n.shape.hidden;
-  std::array<float, kCropSide * kCropSide> in;
-  for (std::size_t i = 0; i < in.size(); ++i) in[i] = static_cast<float>(crop[i]) / 255.0f;
-  std::vector<float> a1(static_cast<std::size_t>(c1) * 14 * 14), a2(static_cast<std::size_t>(c2) * 7 * 7),
-      a3(static_cast<std::size_t>(c3) * 3 * 3), h(hidden);
-  conv_relu_pool(in.data(), 1, 28, &w[n.conv1_w], &w[n.conv1_b], c1, a1.data());
-  conv_relu_pool(a1.data(), c1, 14, &w[n.conv2_w], &w[n.conv2_b], c2, a2.data());
-  conv_relu_pool(a2.data(), c2, 7, &w[n.conv3_w], &w[n.conv3_b], c3, a3.data());
-  for (std::size_t j = 0; j < hidden; ++j) {
+  // the activations between layers, in two buffers used in turn
+  std::vector<float> a(static_cast<std::size_t>(kCropSide) * kCropSide), next, h(hidden);
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<float>(crop[i]) / 255.0f;
+  int side = kCropSide;
+  for (const ConvLayer& c : n.convs) {
+    const int out_side = c.pool ? side / 2 : side;
+    next.assign(static_cast<std::size_t>(c.cout) * static_cast<std::size_t>(out_side) * static_cast<std::size_t>(out_side), 0.0f);
+    conv_relu(a.data(), c.cin, side, &w[c.w], &w[c.b], c.cout, c.pool, next.data());
+    std::swap(a, next);
+    side = out_side;
+  }
+  const std::vector<float>& a3 = a;  // conv3 planes of 3 x 3
+  // The hidden layer: each unit's sum is one long chain of additions (1,152 terms), so eight units
+  // are summed side by side, from fc1's weights laid out by input: the additions of one unit
+  // wait on each other, not on those of the next. Each sum keeps its order, so its bits.
+  const std::size_t flat = a3.size();
+  std::size_t j0 = 0;
+  for (; j0 + 8 <= hidden; j0 += 8) {
+    typedef float Lanes __attribute__((vector_size(16)));
+    Lanes lo, hi;
+    std::memcpy(&lo, &w[n.fc1_b + j0], sizeof lo);
+    std::memcpy(&hi, &w[n.fc1_b + j0 + 4], sizeof hi);
+    for (std::size_t i = 0; i < flat; ++i) {
+      const float* k = &n.fc1_by_input[i * hidden + j0];
+      Lanes klo, khi;
+      std::memcpy(&klo, k, sizeof klo);
+      std::memcpy(&khi, k + 4, sizeof khi);
+      lo += klo * a3[i];
+      hi += khi * a3[i];
+    }
+    for (std::size_t q = 0; q < 4; ++q) {
+      h[j0 + q] = std::max(lo[q], 0.0f);
+      h[j0 + 4 + q] = std::max(hi[q], 0.0f);
+    }
+  }
+  for (std::size_t j = j0; j < hidden; ++j) {
     float s = w[n.fc1_b + j];
-    const float* row = &w[n.fc1_w + j * a3.size()];
-    for (std::size_t i = 0; i < a3.size(); ++i) s += row[i] * a3[i];
+    const float* row = &w[n.fc1_w + j * flat];
+    for (std::size_t i = 0; i < flat; ++i) s += row[i] * a3[i];
     h[j] = std::max(s, 0.0f);
   }
   std::array<float, kClassCount> out;

@@ -1,5 +1,5 @@
 #pragma once
-// The comb-cell classifier: three small convolutional networks whose probabilities are averaged
+// The comb-cell classifier: small convolutional networks whose probabilities are averaged
 // (train_digits.py beside it in classifier/ trains them on the mnist package's handwritten digits
 // and writes their weights), reading one cell's crop as a digit 0-9, a minus sign or an empty
 // cell.
@@ -36,17 +36,29 @@ struct CellReading {
 // The character a class stands for: '0'-'9', '-', or ' ' for empty.
 char class_char(CellClass c);
 
-// The network's widths, as the weights file declares them: three 3x3 convolutions (each followed
-// by ReLU and a 2x2 max pool: 28 -> 14 -> 7 -> 3), a hidden layer, the 12 classes.
+// The network's widths, as the weights file declares them: three stages of `depth` 3x3
+// convolutions of one width each (each followed by ReLU; a stage ends with a 2x2 max pool:
+// 28 -> 14 -> 7 -> 3), a hidden layer, the 12 classes.
 struct NetShape {
   std::uint32_t conv1 = 0, conv2 = 0, conv3 = 0, hidden = 0;
+  std::uint32_t depth = 1;  // convolutions a stage (a version-2 file's: 1)
+};
+
+// One 3x3 convolution of a network (padding 1, then ReLU), where its weights and biases start in
+// the network's floats, and whether a 2x2 max pool follows it.
+struct ConvLayer {
+  std::size_t w = 0, b = 0;
+  int cin = 0, cout = 0;
+  bool pool = false;
 };
 
 // One trained network: its widths and every layer's weights and biases, in the file's order.
 struct DigitNetwork {
   NetShape shape;
   std::vector<float> w;
-  std::size_t conv1_w, conv1_b, conv2_w, conv2_b, conv3_w, conv3_b, fc1_w, fc1_b, fc2_w, fc2_b;
+  std::vector<ConvLayer> convs;
+  std::size_t fc1_w, fc1_b, fc2_w, fc2_b;
+  std::vector<float> fc1_by_input;  // fc1's weights again, input by input (hidden units side by side)
 };
 
 // A deep ensemble: several networks of one architecture trained from other seeds (or other
@@ -56,12 +68,16 @@ struct DigitNetwork {
 class DigitClassifier {
  public:
   // The weights file's bytes, version 3: "EPDG", u32 version 3, u32 member count (1 to 8), then
-  // each member as a version-2 file: "EPDG", u32 version 2, u32 count, u32 conv1, conv2, conv3 and
-  // hidden widths, then count float32 (all little endian): conv1 weights (conv1 x 1 x 3 x 3) and
-  // biases, conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's (hidden x conv3·9), fc2's
-  // (12 x hidden). A version-2 file alone is read as a one-network ensemble. Throws
-  // std::runtime_error when the bytes are not that (version 1, the first network's 16-32-64-64
-  // with no widths in the header, is no longer read).
+  // each member as a version-2 or version-4 file. Version 2: "EPDG", u32 version 2, u32 count, u32
+  // conv1, conv2, conv3 and hidden widths, then count float32 (all little endian): conv1 weights
+  // (conv1 x 1 x 3 x 3) and biases, conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's
+  // (hidden x conv3·9), fc2's (12 x hidden). Version 4, stages of several convolutions: "EPDG",
+  // u32 version 4, u32 count, u32 depth (1 to 3), the four widths, then each stage's
+  // convolutions in order (the first from the stage before, conv1 x 1 x 3 x 3 for the first
+  // stage, the others conv1 x conv1 x 3 x 3), then fc1 and fc2 as in version 2. A version-2 or
+  // version-4 file alone is read as a one-network ensemble. Throws std::runtime_error when the
+  // bytes are not that (version 1, the first network's 16-32-64-64 with no widths in the header,
+  // is no longer read).
   explicit DigitClassifier(std::string_view weights);
   // The networks epure carries (classifier/digits.weights, compiled in).
   static const DigitClassifier& builtin();

@@ -86,8 +86,8 @@ std::string biased_network(const std::array<float, kClassCount>& bias) {
 TEST_CASE("digit classifier: a weights file of another version or size is refused") {
   // version 1 (the first network's file, no widths in its header)
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(1) + u32(61004) + std::string(16, '\0')),
-                       "digit classifier: not a version-2 or 3 weights file (EPDG)", std::runtime_error);
-  CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(2)), "digit classifier: not a version-2 or 3 weights file (EPDG)", std::runtime_error);
+                       "digit classifier: not a version-2, 3 or 4 weights file (EPDG)", std::runtime_error);
+  CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(2)), "digit classifier: not a version-2, 3 or 4 weights file (EPDG)", std::runtime_error);
   // a width of zero or past the bound, before any allocation
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(2) + u32(0) + u32(1) + u32(0) + u32(1) + u32(1)),
                        "digit classifier: the weights file declares a layer of no or too many units", std::runtime_error);
@@ -134,12 +134,12 @@ TEST_CASE("digit classifier: a version-3 file's members are read in turn and the
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(3) + u32(2) + net + net.substr(0, net.size() - 4)),
                        "digit classifier: the weights file's size is not its network's", std::runtime_error);
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(3) + u32(2) + net + net.substr(0, 20)),
-                       "digit classifier: not a version-2 or 3 weights file (EPDG)", std::runtime_error);
+                       "digit classifier: not a version-2, 3 or 4 weights file (EPDG)", std::runtime_error);
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(3) + u32(1) + net + "x"), "digit classifier: the weights file's size is not its networks'",
                        std::runtime_error);
   // a member is a version-2 network, not another ensemble
   CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(3) + u32(1) + "EPDG" + u32(3) + u32(1) + net),
-                       "digit classifier: not a version-2 or 3 weights file (EPDG)", std::runtime_error);
+                       "digit classifier: not a version-2, 3 or 4 weights file (EPDG)", std::runtime_error);
 }
 
 TEST_CASE("digit classifier: the networks carried are the ones train_digits.py describes") {
@@ -153,4 +153,130 @@ TEST_CASE("digit classifier: the networks carried are the ones train_digits.py d
     CHECK(s.conv3 == 128);
     CHECK(s.hidden == 128);
   }
+}
+
+namespace {
+// A version-4 file (stages of `depth` convolutions) of the given widths and floats.
+std::string version4(std::uint32_t depth, std::array<std::uint32_t, 4> widths, const std::vector<float>& w) {
+  std::string b = "EPDG" + u32(4) + u32(static_cast<std::uint32_t>(w.size())) + u32(depth);
+  for (std::uint32_t x : widths) b += u32(x);
+  for (float v : w) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    b += u32(bits);
+  }
+  return b;
+}
+
+// The logits of a network of `depth` convolutions a stage, computed the plain way: each output
+// pixel summed over its 3x3 neighbourhood in double, a pool after a stage's last convolution.
+// An independent reading of the file's layout, to check the classifier's im2col forward pass.
+std::array<double, kClassCount> plain_logits(std::uint32_t depth, std::array<std::uint32_t, 4> widths, const std::vector<float>& w,
+                                             const CellCrop& crop) {
+  std::size_t at = 0;
+  int side = kCropSide, cin = 1;
+  std::vector<double> a(crop.size());
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<float>(crop[i]) / 255.0f;
+  for (int stage = 0; stage < 3; ++stage)
+    for (std::uint32_t k = 0; k < depth; ++k) {
+      const int cout = static_cast<int>(widths[static_cast<std::size_t>(stage)]);
+      const std::size_t wk = at, bk = at + static_cast<std::size_t>(cout * cin * 9);
+      at = bk + static_cast<std::size_t>(cout);
+      std::vector<double> out(static_cast<std::size_t>(cout * side * side));
+      for (int o = 0; o < cout; ++o)
+        for (int y = 0; y < side; ++y)
+          for (int x = 0; x < side; ++x) {
+            double s = w[bk + static_cast<std::size_t>(o)];
+            for (int i = 0; i < cin; ++i)
+              for (int ky = 0; ky < 3; ++ky)
+                for (int kx = 0; kx < 3; ++kx) {
+                  const int sy = y + ky - 1, sx = x + kx - 1;
+                  if (sy < 0 || sy >= side || sx < 0 || sx >= side) continue;
+                  s += w[wk + static_cast<std::size_t>(((o * cin + i) * 3 + ky) * 3 + kx)] * a[static_cast<std::size_t>((i * side + sy) * side + sx)];
+                }
+            out[static_cast<std::size_t>((o * side + y) * side + x)] = std::max(s, 0.0);
+          }
+      a = out;
+      cin = cout;
+      if (k + 1 == depth) {  // the stage's 2x2 max pool (floor)
+        const int half = side / 2;
+        std::vector<double> p(static_cast<std::size_t>(cout * half * half));
+        for (int o = 0; o < cout; ++o)
+          for (int y = 0; y < half; ++y)
+            for (int x = 0; x < half; ++x) {
+              auto v = [&](int dy, int dx) { return a[static_cast<std::size_t>((o * side + 2 * y + dy) * side + 2 * x + dx)]; };
+              p[static_cast<std::size_t>((o * half + y) * half + x)] = std::max(std::max(v(0, 0), v(0, 1)), std::max(v(1, 0), v(1, 1)));
+            }
+        a = p;
+        side = half;
+      }
+    }
+  const std::size_t hidden = widths[3], flat = a.size();
+  std::vector<double> h(hidden);
+  const std::size_t f1 = at, b1 = f1 + hidden * flat, f2 = b1 + hidden, b2 = f2 + kClassCount * hidden;
+  for (std::size_t j = 0; j < hidden; ++j) {
+    double s = w[b1 + j];
+    for (std::size_t i = 0; i < flat; ++i) s += w[f1 + j * flat + i] * a[i];
+    h[j] = std::max(s, 0.0);
+  }
+  std::array<double, kClassCount> z;
+  for (std::size_t c = 0; c < kClassCount; ++c) {
+    double s = w[b2 + c];
+    for (std::size_t i = 0; i < hidden; ++i) s += w[f2 + c * hidden + i] * h[i];
+    z[c] = s;
+  }
+  return z;
+}
+}  // namespace
+
+TEST_CASE("digit classifier: a version-4 network (stages of several convolutions) reads as a plain convolution does") {
+  const std::array<std::uint32_t, 4> widths{3, 4, 5, 6};
+  std::uint64_t state = 20261206;  // a fixed LCG: the same weights on every machine
+  auto next = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<float>(static_cast<double>(state >> 40) / static_cast<double>(1ULL << 24) - 0.5);
+  };
+  CellCrop crop;
+  for (auto& v : crop) v = static_cast<std::uint8_t>(static_cast<int>((next() + 0.5f) * 255.0f) & 0xff);
+  for (std::uint32_t depth : {1u, 2u, 3u}) {
+    CAPTURE(depth);
+    std::size_t count = 0, cin = 1;
+    for (std::uint32_t s = 0; s < 3; ++s)
+      for (std::uint32_t k = 0; k < depth; ++k) {
+        count += widths[s] * cin * 9 + widths[s];
+        cin = widths[s];
+      }
+    count += widths[3] * cin * 9 + widths[3] + kClassCount * widths[3] + kClassCount;
+    std::vector<float> w(count);
+    for (auto& v : w) v = next();
+    const DigitClassifier net(version4(depth, widths, w));
+    REQUIRE(net.members() == 1);
+    CHECK(net.shape(0).depth == depth);
+    const auto z = net.logits(0, crop);
+    const auto expected = plain_logits(depth, widths, w, crop);
+    for (std::size_t k = 0; k < kClassCount; ++k) CHECK(z[k] == doctest::Approx(expected[k]).epsilon(1e-4).scale(1.0));
+    if (depth == 1) {
+      // a depth-1 version-4 file is the version-2 file of the same floats
+      std::string v2 = "EPDG" + u32(2) + u32(static_cast<std::uint32_t>(count));
+      for (std::uint32_t x : widths) v2 += u32(x);
+      v2 += version4(depth, widths, w).substr(32);
+      const auto z2 = DigitClassifier(v2).logits(0, crop);
+      CHECK(std::equal(z.begin(), z.end(), z2.begin()));
+    }
+    // in an ensemble beside a version-2 member
+    const DigitClassifier both("EPDG" + u32(3) + u32(2) + version4(depth, widths, w) + biased_network({}));
+    CHECK(both.shape(0).depth == depth);
+    CHECK(both.shape(1).depth == 1);
+    const auto zb = both.logits(0, crop);
+    CHECK(std::equal(z.begin(), z.end(), zb.begin()));
+  }
+  // a depth of 0 or past the bound, a size not the depth's network
+  CHECK_THROWS_WITH_AS(DigitClassifier(version4(0, widths, {})), "digit classifier: the weights file declares no or too many convolutions a stage",
+                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(DigitClassifier(version4(4, widths, {})), "digit classifier: the weights file declares no or too many convolutions a stage",
+                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(DigitClassifier(version4(2, {1, 1, 1, 1}, std::vector<float>(64))),
+                       "digit classifier: the weights file's size is not its network's", std::runtime_error);
+  CHECK_THROWS_WITH_AS(DigitClassifier("EPDG" + u32(4) + u32(0) + u32(1)), "digit classifier: not a version-2, 3 or 4 weights file (EPDG)",
+                       std::runtime_error);
 }

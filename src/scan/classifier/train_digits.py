@@ -156,44 +156,61 @@ BILEVEL = 0.2             # share of samples scanned bilevel (--bilevel; tried: 
 BILEVEL_RELATIVE = False  # the bilevel threshold at 0.25-0.75 of the pen's ink, not 0.25-0.45 absolute
 DROPOUT = 0.3             # before the last layer (--dropout; tried: 0.1)
 SHAPE = (32, 64, 128, 128)  # conv1, conv2, conv3 channels, hidden units
+DEPTH = 1                 # convolutions a stage (--depth)
 
 
 class Net(nn.Module):
-    """conv 3x3 -> batch norm -> ReLU -> max pool 2, three times, then two linear layers. Batch
-    norm helps the training; for inference it is folded into the convolutions (export)."""
+    """Three stages of `depth` 3x3 convolutions (each followed by batch norm and ReLU; a stage ends
+    with a 2x2 max pool), then two linear layers. Batch norm helps the training; for inference it
+    is folded into the convolutions (export)."""
 
-    def __init__(self, shape=SHAPE):
+    def __init__(self, shape=SHAPE, depth=None):
         super().__init__()
         c1, c2, c3, hidden = shape
         self.shape = shape
-        self.conv1 = nn.Conv2d(1, c1, 3, padding=1)
-        self.bn1 = nn.BatchNorm2d(c1)
-        self.conv2 = nn.Conv2d(c1, c2, 3, padding=1)
-        self.bn2 = nn.BatchNorm2d(c2)
-        self.conv3 = nn.Conv2d(c2, c3, 3, padding=1)
-        self.bn3 = nn.BatchNorm2d(c3)
+        self.depth = DEPTH if depth is None else depth
+        # created convolution, batch norm, convolution, ... as the first network was (conv1, bn1,
+        # conv2, ...): a depth-1 network draws the same initial weights from a seed as it did
+        self.convs, self.bns = nn.ModuleList(), nn.ModuleList()
+        cin = 1
+        for c in (c1, c2, c3):
+            for _ in range(self.depth):
+                self.convs.append(nn.Conv2d(cin, c, 3, padding=1))
+                self.bns.append(nn.BatchNorm2d(c))
+                cin = c
         self.fc1 = nn.Linear(c3 * 3 * 3, hidden)
         self.fc2 = nn.Linear(hidden, len(CLASSES))
         self.drop = nn.Dropout(DROPOUT)
 
     def forward(self, x):
-        x = F.max_pool2d(F.relu(self.bn1(self.conv1(x))), 2)   # 14
-        x = F.max_pool2d(F.relu(self.bn2(self.conv2(x))), 2)   # 7
-        x = F.max_pool2d(F.relu(self.bn3(self.conv3(x))), 2)   # 3 (floor, as the C++ does)
+        for i, (conv, bn) in enumerate(zip(self.convs, self.bns)):
+            x = F.relu(bn(conv(x)))
+            if (i + 1) % self.depth == 0:
+                x = F.max_pool2d(x, 2)   # 28 -> 14 -> 7 -> 3 (floor, as the C++ does)
         x = self.drop(F.relu(self.fc1(x.flatten(1))))
         return self.fc2(x)
+
+
+def conv_sizes(shape, depth):
+    """Each convolution's (out, in) channels, stage by stage."""
+    out, cin = [], 1
+    for c in shape[:3]:
+        for _ in range(depth):
+            out.append((c, cin))
+            cin = c
+    return out
 
 
 class FoldedNet(nn.Module):
     """A network as a weights file holds it (batch norm folded into the convolutions): what the
     C++ runs, for --combine's held-out figures and digits.check."""
 
-    def __init__(self, shape, flat):
+    def __init__(self, shape, flat, depth=1):
         super().__init__()
-        c1, c2, c3, hidden = shape
-        self.shape = tuple(shape)
-        sizes = [(c1, 1, 3, 3), (c1,), (c2, c1, 3, 3), (c2,), (c3, c2, 3, 3), (c3,),
-                 (hidden, c3 * 9), (hidden,), (len(CLASSES), hidden), (len(CLASSES),)]
+        hidden, c3 = shape[3], shape[2]
+        self.shape, self.depth = tuple(shape), depth
+        sizes = [s for co, ci in conv_sizes(shape, depth) for s in ((co, ci, 3, 3), (co,))]
+        sizes += [(hidden, c3 * 9), (hidden,), (len(CLASSES), hidden), (len(CLASSES),)]
         self.t, at = [], 0
         for size in sizes:
             n = math.prod(size)
@@ -202,20 +219,22 @@ class FoldedNet(nn.Module):
         assert at == flat.numel()
 
     def forward(self, x):
-        w1, b1, w2, b2, w3, b3, f1, g1, f2, g2 = self.t
-        x = F.max_pool2d(F.relu(F.conv2d(x, w1, b1, padding=1)), 2)
-        x = F.max_pool2d(F.relu(F.conv2d(x, w2, b2, padding=1)), 2)
-        x = F.max_pool2d(F.relu(F.conv2d(x, w3, b3, padding=1)), 2)
+        convs = len(self.t) - 4
+        for i in range(0, convs, 2):
+            x = F.relu(F.conv2d(x, self.t[i], self.t[i + 1], padding=1))
+            if (i // 2 + 1) % self.depth == 0:
+                x = F.max_pool2d(x, 2)
+        f1, g1, f2, g2 = self.t[convs:]
         return F.linear(F.relu(F.linear(x.flatten(1), f1, g1)), f2, g2)
 
 
 def read_weights(path):
-    """The networks of a weights file: one (version 2) or several (version 3)."""
+    """The networks of a weights file: one (version 2 or 4) or several (version 3)."""
     return read_weights_data(open(path, "rb").read(), path)
 
 
 def read_weights_bytes(data):
-    """The one network of a version-2 file's bytes."""
+    """The one network of a version-2 or 4 file's bytes."""
     return read_weights_data(data, "network")[0]
 
 
@@ -223,10 +242,11 @@ def read_weights_data(data, path):
 
     def one(b):
         magic, version, count = struct.unpack_from("<4sII", b, 0)
-        assert magic == b"EPDG" and version == 2, f"{path}: not a version-2 network"
-        shape = struct.unpack_from("<4I", b, 12)
-        flat = torch.tensor(struct.unpack_from(f"<{count}f", b, 28), dtype=torch.float32)
-        return FoldedNet(shape, flat), 28 + 4 * count
+        assert magic == b"EPDG" and version in (2, 4), f"{path}: not a version-2 or 4 network"
+        depth, widths = (struct.unpack_from("<I", b, 12)[0], 16) if version == 4 else (1, 12)
+        shape = struct.unpack_from("<4I", b, widths)
+        flat = torch.tensor(struct.unpack_from(f"<{count}f", b, widths + 16), dtype=torch.float32)
+        return FoldedNet(shape, flat, depth), widths + 16 + 4 * count
 
     magic, version = struct.unpack_from("<4sI", data, 0)
     if version != 3:
@@ -456,24 +476,24 @@ def evaluate(net, g, digits, pool, rounds):
     return confusion
 
 
-def version2(shape, tensors):
-    """A network's file, version 2: the header, then its tensors flattened in order."""
+def network_file(shape, depth, tensors):
+    """A network's file: version 2 (one convolution a stage) or version 4 (its depth in the
+    header), then its tensors flattened in order."""
     flat = torch.cat([t.detach().flatten() for t in tensors])
-    return (b"EPDG" + struct.pack("<II", 2, flat.numel()) + struct.pack("<4I", *shape)
-            + struct.pack(f"<{flat.numel()}f", *flat.tolist()))
+    head = (struct.pack("<II", 2, flat.numel()) if depth == 1
+            else struct.pack("<III", 4, flat.numel(), depth))
+    return b"EPDG" + head + struct.pack("<4I", *shape) + struct.pack(f"<{flat.numel()}f", *flat.tolist())
 
 
 def network_bytes(net):
-    """A trained Net as a version-2 file: batch norm folded into the convolutions."""
-    w1, b1 = folded(net.conv1, net.bn1)
-    w2, b2 = folded(net.conv2, net.bn2)
-    w3, b3 = folded(net.conv3, net.bn3)
-    return version2(net.shape, [w1, b1, w2, b2, w3, b3, net.fc1.weight, net.fc1.bias, net.fc2.weight, net.fc2.bias])
+    """A trained Net as a version-2 or 4 file: batch norm folded into the convolutions."""
+    tensors = [t for conv, bn in zip(net.convs, net.bns) for t in folded(conv, bn)]
+    return network_file(net.shape, net.depth, tensors + [net.fc1.weight, net.fc1.bias, net.fc2.weight, net.fc2.bias])
 
 
 def folded_bytes(net):
-    """A FoldedNet (read back from a file) as a version-2 file, the same bytes it was read from."""
-    return version2(net.shape, net.t)
+    """A FoldedNet (read back from a file) as its file, the same bytes it was read from."""
+    return network_file(net.shape, net.depth, net.t)
 
 
 def ensemble_probabilities(nets, x):
@@ -617,9 +637,9 @@ def write_ensemble(nets, digits, test, out, writers=None):
     print("wrote", os.path.join(out, "digits.weights"))
 
 
-def set_options(elastic=0.0, bilevel=0.2, bilevel_relative=False, dropout=0.3):
-    global ELASTIC, BILEVEL, BILEVEL_RELATIVE, DROPOUT
-    ELASTIC, BILEVEL, BILEVEL_RELATIVE, DROPOUT = elastic, bilevel, bilevel_relative, dropout
+def set_options(elastic=0.0, bilevel=0.2, bilevel_relative=False, dropout=0.3, depth=1):
+    global ELASTIC, BILEVEL, BILEVEL_RELATIVE, DROPOUT, DEPTH
+    ELASTIC, BILEVEL, BILEVEL_RELATIVE, DROPOUT, DEPTH = elastic, bilevel, bilevel_relative, dropout, depth
 
 
 def main():
@@ -638,6 +658,7 @@ def main():
     ap.add_argument("--bilevel", type=float, default=0.2)
     ap.add_argument("--bilevel-relative", action="store_true")
     ap.add_argument("--dropout", type=float, default=0.3)
+    ap.add_argument("--depth", type=int, default=1, help="convolutions a stage (1: version-2 file, more: version 4)")
     ap.add_argument("--ensemble", action="store_true", help="train every member of MEMBERS, then combine them")
     ap.add_argument("--combine", nargs="+", metavar="WEIGHTS",
                     help="write the ensemble of these networks' files (version 2 or 3), in this order")
@@ -672,7 +693,7 @@ def main():
         set_options()  # the held-out figures drawn with the default augmentation, as --combine's
         write_ensemble(nets, digits, test, args.out, writers)
         return 0
-    set_options(args.elastic, args.bilevel, args.bilevel_relative, args.dropout)
+    set_options(args.elastic, args.bilevel, args.bilevel_relative, args.dropout, args.depth)
     net = train_network(digits, train, test, args.seed, args.epochs, args.label_smoothing)
     os.makedirs(args.out, exist_ok=True)
     path = os.path.join(args.out, "digits.weights")
