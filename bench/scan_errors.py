@@ -2,7 +2,7 @@
 """Where a scan's errors and reviews come from, on stacks made by bench/scan_accuracy.sh (each
 directory: truth.json, layout.json, out/fields.csv, figures.json):
 
-    scan_errors.py STACK_DIR... [--threshold 0.80]
+    scan_errors.py STACK_DIR... [--threshold 0.85]
 
 Per stack and in total: fields, silent errors, fields sent to review (ticks, combs), digit cells
 read right; then, over all stacks, comb cells by what was written (digit, minus, empty) with how
@@ -35,7 +35,7 @@ THRESHOLDS = (0.5, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 0.98, 0.99, 0.995, 0.99
 
 def main():
     args = sys.argv[1:]
-    thr = 0.80  # field_reading.h kCellConfidence
+    thr = 0.85  # field_reading.h kCellConfidence
     if "--threshold" in args:
         k = args.index("--threshold"); thr = float(args[k + 1]); del args[k:k + 2]
     total = collections.Counter()

@@ -21,22 +21,24 @@ tools=$EPURE_SOURCE_DIR/tests/tools
 "$EPURE" generate --format pdf --sheets 4 --seed 5 --lang fr --jobs 1 --quiet --out "$tmp/set" || { bad "generate"; exit 1; }
 key=$tmp/set/key.json
 # The bounds pinned on these small stacks (about 195 fields, 400 digits each), as measured with
-# the committed classifier: three networks trained on MNIST's 58,004 digits, cells below 0.80
-# sent to review (2026-12-06, 03:45 UTC): silent errors 0 on each stack; fields sent to review
-# 3.1 % (JPEG PDF), 11.6 % (bilevel), 5.1 % (300 dpi), 9.1 % (150 dpi); digits 98.3-99.8 %.
-# Before (three networks on the mnist package's 8,000 digits, cells below 0.85): silent 0,
-# review 14.9-18.7 %, digits 97.5-99.3 %. On stacks of 24 sheets (README, "epure scan") the
-# issue's silent errors (0.1 %) and digits (99 %) are met; its review (5 %) is NOT (7.8 %).
+# the committed classifier: three networks of depth 2 (two convolutions a stage) trained on
+# MNIST's 58,004 digits, cells below 0.85 sent to review (2026-12-06, 07:20 UTC): silent errors 0
+# on each stack; fields sent to review 3.1 % (JPEG PDF), 8.6 % (bilevel), 4.5 % (300 dpi), 6.6 %
+# (150 dpi); digits 99.3-99.8 %. Before (three networks of depth 1, cells below 0.80): silent 0,
+# review 3.1-11.6 %, digits 98.3-99.8 %; before that (the mnist package's 8,000 digits alone,
+# below 0.85): review 14.9-18.7 %. On stacks of 24 sheets (README, "epure scan") the issue's
+# silent errors (0.1 %) and digits (99 %) are met; its review (5 %) is met on one sample of
+# four stacks (5.06 %, rounded) and missed by 0.4 point on the other (5.38 %).
 # Digits: about 400 a stack, so one standard deviation of the rate is 0.55 %; the bilevel stack's
-# rate is 98.8-99.2 % on 24 sheets (bench/scan_accuracy.sh, two samples): the bound is two
-# deviations under the lower, not a figure one draw happened to reach.
+# rate is 98.8-99.2 % on 24 sheets with the depth-1 networks (bench/scan_accuracy.sh, two
+# samples): the bound is two deviations under the lower, not a figure one draw happened to reach.
 # Ticks (about 47 a stack, one in four a light pen's cross at 40 % ink, read as ticked since
 # 2026-12-06): 0-2 sent to review (heavy crosses at 150 dpi), bound 4; before, every light
-# cross went to review (about 12 a stack). Fields to review: bound 16 %, the bilevel stack's
-# 11.6 % with a margin (the combs' review on 24 bilevel sheets: 9.4 %).
+# cross went to review (about 12 a stack). Fields to review: bound 12 %, the bilevel stack's
+# 8.6 % with a margin (the depth-1 networks sent 11.6 %: under it, but not the 7 % together below).
 max_tick_review=${EPURE_SCAN_MAX_TICK_REVIEW:-0.09}
 max_silent=${EPURE_SCAN_MAX_SILENT:-0.008}
-max_review=${EPURE_SCAN_MAX_REVIEW:-0.16}
+max_review=${EPURE_SCAN_MAX_REVIEW:-0.12}
 min_digits=${EPURE_SCAN_MIN_DIGITS:-0.977}
 
 # Four stacks: a copier's JPEG PDF (shuffled, a page dropped, one twice, a blank one, one of
@@ -74,9 +76,10 @@ for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300"
 done
 
 # The four stacks together (about 790 fields, 1,630 digits): the issue's figures where they are
-# met (measured 2026-12-06: digits 99.26 %, silent errors 0, ticks 184 right and 2 to review of
-# 186, none wrong), and the review at the bound above (7.2 % measured; the issue's 5 % is not met).
-python3 - "$tmp"/s1/figures.json "$tmp"/s2/figures.json "$tmp"/s3/figures.json "$tmp"/s4/figures.json <<'PY' && ok "the four stacks together: the issue's digits, silent errors and ticks" || fail=1
+# met (measured 2026-12-06, 07:20 UTC: digits 99.51 %, silent errors 0, ticks 184 right and 2 to
+# review of 186, none wrong), and the fields to review at 7 % (5.7 % measured; the depth-1
+# networks sent 7.2 % and fail it; the issue's 5 % is not met on these small stacks).
+python3 - "$tmp"/s1/figures.json "$tmp"/s2/figures.json "$tmp"/s3/figures.json "$tmp"/s4/figures.json <<'PY' && ok "the four stacks together: the issue's digits, silent errors and ticks, fields to review under 7 %" || fail=1
 import json, sys
 t = {}
 for path in sys.argv[1:]:
@@ -91,6 +94,7 @@ print(f"together: {t['fields']} fields, digits {digits:.4f}, silent {t['silent']
 problems = []
 if digits < 0.99: problems.append(f"digits read right {digits:.4f} < 0.99")
 if silent > 0.001: problems.append(f"silent errors {silent:.4f} > 0.001")
+if t["review"] > 0.07 * t["fields"]: problems.append(f"fields to review {t['review'] / t['fields']:.4f} > 0.07")
 if tick_wrong > 0 or t["tick_right"] < 0.98 * t["tick_fields"]: problems.append(f"ticks: {tick_wrong} wrong, {t['tick_right']} of {t['tick_fields']} right")
 if problems:
     print("FAIL the four stacks together: " + "; ".join(problems))

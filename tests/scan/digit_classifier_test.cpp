@@ -152,6 +152,7 @@ TEST_CASE("digit classifier: the networks carried are the ones train_digits.py d
     CHECK(s.conv2 == 64);
     CHECK(s.conv3 == 128);
     CHECK(s.hidden == 128);
+    CHECK(s.depth == 2);
   }
 }
 
