@@ -50,9 +50,9 @@ std::uint32_t read_u32(std::string_view b, std::size_t at) {
 // `in` is cin planes of side n, `out` cout planes of side n / 2 (n without the pool).
 //
 // The input's 3x3 neighbourhoods are laid out first (im2col: row k = 9 i + 3 ky + kx holds input
-// plane i shifted by (kx - 1, ky - 1), zeros past the border), so that each output plane is
-// cin x 9 passes of one multiply-add over the whole plane: loops of n² (784, 196, 49) the
-// compiler vectorises, where a row at a time (28, 14, 7) was mostly loop overhead. Every output
+// plane i shifted by (kx - 1, ky - 1), zeros past the border), so that the convolution is a
+// matrix product over contiguous rows (below), where a row of the image at a time (28, 14, 7)
+// was mostly loop overhead. Every output
 // pixel still sums its bias, then its terms in the order i, ky, kx, each rounded in turn: the
 // padding's terms add a zero, which leaves a sum as it was, so the logits are the same bits as
 // a direct convolution's (and the same on every machine).
@@ -90,7 +90,10 @@ void conv_relu(const float* in, int cin, int n, const float* w, const float* b, 
         // compiler keeps the eight accumulators in registers, which it did not for arrays
         typedef float Lanes __attribute__((vector_size(16)));
         Lanes acc[kPlanes][2];
-        for (int j = 0; j < kPlanes; ++j) acc[j][0] = acc[j][1] = Lanes{} + b[o0 + j];
+        for (int j = 0; j < kPlanes; ++j) {
+          const float bias = b[o0 + j];  // as it is (Lanes{} + bias would turn a -0 into +0)
+          acc[j][0] = acc[j][1] = Lanes{bias, bias, bias, bias};
+        }
         const float* k0 = w + static_cast<std::ptrdiff_t>(o0) * static_cast<std::ptrdiff_t>(taps);
         for (std::size_t t = 0; t < taps; ++t) {
           const float* c = col.data() + t * area + p0;

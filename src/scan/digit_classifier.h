@@ -73,9 +73,9 @@ class DigitClassifier {
   // conv1, conv2, conv3 and hidden widths, then count float32 (all little endian): conv1 weights
   // (conv1 x 1 x 3 x 3) and biases, conv2's (conv2 x conv1 x 3 x 3), conv3's, fc1's
   // (hidden x conv3·9), fc2's (12 x hidden). Version 4, stages of several convolutions: "EPDG",
-  // u32 version 4, u32 count, u32 depth (1 to 3), the four widths, then each stage's
-  // convolutions in order (the first from the stage before, conv1 x 1 x 3 x 3 for the first
-  // stage, the others conv1 x conv1 x 3 x 3), then fc1 and fc2 as in version 2. A version-2 or
+  // u32 version 4, u32 count, u32 depth (1 to 3), the four widths, then for each stage of width
+  // c and each of its `depth` convolutions its weights (c x cin x 3 x 3, cin the width of the
+  // convolution before, 1 at first) and biases (c), then fc1 and fc2 as in version 2. A version-2 or
   // version-4 file alone is read as a one-network ensemble. Throws std::runtime_error when the
   // bytes are not that (version 1, the first network's 16-32-64-64 with no widths in the header,
   // is no longer read).

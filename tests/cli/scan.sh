@@ -27,8 +27,8 @@ key=$tmp/set/key.json
 # (150 dpi); digits 99.3-99.8 %. Before (three networks of depth 1, cells below 0.80): silent 0,
 # review 3.1-11.6 %, digits 98.3-99.8 %; before that (the mnist package's 8,000 digits alone,
 # below 0.85): review 14.9-18.7 %. On stacks of 24 sheets (README, "epure scan") the issue's
-# silent errors (0.1 %) and digits (99 %) are met; its review (5 %) is met on one sample of
-# four stacks (5.06 %, rounded) and missed by 0.4 point on the other (5.38 %).
+# silent errors (0.1 %) and digits (99 %) are met; its review (5 %) is missed on both samples of
+# four stacks (5.40 % and 5.06 %).
 # Digits: about 400 a stack, so one standard deviation of the rate is 0.55 %; the bilevel stack's
 # rate is 98.8-99.2 % on 24 sheets with the depth-1 networks (bench/scan_accuracy.sh, two
 # samples): the bound is two deviations under the lower, not a figure one draw happened to reach.

@@ -170,60 +170,66 @@ std::string version4(std::uint32_t depth, std::array<std::uint32_t, 4> widths, c
 }
 
 // The logits of a network of `depth` convolutions a stage, computed the plain way: each output
-// pixel summed over its 3x3 neighbourhood in double, a pool after a stage's last convolution.
-// An independent reading of the file's layout, to check the classifier's im2col forward pass.
-std::array<double, kClassCount> plain_logits(std::uint32_t depth, std::array<std::uint32_t, 4> widths, const std::vector<float>& w,
-                                             const CellCrop& crop) {
+// pixel summed over its 3x3 neighbourhood (past the border, a zero input's term), a pool after a
+// stage's last convolution. An independent reading of the file's layout, to check the
+// classifier's im2col and blocked forward pass: in double, the values; in float, with the terms
+// in the order the classifier promises (bias, then i, ky, kx), the very bits.
+template <typename T>
+std::array<T, kClassCount> plain_logits(std::uint32_t depth, std::array<std::uint32_t, 4> widths, const std::vector<float>& w,
+                                        const CellCrop& crop) {
   std::size_t at = 0;
   int side = kCropSide, cin = 1;
-  std::vector<double> a(crop.size());
+  std::vector<T> a(crop.size());
   for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<float>(crop[i]) / 255.0f;
   for (int stage = 0; stage < 3; ++stage)
     for (std::uint32_t k = 0; k < depth; ++k) {
       const int cout = static_cast<int>(widths[static_cast<std::size_t>(stage)]);
       const std::size_t wk = at, bk = at + static_cast<std::size_t>(cout * cin * 9);
       at = bk + static_cast<std::size_t>(cout);
-      std::vector<double> out(static_cast<std::size_t>(cout * side * side));
+      std::vector<T> out(static_cast<std::size_t>(cout * side * side));
       for (int o = 0; o < cout; ++o)
         for (int y = 0; y < side; ++y)
           for (int x = 0; x < side; ++x) {
-            double s = w[bk + static_cast<std::size_t>(o)];
+            T s = w[bk + static_cast<std::size_t>(o)];
             for (int i = 0; i < cin; ++i)
               for (int ky = 0; ky < 3; ++ky)
                 for (int kx = 0; kx < 3; ++kx) {
                   const int sy = y + ky - 1, sx = x + kx - 1;
-                  if (sy < 0 || sy >= side || sx < 0 || sx >= side) continue;
-                  s += w[wk + static_cast<std::size_t>(((o * cin + i) * 3 + ky) * 3 + kx)] * a[static_cast<std::size_t>((i * side + sy) * side + sx)];
+                  const bool inside = sy >= 0 && sy < side && sx >= 0 && sx < side;
+                  const T v = inside ? a[static_cast<std::size_t>((i * side + sy) * side + sx)] : T(0);
+                  s += static_cast<T>(w[wk + static_cast<std::size_t>(((o * cin + i) * 3 + ky) * 3 + kx)]) * v;
                 }
-            out[static_cast<std::size_t>((o * side + y) * side + x)] = std::max(s, 0.0);
+            out[static_cast<std::size_t>((o * side + y) * side + x)] = s;
           }
       a = out;
       cin = cout;
-      if (k + 1 == depth) {  // the stage's 2x2 max pool (floor)
+      if (k + 1 == depth) {  // the stage's 2x2 max pool (floor), then ReLU
         const int half = side / 2;
-        std::vector<double> p(static_cast<std::size_t>(cout * half * half));
+        std::vector<T> p(static_cast<std::size_t>(cout * half * half));
         for (int o = 0; o < cout; ++o)
           for (int y = 0; y < half; ++y)
             for (int x = 0; x < half; ++x) {
               auto v = [&](int dy, int dx) { return a[static_cast<std::size_t>((o * side + 2 * y + dy) * side + 2 * x + dx)]; };
-              p[static_cast<std::size_t>((o * half + y) * half + x)] = std::max(std::max(v(0, 0), v(0, 1)), std::max(v(1, 0), v(1, 1)));
+              p[static_cast<std::size_t>((o * half + y) * half + x)] = std::max(std::max(std::max(v(0, 0), v(0, 1)), std::max(v(1, 0), v(1, 1))), T(0));
             }
         a = p;
         side = half;
+      } else {
+        for (auto& v : a) v = std::max(v, T(0));
       }
     }
   const std::size_t hidden = widths[3], flat = a.size();
-  std::vector<double> h(hidden);
+  std::vector<T> h(hidden);
   const std::size_t f1 = at, b1 = f1 + hidden * flat, f2 = b1 + hidden, b2 = f2 + kClassCount * hidden;
   for (std::size_t j = 0; j < hidden; ++j) {
-    double s = w[b1 + j];
-    for (std::size_t i = 0; i < flat; ++i) s += w[f1 + j * flat + i] * a[i];
-    h[j] = std::max(s, 0.0);
+    T s = w[b1 + j];
+    for (std::size_t i = 0; i < flat; ++i) s += static_cast<T>(w[f1 + j * flat + i]) * a[i];
+    h[j] = std::max(s, T(0));
   }
-  std::array<double, kClassCount> z;
+  std::array<T, kClassCount> z;
   for (std::size_t c = 0; c < kClassCount; ++c) {
-    double s = w[b2 + c];
-    for (std::size_t i = 0; i < hidden; ++i) s += w[f2 + c * hidden + i] * h[i];
+    T s = w[b2 + c];
+    for (std::size_t i = 0; i < hidden; ++i) s += static_cast<T>(w[f2 + c * hidden + i]) * h[i];
     z[c] = s;
   }
   return z;
@@ -231,7 +237,9 @@ std::array<double, kClassCount> plain_logits(std::uint32_t depth, std::array<std
 }  // namespace
 
 TEST_CASE("digit classifier: a version-4 network (stages of several convolutions) reads as a plain convolution does") {
-  const std::array<std::uint32_t, 4> widths{3, 4, 5, 6};
+  // widths that make every layer run a full block and an edge (5 = 4 + 1 planes, 6 = 4 + 2, 12
+  // hidden units = 8 side by side + 4 one at a time), the pixels' edges too (196 = 24 x 8 + 4)
+  const std::array<std::uint32_t, 4> widths{5, 4, 6, 12};
   std::uint64_t state = 20261206;  // a fixed LCG: the same weights on every machine
   auto next = [&state] {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -254,8 +262,11 @@ TEST_CASE("digit classifier: a version-4 network (stages of several convolutions
     REQUIRE(net.members() == 1);
     CHECK(net.shape(0).depth == depth);
     const auto z = net.logits(0, crop);
-    const auto expected = plain_logits(depth, widths, w, crop);
+    const auto expected = plain_logits<double>(depth, widths, w, crop);
     for (std::size_t k = 0; k < kClassCount; ++k) CHECK(z[k] == doctest::Approx(expected[k]).epsilon(1e-4).scale(1.0));
+    // summed in float in the promised order: the same bits
+    const auto same_order = plain_logits<float>(depth, widths, w, crop);
+    CHECK(std::equal(z.begin(), z.end(), same_order.begin()));
     if (depth == 1) {
       // a depth-1 version-4 file is the version-2 file of the same floats
       std::string v2 = "EPDG" + u32(2) + u32(static_cast<std::uint32_t>(count));

@@ -8,8 +8,8 @@ probabilities scan averages.
     /usr/bin/python3 src/scan/classifier/train_digits.py --combine A/digits.weights B/digits.weights --out DIR
     /usr/bin/python3 src/scan/classifier/train_digits.py --epochs 2 --out /tmp/x   # a quick try
 
---ensemble trains the members one after another (about 16 min of one core's CPU each: 15 epochs
-of 69,604 samples) and writes them as one file; --combine writes the ensemble of networks already
+--ensemble trains the members one after another (about 29 min of one core's CPU each at depth 2:
+15 epochs of 69,604 samples) and writes them as one file; --combine writes the ensemble of networks already
 trained, in the order given. Both print each member's and the ensemble's figures on the held-out
 digits, drawn the same way for all (seed 20261206, 3 rounds), and on MNIST's test set (one round).
 
@@ -541,9 +541,10 @@ def export_check(nets, g, digits, pool, path):
 # alone (2026-12-06, morning); since then every member trains on MNIST's 58,004 (15 epochs), and
 # since 2026-12-06, 07:30 UTC with two convolutions a stage (depth 2). The third is trained with a
 # smooth elastic distortion and more, relative bilevel scans, so that it errs on other digits.
-# Tried on the suite's scans (README, "epure scan"): depth 1 (the three below at depth 1, also
-# with four and five members), two of depth 2 alone, two of depth 2 with the third at depth 1;
-# these three read best at every count of silent errors.
+# Tried on the suite's scans (README, "epure scan"): the three below at depth 1 (also with two
+# more depth-1 members), one or two of depth 2 alone, the first two of depth 2 with the third at
+# depth 1 or with the three of depth 1; these three of depth 2 send the fewest fields to review
+# for 2-3 silent errors.
 MEMBERS = [
     {"seed": 20261204, "depth": 2},
     {"seed": 20261205, "depth": 2},
@@ -667,7 +668,7 @@ def main():
     ap.add_argument("--depth", type=int, default=1, help="convolutions a stage (1: version-2 file, more: version 4)")
     ap.add_argument("--ensemble", action="store_true", help="train every member of MEMBERS, then combine them")
     ap.add_argument("--combine", nargs="+", metavar="WEIGHTS",
-                    help="write the ensemble of these networks' files (version 2 or 3), in this order")
+                    help="write the ensemble of these networks' files (version 2, 3 or 4), in this order")
     args = ap.parse_args()
 
     torch.use_deterministic_algorithms(True)
