@@ -47,6 +47,14 @@ class RunSink final : public RichSink {
   bool bold_;
 };
 
+// Whether a text has a character where the parser may see markup ('\\', '_', '^' start every
+// group and escape); a text without one is a single piece of text.
+bool may_hold_markup(std::string_view s) {
+  for (const char c : s)
+    if (c == '\\' || c == '_' || c == '^') return true;
+  return false;
+}
+
 class Parser {
  public:
   Parser(std::string_view s, RichSink& sink) : s_(s), sink_(sink) {}
@@ -277,6 +285,12 @@ TextExtent text_extent(std::span<const TextRun> runs, double font_size) {
 }
 
 std::vector<TextRun> parse_rich_text(std::string_view rich, Weight weight) {
+  // Most texts and lines hold no markup: the parser would give them as one unshifted run.
+  if (!may_hold_markup(rich)) {
+    std::vector<TextRun> out;
+    if (!rich.empty()) out.push_back(TextRun{std::string(rich), Shift::none, false, weight == Weight::bold});
+    return out;
+  }
   RunSink runs(weight == Weight::bold);
   Parser(rich, runs).run();
   return std::move(runs.out);
@@ -294,6 +308,8 @@ double text_width(std::span<const TextRun> runs, double font_size) {
 }
 
 double text_width(std::string_view rich, double font_size, Weight weight) {
+  // Without markup, one unshifted run: the same sum and product as text_width of the runs.
+  if (!may_hold_markup(rich)) return advance_sum(rich, weight == Weight::bold ? Face::bold : Face::regular) * font_size;
   return text_width(parse_rich_text(rich, weight), font_size);
 }
 

@@ -2,7 +2,10 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "render/font_metrics.h"
 #include "render/utf8.h"
@@ -82,6 +85,47 @@ TEST_CASE("parse_rich_text: the three markups, escapes, and literal leftovers") 
   }
   SUBCASE("9. weight is carried to every run") {
     for (const auto& r : parse_rich_text("t_{ab}", Weight::bold)) CHECK(r.bold);
+  }
+}
+
+TEST_CASE("parse_rich_text and text_width: a text without markup, taken as one run, is the parser's") {
+  // The parser's pieces gathered into runs as parse_rich_text gathers them, against its short way
+  // for texts without '\\', '_' or '^' (braces alone are literal); widths to the bit.
+  struct Gather final : RichSink {
+    std::vector<TextRun> runs;
+    bool bold = false;
+    void piece(std::string_view text, Shift shift, bool arrow) override {
+      if (runs.empty() || runs.back().shift != shift || runs.back().arrow != arrow) runs.push_back(TextRun{{}, shift, arrow, bold});
+      runs.back().text += text;
+    }
+  };
+  const std::string alphabet[] = {"a", "Z", "1", " ", ".", "{", "}", "(", "é", "→", "−", "_", "^", "\\", "\\vec{u}", "_{1}"};
+  std::uint64_t state = 12345;
+  for (int n = 0; n < 3000; ++n) {
+    std::string text;
+    const int length = n % 17;
+    for (int k = 0; k < length; ++k) {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      // two thirds of the texts without markup characters
+      const std::size_t pick = static_cast<std::size_t>(state >> 33) % (n % 3 == 0 ? 16 : 11);
+      text += alphabet[pick];
+    }
+    CAPTURE(text);
+    for (const Weight weight : {Weight::regular, Weight::bold}) {
+      Gather g;
+      g.bold = weight == Weight::bold;
+      parse_rich_pieces(text, g);
+      const auto runs = parse_rich_text(text, weight);
+      REQUIRE(runs.size() == g.runs.size());
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        CHECK(runs[i].text == g.runs[i].text);
+        CHECK(runs[i].shift == g.runs[i].shift);
+        CHECK(runs[i].arrow == g.runs[i].arrow);
+        CHECK(runs[i].bold == g.runs[i].bold);
+      }
+      const double size = 7.5 + n % 5;
+      CHECK(std::bit_cast<std::uint64_t>(text_width(text, size, weight)) == std::bit_cast<std::uint64_t>(text_width(g.runs, size)));
+    }
   }
 }
 
