@@ -32,16 +32,21 @@ bool flips(int mask, int x, int y) {
 struct MaskRows {
   int width = 0;
   std::uint64_t rows[8][kQrMaskMaxWidth] = {};
+  std::uint64_t cols[8][kQrMaskMaxWidth] = {};  // the same flips by column: bit y of cols[m][x]
 };
 
 const MaskRows& mask_rows(int width) {
   thread_local MaskRows cache;
   if (cache.width != width) {
+    cache = MaskRows{};
     for (int m = 0; m < 8; ++m)
       for (int y = 0; y < width; ++y) {
         std::uint64_t r = 0;
         for (int x = 0; x < width; ++x)
-          if (flips(m, x, y)) r |= std::uint64_t{1} << x;
+          if (flips(m, x, y)) {
+            r |= std::uint64_t{1} << x;
+            cache.cols[m][x] |= std::uint64_t{1} << y;
+          }
         cache.rows[m][y] = r;
       }
     cache.width = width;
@@ -50,6 +55,14 @@ const MaskRows& mask_rows(int width) {
 }
 
 std::uint64_t low_bits(int n) { return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1; }
+
+// The dark modules of a word, inline: without -mpopcnt, std::popcount is a call into libgcc.
+int ones(std::uint64_t v) {
+  v -= (v >> 1) & 0x5555555555555555ULL;
+  v = (v & 0x3333333333333333ULL) + ((v >> 2) & 0x3333333333333333ULL);
+  v = (v + (v >> 4)) & 0x0f0f0f0f0f0f0f0fULL;
+  return static_cast<int>((v * 0x0101010101010101ULL) >> 56);
+}
 
 // N1 and N3 of one line of modules (bit x dark), as libqrencode's Mask_calcN1N3 counts them on
 // its list of runs, but from the bits.
@@ -60,7 +73,7 @@ int line_penalty(std::uint64_t line, int width) {
   // from the next run's: their count plus twice the number of blocks.
   const std::uint64_t same = ~(line ^ (line >> 1)) & low_bits(width - 1);
   const std::uint64_t same4 = same & (same >> 1) & (same >> 2) & (same >> 3);
-  int demerit = std::popcount(same4) + 2 * std::popcount(same4 & ~(same4 << 1));
+  int demerit = ones(same4) + 2 * ones(same4 & ~(same4 << 1));
   // N3: runs dark f, light f, dark 3f, light f, dark f (as runs: nothing dark just before nor just
   // after), counted when the line holds nothing dark before it or after it, or when 4f light
   // modules precede or follow it. dark[k] (light[k]): bit x when modules x to x + k - 1 are.
@@ -92,7 +105,7 @@ int line_penalty(std::uint64_t line, int width) {
 
 }  // namespace
 
-int qr_mask_penalty(std::span<const std::uint64_t> rows, int width, int stop) {
+int qr_mask_penalty(std::span<const std::uint64_t> rows, std::span<const std::uint64_t> cols, int width, int stop) {
   const std::uint64_t pairs = low_bits(width - 1);
   int demerit = 0;
   // N2: every 2 × 2 block of one colour, overlapping ones each counted.
@@ -100,15 +113,10 @@ int qr_mask_penalty(std::span<const std::uint64_t> rows, int width, int stop) {
     const std::uint64_t a = rows[static_cast<std::size_t>(y - 1)], b = rows[static_cast<std::size_t>(y)];
     const std::uint64_t dark = a & b & (a >> 1) & (b >> 1);
     const std::uint64_t light = ~(a | b | (a >> 1) | (b >> 1));
-    demerit += kN2 * std::popcount((dark | light) & pairs);
+    demerit += kN2 * ones((dark | light) & pairs);
   }
   for (int y = 0; y < width && demerit < stop; ++y) demerit += line_penalty(rows[static_cast<std::size_t>(y)], width);
-  if (demerit >= stop) return demerit;
-  std::uint64_t cols[kQrMaskMaxWidth] = {};
-  for (int y = 0; y < width; ++y)
-    for (std::uint64_t r = rows[static_cast<std::size_t>(y)]; r; r &= r - 1)
-      cols[std::countr_zero(r)] |= std::uint64_t{1} << y;
-  for (int x = 0; x < width && demerit < stop; ++x) demerit += line_penalty(cols[x], width);
+  for (int x = 0; x < width && demerit < stop; ++x) demerit += line_penalty(cols[static_cast<std::size_t>(x)], width);
   return demerit;
 }
 
@@ -116,24 +124,38 @@ std::optional<MaskedQr> mask_qr(std::span<const unsigned char> frame, int width,
                                 const std::array<unsigned, 8>& format) {
   if (width < 21 || width > kQrMaskMaxWidth || frame.size() != static_cast<std::size_t>(width * width))
     return std::nullopt;
+  // The frame by rows and by columns (the runs are counted both ways).
   std::uint64_t dark[kQrMaskMaxWidth] = {}, data[kQrMaskMaxWidth] = {};
+  std::uint64_t dark_cols[kQrMaskMaxWidth] = {}, data_cols[kQrMaskMaxWidth] = {};
   for (int y = 0; y < width; ++y)
     for (int x = 0; x < width; ++x) {
       const unsigned char m = frame[static_cast<std::size_t>(y * width + x)];
-      if (m & 1) dark[y] |= std::uint64_t{1} << x;
-      if (!(m & 0x80)) data[y] |= std::uint64_t{1} << x;
+      if (m & 1) {
+        dark[y] |= std::uint64_t{1} << x;
+        dark_cols[x] |= std::uint64_t{1} << y;
+      }
+      if (!(m & 0x80)) {
+        data[y] |= std::uint64_t{1} << x;
+        data_cols[x] |= std::uint64_t{1} << y;
+      }
     }
   const MaskRows& flip = mask_rows(width);
   const int w2 = width * width;
   MaskedQr best;
   int least = std::numeric_limits<int>::max();
   for (int m = 0; m < 8; ++m) {
-    std::array<std::uint64_t, kQrMaskMaxWidth> rows{};
-    for (int y = 0; y < width; ++y) rows[static_cast<std::size_t>(y)] = dark[y] ^ (flip.rows[m][y] & data[y]);
+    std::array<std::uint64_t, kQrMaskMaxWidth> rows{}, cols{};
+    for (int i = 0; i < width; ++i) {
+      rows[static_cast<std::size_t>(i)] = dark[i] ^ (flip.rows[m][i] & data[i]);
+      cols[static_cast<std::size_t>(i)] = dark_cols[i] ^ (flip.cols[m][i] & data_cols[i]);
+    }
     // The format information, written twice as libqrencode's Mask_writeFormatInformation
     // places it: bits 0–7 along row 8 from the right and down column 8 (skipping the timing
     // row), bits 8–14 up column 8 from the bottom and along row 8 (skipping the timing column).
-    auto set = [&](int x, int y) { rows[static_cast<std::size_t>(y)] |= std::uint64_t{1} << x; };
+    auto set = [&](int x, int y) {
+      rows[static_cast<std::size_t>(y)] |= std::uint64_t{1} << x;
+      cols[static_cast<std::size_t>(x)] |= std::uint64_t{1} << y;
+    };
     unsigned bits = format[static_cast<std::size_t>(m)];
     for (int i = 0; i < 8; ++i, bits >>= 1)
       if (bits & 1) {
@@ -146,11 +168,12 @@ std::optional<MaskedQr> mask_qr(std::span<const unsigned char> frame, int width,
         set(i == 0 ? 7 : 6 - i, 8);
       }
     int blacks = 0;
-    for (int y = 0; y < width; ++y) blacks += std::popcount(rows[static_cast<std::size_t>(y)]);
+    for (int y = 0; y < width; ++y) blacks += ones(rows[static_cast<std::size_t>(y)]);
     const int ratio = (200 * blacks + w2) / w2 / 2;  // libqrencode's rounded percentage
     const int demerit = (std::abs(ratio - 50) / 5) * kN4;
     if (demerit >= least) continue;  // the penalties only add: it cannot be lower
-    const int total = demerit + qr_mask_penalty(std::span(rows.data(), static_cast<std::size_t>(width)), width, least - demerit);
+    const int total = demerit + qr_mask_penalty(std::span(rows.data(), static_cast<std::size_t>(width)),
+                                                 std::span(cols.data(), static_cast<std::size_t>(width)), width, least - demerit);
     if (total < least) {
       least = total;
       best.mask = m;

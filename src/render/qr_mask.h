@@ -28,9 +28,10 @@ struct MaskedQr {
 std::optional<MaskedQr> mask_qr(std::span<const unsigned char> frame, int width,
                                 const std::array<unsigned, 8>& format);
 
-// libqrencode's penalty of one masked symbol given as rows of bits (bit x of rows[y] dark), without
-// its black-ratio term (N4): the 2 × 2 blocks (N2) and the runs of each row and column (N1, N3).
-// Exposed for the tests. Stops adding once the penalty reaches `stop` (it then returns ≥ stop).
-int qr_mask_penalty(std::span<const std::uint64_t> rows, int width, int stop);
+// libqrencode's penalty of one masked symbol given as rows of bits (bit x of rows[y] dark) and as
+// columns (bit y of cols[x]), without its black-ratio term (N4): the 2 × 2 blocks (N2) and the
+// runs of each row and column (N1, N3). Exposed for the tests. Stops adding once the penalty
+// reaches `stop` (it then returns ≥ stop).
+int qr_mask_penalty(std::span<const std::uint64_t> rows, std::span<const std::uint64_t> cols, int width, int stop);
 
 }  // namespace epure::render

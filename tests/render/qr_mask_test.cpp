@@ -78,7 +78,11 @@ TEST_CASE("qr mask: the penalty on bits is libqrencode's (N1, N2, N3) on random 
         for (int i = 0; i < 11; ++i) f[static_cast<std::size_t>(y * w + x0 + i)] = static_cast<unsigned char>(pattern[i]);
       }
     const auto rows = rows_of(f.data(), w);
-    CHECK(qr_mask_penalty(rows, w, 1 << 30) == Mask_evaluateSymbol(w, f.data()));
+    std::vector<std::uint64_t> cols(static_cast<std::size_t>(w));
+    for (int y = 0; y < w; ++y)
+      for (int x = 0; x < w; ++x)
+        if (f[static_cast<std::size_t>(y * w + x)] & 1) cols[static_cast<std::size_t>(x)] |= std::uint64_t{1} << y;
+    CHECK(qr_mask_penalty(rows, cols, w, 1 << 30) == Mask_evaluateSymbol(w, f.data()));
   }
 }
 
