@@ -19,6 +19,8 @@ namespace {
 // Below this magnitude a number is rounded as an integer count of its last decimal; above it
 // (never in a drawing) fmt's exact conversion takes over.
 constexpr double kFastLimit = 1e12;
+// Bytes of a tag written in one append (its line break, indent and name): more goes piece by piece.
+constexpr std::size_t kOneAppend = 64;
 constexpr long long kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
 // "00" to "99", for writing numbers two digits at a time.
 constexpr char kDigitPairs[] =
@@ -188,11 +190,25 @@ void SvgWriter::end(std::string_view tag) {
     throw std::logic_error(fmt::format("SVG writer: </{}> does not close <{}>", tag,
                                        stack_.empty() ? "" : stack_.back().tag));
   }
-  const Open open = std::move(stack_.back());
+  const bool own_line = stack_.back().has_children && !stack_.back().inline_content;
   stack_.pop_back();
-  if (open.has_children && !open.inline_content) {
-    new_line();
+  // The line break and indent, if any, and `</tag>` in one append for a usual depth and tag
+  // (every element of a page ends here); new_line's bytes otherwise.
+  const std::size_t indent = own_line ? 1 + stack_.size() : 0;
+  char buf[kOneAppend];
+  if (indent + tag.size() + 3 <= sizeof buf) {
+    if (own_line) {
+      buf[0] = '\n';
+      std::memset(buf + 1, ' ', indent - 1);
+    }
+    buf[indent] = '<';
+    buf[indent + 1] = '/';
+    std::memcpy(buf + indent + 2, tag.data(), tag.size());
+    buf[indent + 2 + tag.size()] = '>';
+    out_.append(buf, indent + tag.size() + 3);
+    return;
   }
+  if (own_line) new_line();
   out_ += "</";
   out_ += tag;
   out_ += '>';
@@ -223,9 +239,22 @@ void SvgWriter::text(std::string_view s) {
 void SvgWriter::open(std::string_view tag) {
   if (!opening_.empty())
     throw std::logic_error(fmt::format("SVG writer: <{}> is not closed", opening_));
-  before_child();
-  out_ += '<';
-  out_ += tag;
+  // before_child's line break and indent (inside an element whose content is not inline) and
+  // `<tag` in one append for a usual depth and tag; before_child's own way otherwise.
+  if (!stack_.empty() && !stack_.back().inline_content && stack_.size() + tag.size() + 2 <= kOneAppend) {
+    stack_.back().has_children = true;
+    char buf[kOneAppend];
+    const std::size_t indent = 1 + stack_.size();
+    buf[0] = '\n';
+    std::memset(buf + 1, ' ', indent - 1);
+    buf[indent] = '<';
+    std::memcpy(buf + indent + 1, tag.data(), tag.size());
+    out_.append(buf, indent + 1 + tag.size());
+  } else {
+    before_child();
+    out_ += '<';
+    out_ += tag;
+  }
   opening_ = tag;
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -171,6 +172,55 @@ TEST_CASE("SvgWriter: the streamed form writes what the list form writes") {
     CHECK_THROWS_AS(w.open("g"), std::logic_error);  // the previous tag is still open
     CHECK_THROWS_AS(w.finish(), std::logic_error);
   }
+}
+
+TEST_CASE("SvgWriter: open and end indent as start and end do, at any depth and tag length") {
+  // open() and end() write a usual tag in one append and a deep or long one piece by piece:
+  // against start() and end(), whose bytes are the element form's, to depth 80 with tags of 1
+  // to 70 characters, inline content and empty elements between.
+  SvgWriter a, b;
+  std::vector<std::string> tags;
+  for (int depth = 0; depth < 80; ++depth) {
+    const std::string tag = std::string(1, static_cast<char>('a' + depth % 26)) + std::string(static_cast<std::size_t>(depth * 7 % 70), 'x');
+    tags.push_back(tag);
+    a.start(tag);
+    b.open(tag);
+    b.close_start();
+    if (depth % 9 == 4) {
+      a.element("leaf");
+      b.open("leaf");
+      b.close_empty();
+      a.start_inline("t");
+      b.open("t");
+      b.close_start_inline();
+      for (SvgWriter* w : {&a, &b}) {
+        w->text("x");
+        w->end("t");
+      }
+    }
+  }
+  for (auto it = tags.rbegin(); it != tags.rend(); ++it)
+    for (SvgWriter* w : {&a, &b}) w->end(*it);
+  const std::string out = a.finish();
+  CHECK(out == b.finish());
+  // The same document written out by hand: one element a line, indented by its depth.
+  std::string expected;
+  const auto indent = [&](int depth) { expected += "\n" + std::string(static_cast<std::size_t>(depth), ' '); };
+  for (int depth = 0; depth < 80; ++depth) {
+    if (depth > 0) indent(depth);
+    expected += "<" + tags[static_cast<std::size_t>(depth)] + ">";
+    if (depth % 9 == 4) {
+      indent(depth + 1);
+      expected += "<leaf/>";
+      indent(depth + 1);
+      expected += "<t>x</t>";
+    }
+  }
+  for (int depth = 79; depth >= 0; --depth) {
+    if (depth < 79) indent(depth);  // the innermost element has no children
+    expected += "</" + tags[static_cast<std::size_t>(depth)] + ">";
+  }
+  CHECK(out == expected + "\n");
 }
 
 TEST_CASE("SvgWriter: a number attribute is ` name=\"` format_number `\"`, short or long, near or far") {
