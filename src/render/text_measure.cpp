@@ -101,6 +101,7 @@ TextMeasure::Entry& TextMeasure::entry(const RichText& text, double size, double
   if (it != wrapped_.end()) return it->second;
   const Measured& m = measured(text, size, weight);
   Entry e;
+  e.source = &m;
   WrappedText& w = e.wrapped;
   w.measured = &m.text;
   w.lines = break_measured(m.text, width, from);
@@ -120,9 +121,11 @@ const std::vector<std::vector<TextRun>>& TextMeasure::wrap(const RichText& text,
                                                            Weight weight, std::size_t from) {
   Entry& e = entry(text, size, width, weight, from);
   if (!e.runs) {
-    e.runs.emplace();
-    for (const MeasuredLine& line : e.wrapped.lines)
-      e.runs->push_back(parse_rich_text(line_source(*e.wrapped.measured, line), weight));
+    auto [it, fresh] = e.source->runs.try_emplace({bits(width), from});
+    if (fresh)
+      for (const MeasuredLine& line : e.wrapped.lines)
+        it->second.push_back(parse_rich_text(line_source(*e.wrapped.measured, line), weight));
+    e.runs = &it->second;
   }
   return *e.runs;
 }

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,9 +71,11 @@ class TextMeasure {
                           static_cast<std::uint64_t>(k.weight) + (k.from << 1));
     }
   };
+  struct Measured;
   struct Entry {
     WrappedText wrapped;
-    std::optional<std::vector<std::vector<TextRun>>> runs;
+    const Measured* source = nullptr;
+    const std::vector<std::vector<TextRun>>* runs = nullptr;  // the source's, once asked for
   };
 
   // A text's measured words, and after each word whether a sentence ends there outside any
@@ -80,6 +83,10 @@ class TextMeasure {
   struct Measured {
     MeasuredText text;
     std::vector<std::vector<bool>> sentence_ends;  // [piece][word]
+    // The lines' runs at a width (its bits) from a word on, made for the first document that
+    // asks and kept with the measure: a heading, a prompt or a statement set again at a width
+    // it had is not parsed again. Filled by the thread that holds the measure.
+    mutable std::map<std::pair<std::uint64_t, std::size_t>, std::vector<std::vector<TextRun>>> runs;
   };
 
   Entry& entry(const RichText& text, double size, double width, Weight weight, std::size_t from);
