@@ -19,51 +19,47 @@ struct Scaled {
 
 bool scale(P2 p, Scaled& s) { return round_scaled(p.x, kDecimals, s.x) && round_scaled(p.y, kDecimals, s.y); }
 
-// The length of append_scaled's text for `n`, without writing it: the integer part's digits,
-// then ".d" or ".dd" for the decimals that are not trailing zeros.
-int scaled_length(long long n) {
-  static_assert(kDecimals == 2);
-  if (n == 0) return 1;
-  unsigned long long m = n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
-  const unsigned long long decimals = m % 100;
-  int length = (n < 0 ? 1 : 0) + (decimals == 0 ? 0 : decimals % 10 == 0 ? 2 : 3);
-  m /= 100;
-  for (; m >= 1000; m /= 1000) length += 3;
-  return length + (m >= 100 ? 3 : m >= 10 ? 2 : 1);
-}
-
-// A command's numbers after its letter: a separator only where a number would run into the
-// previous one (a minus sign separates by itself).
+// A command's letter and numbers, written backwards to end at `end` (the last number first);
+// returns where they start. A separator only where a number would run into the previous one (a
+// minus sign separates by itself).
 template <std::size_t N>
-int numbers_length(const std::array<long long, N>& values) {
-  int length = 0;
-  for (std::size_t i = 0; i < N; ++i) length += scaled_length(values[i]) + (i > 0 && values[i] >= 0 ? 1 : 0);
-  return length;
-}
-
-// Written backwards into a buffer, the last number first, and appended in one piece.
-template <std::size_t N>
-void write_command(std::string& d, char letter, const std::array<long long, N>& values) {
-  char buf[1 + N * (kScaledRoom + 1)];
-  char* const end = std::end(buf);
+char* command_before(char* end, char letter, const std::array<long long, N>& values) {
   char* p = end;
   for (std::size_t i = N; i-- > 0;) {
     p = scaled_before(p, values[i], kDecimals);
     if (i > 0 && values[i] >= 0) *--p = ' ';
   }
   *--p = letter;
+  return p;
+}
+
+template <std::size_t N>
+constexpr std::size_t kCommandRoom = 1 + N * (kScaledRoom + 1);
+
+// Written backwards into a buffer and appended in one piece.
+template <std::size_t N>
+void write_command(std::string& d, char letter, const std::array<long long, N>& values) {
+  char buf[kCommandRoom<N>];
+  char* const end = std::end(buf);
+  const char* p = command_before(end, letter, values);
   d.append(p, static_cast<std::size_t>(end - p));
 }
 
 // The shorter of a command's absolute and relative forms (absolute on a tie: the choice depends
-// on integers only, so it is the same on every platform).
+// on integers only, so it is the same on every platform). Both are written, the shorter kept:
+// cheaper than counting both lengths and then writing one.
 template <std::size_t N>
 void shorter(std::string& d, char absolute, const std::array<long long, N>& abs_values, char relative,
              const std::array<long long, N>& rel_values) {
-  if (numbers_length(rel_values) < numbers_length(abs_values))
-    write_command(d, relative, rel_values);
+  char abs_buf[kCommandRoom<N>], rel_buf[kCommandRoom<N>];
+  char* const abs_end = std::end(abs_buf);
+  char* const rel_end = std::end(rel_buf);
+  const char* a = command_before(abs_end, absolute, abs_values);
+  const char* r = command_before(rel_end, relative, rel_values);
+  if (rel_end - r < abs_end - a)
+    d.append(r, static_cast<std::size_t>(rel_end - r));
   else
-    write_command(d, absolute, abs_values);
+    d.append(a, static_cast<std::size_t>(abs_end - a));
 }
 
 void append_absolute(std::string& d, const Path& path) {
