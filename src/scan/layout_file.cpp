@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <fstream>
 #include <sstream>
@@ -209,6 +212,21 @@ namespace {
 // order, its keys sorted, so callers give them sorted. Numbers go through nlohmann's own double
 // formatting (Grisu2, `12.0` for an integral value), which is not always the shortest fmt
 // would write; strings that need escaping go through nlohmann itself.
+
+// A number's text as nlohmann writes it, remembered in a slot chosen by the number's bits (a
+// thread's table, 4,096 slots: a later number of the same slot takes it over).
+struct NumberText {
+  bool used = false;
+  unsigned char length = 0;
+  std::uint64_t bits = 0;
+  char text[30];
+};
+NumberText& number_slot(double d) {
+  thread_local std::array<NumberText, 4096> slots;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(d);
+  return slots[static_cast<std::size_t>((bits * 0x9e3779b97f4a7c15ULL) >> 52)];
+}
+
 class Dump1 {
  public:
   explicit Dump1(std::string& out) : out_(out) {}
@@ -230,9 +248,23 @@ class Dump1 {
       out_ += "null";
       return;
     }
-    std::array<char, 64> buf;  // nlohmann's own number buffer's size
-    char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), d);
-    out_.append(buf.data(), static_cast<std::size_t>(end - buf.data()));
+    // A set's layout repeats its numbers (the cells' columns, sizes, the code's place): on 100
+    // sheets 101,303 numbers, 1,637 distinct. Grisu2's text of each is remembered by its bits.
+    NumberText& slot = number_slot(d);
+    if (!slot.used || slot.bits != std::bit_cast<std::uint64_t>(d)) {
+      std::array<char, 64> buf;  // nlohmann's own number buffer's size
+      char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), d);
+      const auto length = static_cast<std::size_t>(end - buf.data());
+      if (length > sizeof slot.text) {
+        out_.append(buf.data(), length);
+        return;
+      }
+      slot.used = true;
+      slot.bits = std::bit_cast<std::uint64_t>(d);
+      slot.length = static_cast<unsigned char>(length);
+      std::memcpy(slot.text, buf.data(), length);
+    }
+    out_.append(slot.text, slot.length);
   }
   void value(int n) {
     item();
