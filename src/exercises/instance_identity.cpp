@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
 #include <stdexcept>
 
 #include "solve/json_out.h"
@@ -29,11 +30,11 @@ InstanceWriter& InstanceWriter::number(std::string_view field, double x) {
   return *this;
 }
 InstanceWriter& InstanceWriter::pair(std::string_view field, double a, double b) {
-  text_ += fmt::format(",\"{}\":[{},{}]", field, number_text(a), number_text(b));
+  fmt::format_to(std::back_inserter(text_), ",\"{}\":[{},{}]", field, number_text(a), number_text(b));
   return *this;
 }
 InstanceWriter& InstanceWriter::triple(std::string_view field, double a, double b, double c) {
-  text_ += fmt::format(",\"{}\":[{},{},{}]", field, number_text(a), number_text(b), number_text(c));
+  fmt::format_to(std::back_inserter(text_), ",\"{}\":[{},{},{}]", field, number_text(a), number_text(b), number_text(c));
   return *this;
 }
 InstanceWriter& InstanceWriter::point(std::string_view field, geo::Point2 p) { return pair(field, p.x, p.y); }

@@ -48,10 +48,21 @@ double Questions::points_for(std::string_view field) const {
   return 1;
 }
 
-std::string Questions::id(std::string_view field) const { return fmt::format("{}.{}", number_of(ctx_), field); }
+// Joined by hand rather than through fmt::format: every question of every draw asks both.
+std::string Questions::id(std::string_view field) const {
+  std::string id = number_of(ctx_);
+  id += '.';
+  id += field;
+  return id;
+}
 
 std::string Questions::prompt(std::string_view field) const {
-  return ctx_.texts.get(fmt::format("{}.q.{}", ctx_.spec.kind, field));
+  std::string key;
+  key.reserve(ctx_.spec.kind.size() + 3 + field.size());
+  key += ctx_.spec.kind;
+  key += ".q.";
+  key += field;
+  return ctx_.texts.get(key);
 }
 
 std::string Questions::answer_text(double value, const std::optional<exact::Surd>& exact) const {
