@@ -104,8 +104,8 @@ class Parser {
   RichSink& sink_;
 };
 
-double advance_sum(std::string_view text, Face face) {
-  double em = 0;
+// The advances of `text` added to `em`, one character after the other (from 0: a text's sum).
+double advance_sum(std::string_view text, Face face, double em = 0) {
   const auto& ascii = detail::kAdvanceEm[face == Face::bold ? 1 : 0];
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = static_cast<unsigned char>(text[i]);
@@ -307,10 +307,49 @@ double text_width(std::span<const TextRun> runs, double font_size) {
   return width * font_size;
 }
 
+namespace {
+
+// text_width of the runs parse_rich_text would make, from the parser's pieces without making
+// them: a run's advances are added piece after piece, in the run's order (a piece never splits a
+// character: pieces end at ASCII markup), then scaled and added as text_width adds the runs.
+class WidthSink final : public RichSink {
+ public:
+  explicit WidthSink(Face face) : face_(face) {}
+  void piece(std::string_view text, Shift shift, bool arrow) override {
+    if (!open_ || shift != shift_ || arrow != arrow_) {
+      close();
+      open_ = true;
+      shift_ = shift;
+      arrow_ = arrow;
+    }
+    em_ = advance_sum(text, face_, em_);
+  }
+  double width() {
+    close();
+    return width_;
+  }
+
+ private:
+  void close() {
+    if (open_) width_ += em_ * (shift_ == Shift::none ? 1.0 : kScriptScale);
+    open_ = false;
+    em_ = 0;
+  }
+  Face face_;
+  bool open_ = false, arrow_ = false;
+  Shift shift_ = Shift::none;
+  double em_ = 0, width_ = 0;
+};
+
+}  // namespace
+
 double text_width(std::string_view rich, double font_size, Weight weight) {
+  const Face face = weight == Weight::bold ? Face::bold : Face::regular;
   // Without markup, one unshifted run: the same sum and product as text_width of the runs.
-  if (!may_hold_markup(rich)) return advance_sum(rich, weight == Weight::bold ? Face::bold : Face::regular) * font_size;
-  return text_width(parse_rich_text(rich, weight), font_size);
+  if (!may_hold_markup(rich)) return advance_sum(rich, face) * font_size;
+  WidthSink sink(face);
+  Parser(rich, sink).run();
+  return sink.width() * font_size;
 }
 
 std::vector<std::vector<TextRun>> wrap_rich_text(std::string_view rich, double font_size,

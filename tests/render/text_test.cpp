@@ -88,9 +88,11 @@ TEST_CASE("parse_rich_text: the three markups, escapes, and literal leftovers") 
   }
 }
 
-TEST_CASE("parse_rich_text and text_width: a text without markup, taken as one run, is the parser's") {
+TEST_CASE("parse_rich_text and text_width: the short ways give the parser's runs and their widths") {
   // The parser's pieces gathered into runs as parse_rich_text gathers them, against its short way
-  // for texts without '\\', '_' or '^' (braces alone are literal); widths to the bit.
+  // for texts without '\\', '_' or '^' (braces alone are literal); and text_width, which sums a
+  // text's advances piece by piece without making runs, against text_width of those runs, to
+  // the bit.
   struct Gather final : RichSink {
     std::vector<TextRun> runs;
     bool bold = false;
