@@ -33,6 +33,20 @@ bool ends_sentence(std::string_view word) {
   return !word.empty() && (word.back() == '.' || word.back() == '!' || word.back() == '?');
 }
 
+// A line's source (line_source) as a view of the text when its words stand one space apart
+// there, as they mostly do; else built in `scratch`.
+std::string_view line_text(const MeasuredText& m, const MeasuredLine& line, std::string& scratch) {
+  if (line.end == line.first) return {};  // an empty line: line_source's ""
+  const auto& ws = m.pieces[line.piece];
+  for (std::size_t k = line.first + 1; k < line.end; ++k)
+    if (ws[k].offset != ws[k - 1].offset + ws[k - 1].size + 1) {
+      scratch = line_source(m, line);
+      return scratch;
+    }
+  const std::size_t begin = ws[line.first].offset, end = ws[line.end - 1].offset + ws[line.end - 1].size;
+  return std::string_view(m.text).substr(begin, end - begin);
+}
+
 }  // namespace
 
 const TextMeasure::Measured& TextMeasure::measured(const RichText& text, double size, Weight weight) {
@@ -122,9 +136,11 @@ const std::vector<std::vector<TextRun>>& TextMeasure::wrap(const RichText& text,
   Entry& e = entry(text, size, width, weight, from);
   if (!e.runs) {
     auto [it, fresh] = e.source->runs.try_emplace({bits(width), from});
-    if (fresh)
+    if (fresh) {
+      std::string scratch;
       for (const MeasuredLine& line : e.wrapped.lines)
-        it->second.push_back(parse_rich_text(line_source(*e.wrapped.measured, line), weight));
+        it->second.push_back(parse_rich_text(line_text(*e.wrapped.measured, line, scratch), weight));
+    }
     e.runs = &it->second;
   }
   return *e.runs;
