@@ -12,9 +12,12 @@
 
 #include "render/qr_mask.h"
 
-// libqrencode's encoder with a given mask (-1: its own choice), exported by libqrencode 4 but
-// declared only in its internal header (qrencode_inner.h), where its tests find it.
+#ifdef EPURE_QR_ENCODE_MASK
+// libqrencode's encoder with a given mask (-1: its own choice), declared only in its internal
+// header (qrencode_inner.h) and static in 4.1 unless built with its tests: Debian's build is, and
+// lists it in its symbols file. src/CMakeLists.txt defines EPURE_QR_ENCODE_MASK when it links.
 extern "C" QRcode* QRcode_encodeMask(QRinput* input, int mask);
+#endif
 
 namespace epure::render {
 
@@ -22,6 +25,7 @@ namespace {
 
 using CodePtr = std::unique_ptr<QRcode, decltype(&QRcode_free)>;
 
+#ifdef EPURE_QR_ENCODE_MASK
 // The 15 format bits of level M for masks 0–7 (ISO/IEC 18004, table C.1: the level's two bits and
 // the mask's three, their BCH code, XOR 101010000010010), as libqrencode writes them.
 constexpr std::array<unsigned, 8> kFormatLevelM = {0x5412, 0x5125, 0x5e7c, 0x5b4b, 0x45f9, 0x40ce, 0x4f97, 0x4aa0};
@@ -50,12 +54,14 @@ std::optional<MaskedQr> remasked(const QRcode& masked0) {
     }
   return mask_qr(frame, w, kFormatLevelM);
 }
+#endif
 
 }  // namespace
 
 QrCode encode_qr(std::string_view text) {
   const std::string data(text);
   // 8-bit mode: sheet ids mix cases and digits, which the alphanumeric mode would upper-case.
+#ifdef EPURE_QR_ENCODE_MASK
   // libqrencode's own mask choice costs nine tenths of an encoding: the symbol is encoded with
   // mask 0 and masked again here on rows of bits (render/qr_mask.h), with libqrencode's choice.
   CodePtr code = encode_with_mask(data, 0);
@@ -71,6 +77,14 @@ QrCode encode_qr(std::string_view text) {
   }
   code = encode_with_mask(data, -1);  // wider than a row of bits: libqrencode chooses
   if (!code) throw std::runtime_error("cannot encode '" + data + "' as a QR code");
+#else
+  // A libqrencode without QRcode_encodeMask: its own choice of the mask.
+  CodePtr code(QRcode_encodeString8bit(data.c_str(), 0, QR_ECLEVEL_M), &QRcode_free);
+  if (!code) throw std::runtime_error("cannot encode '" + data + "' as a QR code");
+  QrCode qr;
+  qr.size = code->width;
+  qr.modules.resize(static_cast<std::size_t>(qr.size * qr.size));
+#endif
   // Bit 0 of each byte is the module's colour; the other bits say what the module is for.
   for (std::size_t i = 0; i < qr.modules.size(); ++i) qr.modules[i] = (code->data[i] & 1) != 0;
   return qr;

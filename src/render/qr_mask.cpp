@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 
 namespace epure::render {
 
@@ -27,31 +28,35 @@ bool flips(int mask, int x, int y) {
   }
 }
 
-// The eight masks' flips as rows of bits, for one width (a thread draws symbols of one or two
-// widths: the last one is kept).
+// The eight masks' flips as rows of bits, for one width.
 struct MaskRows {
-  int width = 0;
   std::uint64_t rows[8][kQrMaskMaxWidth] = {};
   std::uint64_t cols[8][kQrMaskMaxWidth] = {};  // the same flips by column: bit y of cols[m][x]
 };
 
 const MaskRows& mask_rows(int width) {
-  thread_local MaskRows cache;
-  if (cache.width != width) {
-    cache = MaskRows{};
+  // A thread's flips, made once a width (a set alternates a few versions) and kept on the heap: a
+  // thread_local table of 8 KB a width would be part of the executable's static TLS block, which
+  // every thread the process creates gets zeroed.
+  using Table = std::array<std::unique_ptr<MaskRows>, kQrMaskMaxWidth + 1>;
+  thread_local std::unique_ptr<Table> table;
+  if (!table) table = std::make_unique<Table>();
+  std::unique_ptr<MaskRows>& flips_of = (*table)[static_cast<std::size_t>(width)];
+  if (!flips_of) {
+    flips_of = std::make_unique<MaskRows>();
+    MaskRows& made = *flips_of;
     for (int m = 0; m < 8; ++m)
       for (int y = 0; y < width; ++y) {
         std::uint64_t r = 0;
         for (int x = 0; x < width; ++x)
           if (flips(m, x, y)) {
             r |= std::uint64_t{1} << x;
-            cache.cols[m][x] |= std::uint64_t{1} << y;
+            made.cols[m][x] |= std::uint64_t{1} << y;
           }
-        cache.rows[m][y] = r;
+        made.rows[m][y] = r;
       }
-    cache.width = width;
   }
-  return cache;
+  return *flips_of;
 }
 
 std::uint64_t low_bits(int n) { return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1; }

@@ -3,8 +3,10 @@
 // bits: the eight masks' penalties (its N1–N4 rules, its run lists and its black-ratio rounding)
 // and the first mask of the lowest penalty. libqrencode spends 90 % of a page code's encoding
 // there, one byte a module; the page codes (one a sheet's page) were 7 % of an SVG set's
-// instructions. The data and the frame are still libqrencode's (its encoding with mask 0, unmasked),
-// so the choice must be exactly its own: tests/render/qr_mask_test.cpp compares the choice with
+// instructions. The data and the frame are still libqrencode's (its encoding with mask 0, unmasked,
+// through QRcode_encodeMask: declared only in its internal header, exported by Debian's build, which
+// is built with its tests and lists it in its symbols file; src/CMakeLists.txt checks it links), so
+// the choice must be exactly its own: tests/render/qr_mask_test.cpp compares the choice with
 // Mask_mask's on random frames and the symbols with QRcode_encodeString8bit's on 1,800 texts.
 #include <array>
 #include <cstdint>

@@ -5,14 +5,16 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <iterator>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <utility>
+
+#include "support/portable.h"
 
 namespace epure::scan {
 
@@ -204,15 +206,6 @@ std::string layout_json_begin(const SetLayout& layout) {
 
 namespace {
 
-// A sheet's JSON written straight into a string, byte for byte as nlohmann's dump(1) writes the
-// same value (the file's bytes do not change), without building the tree: `epure generate`
-// writes one per sheet, and building and dumping nlohmann's tree of maps cost 9 % of an SVG set's
-// CPU (bench/README.md, "Pages"). dump(1) puts every member and element on a line of its own,
-// indented one space a level, an empty list as `[]`; an object's members come in nlohmann's
-// order, its keys sorted, so callers give them sorted. Numbers go through nlohmann's own double
-// formatting (Grisu2, `12.0` for an integral value), which is not always the shortest fmt
-// would write; strings that need escaping go through nlohmann itself.
-
 // A number's text as nlohmann writes it, remembered in a slot chosen by the number's bits (a
 // thread's table, 4,096 slots: a later number of the same slot takes it over).
 struct NumberText {
@@ -221,11 +214,26 @@ struct NumberText {
   std::uint64_t bits = 0;
   char text[30];
 };
-NumberText& number_slot(double d) {
-  thread_local std::array<NumberText, 4096> slots;
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(d);
-  return slots[static_cast<std::size_t>((bits * 0x9e3779b97f4a7c15ULL) >> 52)];
+// nlohmann's to_chars writes at most 24 bytes for a double (a sign, 17 digits, the point, the
+// exponent's 'e', sign and three digits): every finite number's text fits its slot.
+static_assert(sizeof NumberText::text >= 24);
+NumberText& number_slot(std::uint64_t bits) {
+  // On the heap, made at a thread's first number: a thread_local array (192 KB) would be part of
+  // the executable's static TLS block, which every thread the process creates gets zeroed.
+  using Slots = std::array<NumberText, 4096>;
+  thread_local std::unique_ptr<Slots> slots;
+  if (!slots) slots = std::make_unique<Slots>();
+  return (*slots)[static_cast<std::size_t>((bits * 0x9e3779b97f4a7c15ULL) >> 52)];
 }
+
+// A sheet's JSON written straight into a string, byte for byte as nlohmann's dump(1) writes the
+// same value (the file's bytes do not change), without building the tree: `epure generate`
+// writes one per sheet, and building and dumping nlohmann's tree of maps cost 9 % of an SVG set's
+// CPU (bench/README.md, "Pages"). dump(1) puts every member and element on a line of its own,
+// indented one space a level, an empty list as `[]`; an object's members come in nlohmann's
+// order, its keys sorted, so callers give them sorted. Numbers go through nlohmann's own double
+// formatting (Grisu2, `12.0` for an integral value), which is not always the shortest fmt
+// would write; strings that need escaping go through nlohmann itself.
 
 class Dump1 {
  public:
@@ -250,17 +258,18 @@ class Dump1 {
     }
     // A set's layout repeats its numbers (the cells' columns, sizes, the code's place): on 100
     // sheets 101,303 numbers, 1,637 distinct. Grisu2's text of each is remembered by its bits.
-    NumberText& slot = number_slot(d);
-    if (!slot.used || slot.bits != std::bit_cast<std::uint64_t>(d)) {
+    const auto bits = portable::bit_cast<std::uint64_t>(d);
+    NumberText& slot = number_slot(bits);
+    if (!slot.used || slot.bits != bits) {
       std::array<char, 64> buf;  // nlohmann's own number buffer's size
       char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), d);
       const auto length = static_cast<std::size_t>(end - buf.data());
-      if (length > sizeof slot.text) {
-        out_.append(buf.data(), length);
+      if (length > sizeof slot.text) {  // never taken (the static_assert above): a guard, should
+        out_.append(buf.data(), length);  // nlohmann's format ever grow
         return;
       }
       slot.used = true;
-      slot.bits = std::bit_cast<std::uint64_t>(d);
+      slot.bits = bits;
       slot.length = static_cast<unsigned char>(length);
       std::memcpy(slot.text, buf.data(), length);
     }
