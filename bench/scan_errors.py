@@ -2,14 +2,16 @@
 """Where a scan's errors and reviews come from, on stacks made by bench/scan_accuracy.sh (each
 directory: truth.json, layout.json, out/fields.csv, figures.json):
 
-    scan_errors.py STACK_DIR... [--threshold 0.85]
+    scan_errors.py STACK_DIR... [--threshold 0.82]
 
 Per stack and in total: fields, silent errors, fields sent to review (ticks, combs), digit cells
 read right; then, over all stacks, comb cells by what was written (digit, minus, empty) with how
 many were misread and how many fell under the review threshold; the digit confusions; why comb
 fields went to review (a digit cell under the threshold, an empty or a minus cell, the assembly);
 and the threshold's curve (comb fields to review / silent errors) recomputed from the cells'
-confidences.
+confidences. A cell's confidence is after scan's second look (field_reading.h) at the cells read
+under 0.90: the curve's points under 0.90 are what scan gives with that threshold; its points
+from 0.90 would need the second look at more cells.
 """
 import collections
 import csv
@@ -30,12 +32,12 @@ def expected_cells(f, v):
     return ([("-" if neg else " ")] if sign else []) + [" "] * (ints - len(ip)) + list(ip) + list(dp) + [" "] * (dec - len(dp))
 
 
-THRESHOLDS = (0.5, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
+THRESHOLDS = (0.5, 0.6, 0.7, 0.75, 0.78, 0.8, 0.81, 0.82, 0.83, 0.84, 0.85, 0.88, 0.9, 0.95, 0.98)
 
 
 def main():
     args = sys.argv[1:]
-    thr = 0.85  # field_reading.h kCellConfidence
+    thr = 0.82  # field_reading.h kCellConfidence
     if "--threshold" in args:
         k = args.index("--threshold"); thr = float(args[k + 1]); del args[k:k + 2]
     total = collections.Counter()

@@ -11,7 +11,8 @@
 // kernels are chosen per CPU (SIMD widths, Winograd), so the same crop could give other bits on
 // another machine. Here every sum runs in one fixed order in float with no contraction
 // (-ffp-contract=off): the same crop gives the same probabilities on every run and every x86-64
-// or ARM machine.
+// or ARM machine, whether the convolutions run eight floats a register (AVX2, where the CPU has
+// it) or four (x86-64's baseline, ARM).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -79,7 +80,12 @@ class DigitClassifier {
   // version-4 file alone is read as a one-network ensemble. Throws std::runtime_error when the
   // bytes are not that (version 1, the first network's 16-32-64-64 with no widths in the header,
   // is no longer read).
-  explicit DigitClassifier(std::string_view weights);
+  //
+  // `product`: how the convolutions run, best (eight floats a register where the CPU has AVX2,
+  // four otherwise) or baseline (four, on every x86-64): the same bits, a third of the time
+  // apart; baseline is there for the test of both.
+  enum class Product { best, baseline };
+  explicit DigitClassifier(std::string_view weights, Product product = Product::best);
   // The networks epure carries (classifier/digits.weights, compiled in).
   static const DigitClassifier& builtin();
 
@@ -94,6 +100,7 @@ class DigitClassifier {
 
  private:
   std::vector<DigitNetwork> nets_;
+  bool wide_ = false;  // the convolutions' AVX2 product
 };
 
 }  // namespace epure::scan

@@ -57,17 +57,24 @@ struct TickReading {
   double light_sides = 0;  // the least of the four sides' middles past kLightInk
 };
 
-// A cell read by the network below this confidence sends its field to review. Chosen on the
-// trade-off between fields sent to review and silent errors (a wrong value not sent to review)
-// measured on the suite's scans of generate's French sheets (README, "epure scan": four stacks
-// of 24 sheets, 3,655 comb fields; comb fields to review / silent errors with the three networks
-// of depth 2 trained on MNIST's 58,004 digits, 2026-12-06, 07:20 UTC: 0.80: 179 / 8, 0.82:
-// 208 / 6, 0.84: 233 / 4, 0.85: 249 / 3, 0.90: 372 / 2): 0.85 is the lowest whose silent errors
-// stay well under the 0.1 % (4.8 fields); confirmed on four other stacks (set seed 6,
-// stack seeds 61-64: 234 / 2). (The depth-1 networks before them: 0.80, at 364 / 2.) The
-// networks are trained with label smoothing (0.05), so their confidence never passes about 0.95:
-// a threshold near that would send every field.
-inline constexpr float kCellConfidence = 0.85f;
+// A cell read by the network below this confidence (after the second look below) sends its
+// field to review. Chosen on the trade-off between fields sent to review and silent errors (a
+// wrong value not sent to review) measured on the suite's scans of generate's French sheets
+// (README, "epure scan": three samples of four stacks of 24 sheets, sets of seeds 5, 6 and 7,
+// about 3,660 comb fields each; comb fields to review / silent errors with the three networks of
+// depth 2 and the second look, 2026-12-06, 10:00 UTC: 0.80: 230 / 3, 224 / 1, 228 / 7; 0.81:
+// 239 / 3, 232 / 1, 241 / 5; 0.82: 249 / 3, 239 / 1, 251 / 4; 0.85: 297 / 2, 273 / 0, 282 / 4):
+// 0.82 is the lowest whose silent errors stay under the 0.1 % (4.8 fields) on every
+// sample. (Without the second look, 0.85 gave 249 / 3, 234 / 2 and 234 / 9: the third sample
+// past 0.1 %.) The networks are trained with label smoothing (0.05), so their confidence never
+// passes about 0.95: a threshold near that would send every field.
+inline constexpr float kCellConfidence = 0.82f;
+
+// A cell read under kSecondLook is read again from four crops moved by kSecondLookShift of its
+// height (field_reading.cpp, second_look), and its confidence is then the five readings' mean.
+// The shift is train_digits.py's registration error (its cell borders drawn off by up to 0.08 H).
+inline constexpr float kSecondLook = 0.90f;
+inline constexpr double kSecondLookShift = 0.08;
 
 // A comb cell as a field's reading keeps it: the network's best class and its probability, not
 // the other classes' (a stack's readings are all kept until the outputs are written).

@@ -237,9 +237,10 @@ std::array<T, kClassCount> plain_logits(std::uint32_t depth, std::array<std::uin
 }  // namespace
 
 TEST_CASE("digit classifier: a version-4 network (stages of several convolutions) reads as a plain convolution does") {
-  // widths that make every layer run a full block and an edge (5 = 4 + 1 planes, 6 = 4 + 2, 12
-  // hidden units = 8 side by side + 4 one at a time), the pixels' edges too (196 = 24 x 8 + 4)
-  const std::array<std::uint32_t, 4> widths{5, 4, 6, 12};
+  // widths that make every layer run full blocks and edges, in both products (baseline: 9 = 4 +
+  // 4 + 1 planes, 10 = 4 + 4 + 2; with AVX2: 9 = 8 + 1, 10 = 8 + 2, 12 = 8 + 4; 12 hidden units =
+  // 8 side by side + 4 one at a time), the pixels' edges too (196 = 24 x 8 + 4, 9 = 8 + 1)
+  const std::array<std::uint32_t, 4> widths{9, 10, 12, 12};
   std::uint64_t state = 20261206;  // a fixed LCG: the same weights on every machine
   auto next = [&state] {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -267,6 +268,9 @@ TEST_CASE("digit classifier: a version-4 network (stages of several convolutions
     // summed in float in the promised order: the same bits
     const auto same_order = plain_logits<float>(depth, widths, w, crop);
     CHECK(std::equal(z.begin(), z.end(), same_order.begin()));
+    // the baseline product (four floats a register) too, where `net` runs AVX2's if the CPU has it
+    const auto zs = DigitClassifier(version4(depth, widths, w), DigitClassifier::Product::baseline).logits(0, crop);
+    CHECK(std::equal(zs.begin(), zs.end(), same_order.begin()));
     if (depth == 1) {
       // a depth-1 version-4 file is the version-2 file of the same floats
       std::string v2 = "EPDG" + u32(2) + u32(static_cast<std::uint32_t>(count));
