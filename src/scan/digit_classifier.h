@@ -82,10 +82,12 @@ class DigitClassifier {
   // is no longer read).
   //
   // `product`: how the convolutions run, best (eight floats a register where the CPU has AVX2,
-  // four otherwise) or baseline (four, on every x86-64): the same bits, a third of the time
-  // apart; baseline is there for the test of both.
+  // four otherwise) or baseline (four, on every x86-64): the same bits, AVX2's in a third less
+  // time; baseline is there for the test of both.
   enum class Product { best, baseline };
   explicit DigitClassifier(std::string_view weights, Product product = Product::best);
+  // Whether the convolutions run AVX2's product (Product::best on a CPU that has it).
+  bool wide() const { return wide_; }
   // The networks epure carries (classifier/digits.weights, compiled in).
   static const DigitClassifier& builtin();
 

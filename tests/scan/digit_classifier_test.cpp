@@ -239,7 +239,7 @@ std::array<T, kClassCount> plain_logits(std::uint32_t depth, std::array<std::uin
 TEST_CASE("digit classifier: a version-4 network (stages of several convolutions) reads as a plain convolution does") {
   // widths that make every layer run full blocks and edges, in both products (baseline: 9 = 4 +
   // 4 + 1 planes, 10 = 4 + 4 + 2; with AVX2: 9 = 8 + 1, 10 = 8 + 2, 12 = 8 + 4; 12 hidden units =
-  // 8 side by side + 4 one at a time), the pixels' edges too (196 = 24 x 8 + 4, 9 = 8 + 1)
+  // 8 side by side + 4 one at a time), the pixels' edges too (196 = 24 x 8 + 4, 49 = 6 x 8 + 1)
   const std::array<std::uint32_t, 4> widths{9, 10, 12, 12};
   std::uint64_t state = 20261206;  // a fixed LCG: the same weights on every machine
   auto next = [&state] {
@@ -269,7 +269,16 @@ TEST_CASE("digit classifier: a version-4 network (stages of several convolutions
     const auto same_order = plain_logits<float>(depth, widths, w, crop);
     CHECK(std::equal(z.begin(), z.end(), same_order.begin()));
     // the baseline product (four floats a register) too, where `net` runs AVX2's if the CPU has it
-    const auto zs = DigitClassifier(version4(depth, widths, w), DigitClassifier::Product::baseline).logits(0, crop);
+    const DigitClassifier baseline(version4(depth, widths, w), DigitClassifier::Product::baseline);
+    CHECK_FALSE(baseline.wide());
+#if defined(__x86_64__) && defined(__GNUC__)
+    CHECK(net.wide() == static_cast<bool>(__builtin_cpu_supports("avx2")));
+#endif
+    if (depth == 1) {
+      const char* which = net.wide() ? "the AVX2 product checked against the baseline" : "this CPU has no AVX2: the baseline product alone";
+      MESSAGE(which);
+    }
+    const auto zs = baseline.logits(0, crop);
     CHECK(std::equal(zs.begin(), zs.end(), same_order.begin()));
     if (depth == 1) {
       // a depth-1 version-4 file is the version-2 file of the same floats
