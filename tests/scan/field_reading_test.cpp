@@ -61,6 +61,11 @@ struct CombPage {
     cv::line(page, px(25, 24), px(29, 35), cv::Scalar(20), 6);
     cv::circle(page, px(41, 29), 18, cv::Scalar(20), 6);
   }
+  FieldReading read(const DigitClassifier& net) const { return read_field(page, map, field, 255, -1, ",", net); }
+  // Cell i's reading from its crop alone.
+  CellReading first_reading(const DigitClassifier& net, std::size_t i) const {
+    return net.classify(crop_cell(page, map, field.cells[i], levels));
+  }
   // The five readings' mean (the crop, then moved left, right, up, down), as second_look takes it.
   CellReading five_readings(const DigitClassifier& net, const Rect& cell) const {
     std::array<double, kClassCount> sum{};
@@ -86,11 +91,11 @@ struct CombPage {
 TEST_CASE("comb cells: a cell read under kSecondLook is read again from four moved crops, the five readings averaged") {
   const CombPage p;
   const DigitClassifier net = random_network(0.5f, 0);
-  const FieldReading r = read_field(p.page, p.map, p.field, 255, -1, ",", net);
+  const FieldReading r = p.read(net);
   REQUIRE(r.cells.size() == 3);
   for (std::size_t i = 0; i < 2; ++i) {
     CAPTURE(i);
-    const CellReading first = net.classify(crop_cell(p.page, p.map, p.field.cells[i], p.levels));
+    const CellReading first = p.first_reading(net, i);
     REQUIRE(first.confidence < kSecondLook);
     const CellReading mean = p.five_readings(net, p.field.cells[i]);
     CHECK(r.cells[i].best == mean.best);
@@ -107,11 +112,11 @@ TEST_CASE("comb cells: a cell read under kSecondLook is read again from four mov
 TEST_CASE("comb cells: a cell read from kSecondLook up is taken at its first reading") {
   const CombPage p;
   const DigitClassifier net = random_network(0.1f, 6);
-  const FieldReading r = read_field(p.page, p.map, p.field, 255, -1, ",", net);
+  const FieldReading r = p.read(net);
   REQUIRE(r.cells.size() == 3);
   for (std::size_t i = 0; i < 2; ++i) {
     CAPTURE(i);
-    const CellReading first = net.classify(crop_cell(p.page, p.map, p.field.cells[i], p.levels));
+    const CellReading first = p.first_reading(net, i);
     REQUIRE(first.confidence >= kSecondLook);
     REQUIRE(p.five_readings(net, p.field.cells[i]).confidence != first.confidence);  // a second look would show
     CHECK(r.cells[i].best == CellClass::d3);
