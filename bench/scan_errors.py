@@ -10,8 +10,9 @@ many were misread and how many fell under the review threshold; the digit confus
 fields went to review (a digit cell under the threshold, an empty or a minus cell, the assembly);
 and the threshold's curve (comb fields to review / silent errors) recomputed from the cells'
 confidences. A cell's confidence is after scan's second look (field_reading.h) at the cells read
-under 0.90: the curve's points under 0.90 are what scan gives with that threshold; its points
-from 0.90 would need the second look at more cells.
+under 0.90 and, in a sign cell, its share of the minus's and the empty cell's probability: the
+curve's points under 0.90 are what scan gives with that threshold; its points from 0.90 would
+need the second look at more cells.
 """
 import collections
 import csv

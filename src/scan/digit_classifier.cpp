@@ -322,8 +322,14 @@ CellReading DigitClassifier::classify(const CellCrop& crop) const {
     for (std::size_t c = 0; c < kClassCount; ++c) sum += e[c] = std::exp(static_cast<double>(z[c] - top));
     for (std::size_t c = 0; c < kClassCount; ++c) mean[c] += e[c] / sum;
   }
+  std::array<float, kClassCount> p;
+  for (std::size_t c = 0; c < kClassCount; ++c) p[c] = static_cast<float>(mean[c] / static_cast<double>(nets_.size()));
+  return reading_of(p);
+}
+
+CellReading reading_of(const std::array<float, kClassCount>& probability) {
   CellReading r;
-  for (std::size_t c = 0; c < kClassCount; ++c) r.probability[c] = static_cast<float>(mean[c] / static_cast<double>(nets_.size()));
+  r.probability = probability;
   const auto best = std::max_element(r.probability.begin(), r.probability.end());
   r.best = static_cast<CellClass>(best - r.probability.begin());
   r.confidence = *best;

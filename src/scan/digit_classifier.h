@@ -35,6 +35,10 @@ struct CellReading {
   std::array<float, kClassCount> probability{};
 };
 
+// A reading from its classes' probabilities: the likeliest class (the first of equals) and its
+// probability.
+CellReading reading_of(const std::array<float, kClassCount>& probability);
+
 // The character a class stands for: '0'-'9', '-', or ' ' for empty.
 char class_char(CellClass c);
 

@@ -172,29 +172,26 @@ Assembled assemble(const std::string& chars, const FieldLayout& f, const std::st
   return a;
 }
 
-// A second look at a cell the networks are unsure of: the cell read again from four crops moved
-// by a registration error (left, right, up, down), the five readings' probabilities averaged
-// (in double, in that order). A digit the networks read right sits in their crops wherever
-// registration puts it, within the error they were trained with; a doubtful reading is often
-// one crop's accident (a stroke cut by the border, a neighbour's stroke in the margin), which
-// the moved crops do not share. Measured on the suite's scans (README, "epure scan"): fewer
-// fields to review for as many silent errors, which is what the threshold trades.
+// A second look at a cell the networks are unsure of: the cell read again from crops made with
+// the errors registration and handwriting leave (moved left, right, up and down by
+// kSecondLookShift of its height; smaller and larger by kSecondLookScale about its centre), the
+// seven readings' probabilities averaged (in double, in that order). A digit the networks read
+// right sits in their crops wherever registration puts it and whatever its size, within what
+// they were trained with; a doubtful reading is often one crop's accident (a stroke cut by the
+// border, a neighbour's stroke in the margin, a digit written large or small), which the other
+// crops do not share. Measured on the suite's scans (README, "epure scan"): fewer fields to
+// review for as many silent errors, which is what the threshold trades.
 CellReading second_look(const cv::Mat& g, const PageMap& map, const Rect& cell, const InkLevels& levels,
                         const DigitClassifier& net, const CellReading& first) {
   std::array<double, kClassCount> sum{};
   for (std::size_t c = 0; c < kClassCount; ++c) sum[c] = first.probability[c];
-  const double s = kSecondLookShift * cell.height;
-  const double moves[4][2] = {{-s, 0}, {s, 0}, {0, -s}, {0, s}};
-  for (const auto& d : moves) {
-    const CellReading r = net.classify(crop_cell(g, map, Rect{cell.x + d[0], cell.y + d[1], cell.width, cell.height}, levels));
+  for (const Rect& other : second_look_cells(cell)) {
+    const CellReading r = net.classify(crop_cell(g, map, other, levels));
     for (std::size_t c = 0; c < kClassCount; ++c) sum[c] += r.probability[c];
   }
-  CellReading out;
-  for (std::size_t c = 0; c < kClassCount; ++c) out.probability[c] = static_cast<float>(sum[c] / 5);
-  const auto best = std::max_element(out.probability.begin(), out.probability.end());
-  out.best = static_cast<CellClass>(best - out.probability.begin());
-  out.confidence = *best;
-  return out;
+  std::array<float, kClassCount> mean;
+  for (std::size_t c = 0; c < kClassCount; ++c) mean[c] = static_cast<float>(sum[c] / (1 + kSecondLookCrops));
+  return reading_of(mean);
 }
 
 void read_comb(const cv::Mat& g, const PageMap& map, const FieldLayout& f, const InkLevels& levels,
@@ -215,6 +212,7 @@ void read_comb(const cv::Mat& g, const PageMap& map, const FieldLayout& f, const
     } else {
       r = net.classify(crop);
       if (r.confidence < kSecondLook) r = second_look(g, map, f.cells[i], levels, net, r);
+      if (f.sign && i == 0) r = in_sign_cell(r);
     }
     out.cells.push_back({r.best, r.confidence});
     best_chars.push_back(class_char(r.best));
@@ -238,6 +236,26 @@ void read_comb(const cv::Mat& g, const PageMap& map, const FieldLayout& f, const
 }
 
 }  // namespace
+
+CellReading in_sign_cell(const CellReading& r) {
+  const std::size_t minus = static_cast<std::size_t>(CellClass::minus), empty = static_cast<std::size_t>(CellClass::empty);
+  const double held = static_cast<double>(r.probability[minus]) + r.probability[empty];
+  if (held < kSignCellHeld) return r;
+  std::array<float, kClassCount> p{};
+  p[minus] = static_cast<float>(r.probability[minus] / held);
+  p[empty] = static_cast<float>(r.probability[empty] / held);
+  return reading_of(p);
+}
+
+std::array<Rect, kSecondLookCrops> second_look_cells(const Rect& cell) {
+  const double s = kSecondLookShift * cell.height;
+  auto scaled = [&](double k) {
+    return Rect{cell.cx() - k * cell.width / 2, cell.cy() - k * cell.height / 2, k * cell.width, k * cell.height};
+  };
+  return {Rect{cell.x - s, cell.y, cell.width, cell.height}, Rect{cell.x + s, cell.y, cell.width, cell.height},
+          Rect{cell.x, cell.y - s, cell.width, cell.height}, Rect{cell.x, cell.y + s, cell.width, cell.height},
+          scaled(1 - kSecondLookScale), scaled(1 + kSecondLookScale)};
+}
 
 const char* tick_state_name(TickState s) {
   switch (s) {

@@ -24,6 +24,8 @@
 // separator; empty decimal cells read as zeros) with a confidence, the product of its cells'.
 #include <opencv2/core.hpp>
 
+#include <array>
+
 #include <string>
 #include <vector>
 
@@ -57,24 +59,43 @@ struct TickReading {
   double light_sides = 0;  // the least of the four sides' middles past kLightInk
 };
 
-// A cell read by the network below this confidence (after the second look below) sends its
-// field to review. Chosen on the trade-off between fields sent to review and silent errors (a
-// wrong value not sent to review) measured on the suite's scans of generate's French sheets
-// (README, "epure scan": three samples of four stacks of 24 sheets, sets of seeds 5, 6 and 7,
-// about 3,660 comb fields each; comb fields to review / silent errors with the three networks of
-// depth 2 and the second look, 2026-12-06, 10:00 UTC: 0.80: 230 / 3, 224 / 1, 228 / 7; 0.81:
-// 239 / 3, 232 / 1, 241 / 5; 0.82: 249 / 3, 239 / 1, 251 / 4; 0.85: 297 / 2, 273 / 0, 282 / 4):
-// 0.82 is the lowest whose silent errors stay under the 0.1 % (4.8 fields) on every
-// sample. (Without the second look, 0.85 gave 249 / 3, 234 / 2 and 234 / 9: the third sample
-// past 0.1 %.) The networks are trained with label smoothing (0.05), so their confidence never
-// passes about 0.95: a threshold near that would send every field.
+// A cell read by the network below this confidence (after the second look and the sign cell's
+// reading below) sends its field to review. Chosen on the trade-off between fields sent to
+// review and silent errors (a wrong value not sent to review) measured on the suite's scans of
+// generate's French sheets (README, "epure scan": samples of four stacks of 24 sheets, sets of
+// seeds 5, 6 and 7, about 3,660 comb fields each; comb fields to review / silent errors with the
+// three networks of depth 2, the second look from seven crops and the sign cell, 2026-12-06,
+// noon: 0.80: 202 / 3, 196 / 3, 209 / 10; 0.81: 210 / 3, 204 / 2, 218 / 8; 0.82: 227 / 3,
+// 215 / 1, 230 / 4; 0.84: 253 / 2, 242 / 0, 244 / 4): 0.82 is the lowest whose silent errors
+// stay under the 0.1 % (4.8 fields) on every sample; on a fourth (seed 8), not used to
+// choose, 233 / 4. The networks are trained with label smoothing (0.05), so their confidence
+// never passes about 0.95: a threshold near that would send every field.
 inline constexpr float kCellConfidence = 0.82f;
 
-// A cell read under kSecondLook is read again from four crops moved by kSecondLookShift of its
-// height (field_reading.cpp, second_look), and its confidence is then the five readings' mean.
-// The shift is train_digits.py's registration error (its cell borders drawn off by up to 0.08 H).
+// A cell read under kSecondLook is read again from kSecondLookCrops other crops
+// (second_look_cells: moved left, right, up, down by kSecondLookShift of its height; smaller and
+// larger by kSecondLookScale about its centre; field_reading.cpp, second_look), and its
+// confidence is then the seven readings' mean. The shift is train_digits.py's registration error
+// (its cell borders drawn off by up to 0.08 H); the scale is within its scale augmentation.
 inline constexpr float kSecondLook = 0.90f;
 inline constexpr double kSecondLookShift = 0.08;
+inline constexpr double kSecondLookScale = 0.08;
+inline constexpr std::size_t kSecondLookCrops = 6;
+std::array<Rect, kSecondLookCrops> second_look_cells(const Rect& cell);
+
+// A sign cell holds a minus or nothing: the assembly takes nothing else there. Its reading is
+// the likelier of the two, at its share of their probability (in_sign_cell): the mass the
+// network gives the digits there is a digit it sees where none can stand, which only matters if
+// one does. In the suite's scans the networks' doubts about a minus are digits (a minus at 0.63
+// with a 7 at 0.20; 2,901 minus signs in three samples, their digits' mass up to 0.72, 0.23-0.27
+// at the 99th centile), and such cells sent 15 to 19 comb fields a sample to review, of about
+// 250. A sign cell whose minus and empty together hold less than kSignCellHeld of its mass is
+// left as read: a digit there is likelier than not (a number begun a cell too far left), which
+// the assembly sends to review ("the sign cell holds a digit"), never takes as a sign. Of the
+// 29,276 digits written in the samples' other cells, none gave the minus and the empty cell
+// together half their mass: a digit written in a sign cell would have been sent every time.
+inline constexpr double kSignCellHeld = 0.5;
+CellReading in_sign_cell(const CellReading& r);
 
 // A comb cell as a field's reading keeps it: the network's best class and its probability, not
 // the other classes' (a stack's readings are all kept until the outputs are written).

@@ -19,10 +19,10 @@ std::string u32(std::uint32_t v) {
 }
 
 // A small network of random weights in ±amplitude (a fixed LCG: the same on every machine), the
-// bias of class 3's output raised by `sure`. Weights in ±0.5 and no raise: unsure of every crop,
-// so that every written cell gets the second look. Weights in ±0.1 and a raise of 6: a 3 over
-// 0.90 whatever the crop, in readings that still differ from crop to crop.
-DigitClassifier random_network(float amplitude, float sure) {
+// bias of class `raised`'s output raised by `sure`. Weights in ±0.5 and no raise: unsure of
+// every crop, so that every written cell gets the second look. Weights in ±0.1 and a raise of 6:
+// a 3 over 0.90 whatever the crop, in readings that still differ from crop to crop.
+DigitClassifier random_network(float amplitude, float sure, CellClass raised = CellClass::d3) {
   const std::uint32_t c = 4, hidden = 8;
   const std::uint32_t count = (c * 9 + c) + 2 * (c * c * 9 + c) + (hidden * c * 9 + hidden) + (12 * hidden + 12);
   std::string b = "EPDG" + u32(2) + u32(count) + u32(c) + u32(c) + u32(c) + u32(hidden);
@@ -30,7 +30,7 @@ DigitClassifier random_network(float amplitude, float sure) {
   for (std::uint32_t i = 0; i < count; ++i) {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     float w = amplitude * 2 * static_cast<float>(static_cast<double>(state >> 40) / static_cast<double>(1ULL << 24) - 0.5);
-    if (i == count - 12 + 3) w += sure;  // fc2's biases are the file's last 12 floats
+    if (i == count - 12 + static_cast<std::uint32_t>(raised)) w += sure;  // fc2's biases are the file's last 12 floats
     std::uint32_t bits;
     std::memcpy(&bits, &w, 4);
     b += u32(bits);
@@ -66,29 +66,33 @@ struct CombPage {
   CellReading first_reading(const DigitClassifier& net, std::size_t i) const {
     return net.classify(crop_cell(page, map, field.cells[i], levels));
   }
-  // The five readings' mean (the crop, then moved left, right, up, down), as second_look takes it.
-  CellReading five_readings(const DigitClassifier& net, const Rect& cell) const {
+  // The seven readings' mean (the crop, then moved left, right, up, down, then 0.92 and 1.08 of
+  // its size about its centre), as second_look takes it: the crops spelt out here, not taken from
+  // second_look_cells.
+  CellReading seven_readings(const DigitClassifier& net, const Rect& c) const {
     std::array<double, kClassCount> sum{};
-    const double s = kSecondLookShift * cell.height;
-    for (const auto& d : {std::array<double, 2>{0, 0}, {-s, 0}, {s, 0}, {0, -s}, {0, s}}) {
-      const CellReading r = net.classify(crop_cell(page, map, Rect{cell.x + d[0], cell.y + d[1], cell.width, cell.height}, levels));
-      for (std::size_t c = 0; c < kClassCount; ++c) sum[c] += r.probability[c];
+    const double s = kSecondLookShift * c.height;
+    const double k0 = 1 - kSecondLookScale, k1 = 1 + kSecondLookScale;
+    const Rect crops[] = {c,
+                          Rect{c.x - s, c.y, c.width, c.height},
+                          Rect{c.x + s, c.y, c.width, c.height},
+                          Rect{c.x, c.y - s, c.width, c.height},
+                          Rect{c.x, c.y + s, c.width, c.height},
+                          Rect{c.cx() - k0 * c.width / 2, c.cy() - k0 * c.height / 2, k0 * c.width, k0 * c.height},
+                          Rect{c.cx() - k1 * c.width / 2, c.cy() - k1 * c.height / 2, k1 * c.width, k1 * c.height}};
+    for (const Rect& r : crops) {
+      const CellReading x = net.classify(crop_cell(page, map, r, levels));
+      for (std::size_t k = 0; k < kClassCount; ++k) sum[k] += x.probability[k];
     }
-    CellReading out;
-    std::size_t best = 0;
-    for (std::size_t c = 0; c < kClassCount; ++c) {
-      out.probability[c] = static_cast<float>(sum[c] / 5);
-      if (out.probability[c] > out.probability[best]) best = c;
-    }
-    out.best = static_cast<CellClass>(best);
-    out.confidence = out.probability[best];
-    return out;
+    std::array<float, kClassCount> mean;
+    for (std::size_t c = 0; c < kClassCount; ++c) mean[c] = static_cast<float>(sum[c] / 7);
+    return reading_of(mean);
   }
 };
 
 }  // namespace
 
-TEST_CASE("comb cells: a cell read under kSecondLook is read again from four moved crops, the five readings averaged") {
+TEST_CASE("comb cells: a cell read under kSecondLook is read again from six other crops, the seven readings averaged") {
   const CombPage p;
   const DigitClassifier net = random_network(0.5f, 0);
   const FieldReading r = p.read(net);
@@ -97,7 +101,7 @@ TEST_CASE("comb cells: a cell read under kSecondLook is read again from four mov
     CAPTURE(i);
     const CellReading first = p.first_reading(net, i);
     REQUIRE(first.confidence < kSecondLook);
-    const CellReading mean = p.five_readings(net, p.field.cells[i]);
+    const CellReading mean = p.seven_readings(net, p.field.cells[i]);
     CHECK(r.cells[i].best == mean.best);
     CHECK(r.cells[i].confidence == mean.confidence);
     CHECK(mean.confidence != first.confidence);  // the moved crops did change the reading
@@ -118,9 +122,67 @@ TEST_CASE("comb cells: a cell read from kSecondLook up is taken at its first rea
     CAPTURE(i);
     const CellReading first = p.first_reading(net, i);
     REQUIRE(first.confidence >= kSecondLook);
-    REQUIRE(p.five_readings(net, p.field.cells[i]).confidence != first.confidence);  // a second look would show
+    REQUIRE(p.seven_readings(net, p.field.cells[i]).confidence != first.confidence);  // a second look would show
     CHECK(r.cells[i].best == CellClass::d3);
     CHECK(r.cells[i].confidence == first.confidence);
   }
   CHECK_FALSE(r.uncertain);
+}
+
+namespace {
+
+CellReading reading(std::initializer_list<std::pair<CellClass, float>> classes) {
+  std::array<float, kClassCount> p{};
+  for (const auto& [c, v] : classes) p[static_cast<std::size_t>(c)] = v;
+  return reading_of(p);
+}
+
+}  // namespace
+
+TEST_CASE("sign cell: the likelier of a minus and nothing, at its share of the two") {
+  // a minus the networks doubt against a 7, as the suite's scans show them
+  const CellReading minus = in_sign_cell(reading({{CellClass::minus, 0.63f}, {CellClass::d7, 0.20f}, {CellClass::d4, 0.12f}, {CellClass::empty, 0.05f}}));
+  CHECK(minus.best == CellClass::minus);
+  CHECK(minus.confidence == doctest::Approx(0.63 / 0.68).epsilon(1e-6));
+  CHECK(minus.confidence >= kCellConfidence);
+  CHECK(minus.probability[static_cast<std::size_t>(CellClass::d7)] == 0.0f);
+  // a 7 the likeliest class, but the minus and nothing hold more than half together: a minus,
+  // doubtful still
+  const CellReading seven = in_sign_cell(reading({{CellClass::d7, 0.45f}, {CellClass::minus, 0.40f}, {CellClass::empty, 0.15f}}));
+  CHECK(seven.best == CellClass::minus);
+  CHECK(seven.confidence == doctest::Approx(0.40 / 0.55).epsilon(1e-6));
+  CHECK(seven.confidence < kCellConfidence);
+  // a digit holding more than half: the cell is left as read, and its field goes to review
+  const CellReading digit_read = reading({{CellClass::d7, 0.56f}, {CellClass::minus, 0.26f}, {CellClass::empty, 0.18f}});
+  const CellReading digit = in_sign_cell(digit_read);
+  CHECK(digit.best == CellClass::d7);
+  CHECK(digit.confidence == digit_read.confidence);
+  // nothing, doubted against a 1
+  const CellReading empty = in_sign_cell(reading({{CellClass::empty, 0.72f}, {CellClass::d1, 0.08f}, {CellClass::d4, 0.04f}, {CellClass::minus, 0.01f}, {CellClass::d6, 0.15f}}));
+  CHECK(empty.best == CellClass::empty);
+  CHECK(empty.confidence == doctest::Approx(0.72 / 0.73).epsilon(1e-6));
+}
+
+TEST_CASE("comb cells: the sign cell is read as a minus or nothing, the other cells over every class") {
+  CombPage p;
+  p.field.sign = true;
+  // a network that leans to the minus, whose digits keep some of every cell's mass
+  const DigitClassifier net = random_network(0.5f, 3.0f, CellClass::minus);
+  const FieldReading r = p.read(net);
+  REQUIRE(r.cells.size() == 3);
+  const CellReading sign_mean = p.seven_readings(net, p.field.cells[0]);
+  REQUIRE(sign_mean.confidence < kSecondLook);
+  const double held = static_cast<double>(sign_mean.probability[static_cast<std::size_t>(CellClass::minus)]) +
+                      sign_mean.probability[static_cast<std::size_t>(CellClass::empty)];
+  REQUIRE(held >= kSignCellHeld);
+  REQUIRE(held < 0.99);  // the digits' share shows
+  const CellReading sign = in_sign_cell(sign_mean);
+  CHECK(r.cells[0].best == sign.best);
+  CHECK(r.cells[0].confidence == sign.confidence);
+  CHECK(r.cells[0].confidence > sign_mean.confidence);
+  // the second cell is an integer digit's: every class, as the seven readings give them
+  const CellReading ring = p.seven_readings(net, p.field.cells[1]);
+  REQUIRE(ring.confidence < kSecondLook);
+  CHECK(r.cells[1].best == ring.best);
+  CHECK(r.cells[1].confidence == ring.confidence);
 }
