@@ -10,7 +10,10 @@
 # WORK_DIR keeps the stacks (made once, reused when present: to compare two binaries on the same
 # scans, run with the same WORK_DIR; EPURE=path overrides BUILD_DIR/epure for the scan).
 # SET_SEED (default 5) and STACK_SEED (default 40: the stacks' seeds are 41-44) make other stacks:
-# a second sample of the same kind, to confirm on scans a choice was not made on.
+# a second sample of the same kind, to confirm on scans a choice was not made on. ROSTER=N makes
+# the set as the README's workflow does, `generate --roster` of N students (numbers and names
+# made here from the set's seed), so that no student number is written: its sheets are the
+# roster's, SHEETS is then N.
 set -eu
 build=$(cd "$1" && pwd); sheets=${2:-24}; work=${3:-$(mktemp -d)}
 set_seed=${SET_SEED:-5}; stack_seed=${STACK_SEED:-40}
@@ -18,8 +21,22 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 epure=${EPURE:-$build/epure}
 mkdir -p "$work"
 if [ ! -f "$work/set/key.json" ]; then
-  "$build/epure" generate --format pdf --sheets "$sheets" --seed "$set_seed" --lang fr --jobs 2 --quiet --out "$work/set"
+  if [ -n "${ROSTER:-}" ]; then
+    sheets=$ROSTER
+    python3 - "$ROSTER" "$set_seed" >"$work/roster.csv" <<'PY'
+import random, sys
+n, seed = int(sys.argv[1]), int(sys.argv[2])
+r = random.Random(seed)
+print("number;name;email")
+for i in range(n):
+    print(f"{r.randrange(10**7, 10**8)};Élève {i + 1:02d};")
+PY
+    "$build/epure" generate --format pdf --roster "$work/roster.csv" --seed "$set_seed" --lang fr --jobs 2 --quiet --out "$work/set"
+  else
+    "$build/epure" generate --format pdf --sheets "$sheets" --seed "$set_seed" --lang fr --jobs 2 --quiet --out "$work/set"
+  fi
 fi
+[ -f "$work/roster.csv" ] && sheets=$(($(wc -l <"$work/roster.csv") - 1))
 i=0
 for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300" "png copier 150"; do
   set -- $spec
