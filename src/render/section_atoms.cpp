@@ -22,6 +22,14 @@ constexpr double kSidePromptShare = 0.3;
 // table, a figure with its neighbours).
 constexpr std::size_t kSectionAtoms = 48;
 
+// Whether an atom of a column beside a figure, ending `right`, fits it: everything left of the
+// question id (the one muted text of a row, set flush right), and no value wrapped to fit the
+// column (worse than the answers under the figure).
+bool fits_column(double right, double box_right, double text_right, double muted_left, bool wrapped) {
+  const double room = std::min(right, muted_left - kIdGap / 2);
+  return box_right <= room + kFitSlack && text_right <= room + kFitSlack && !wrapped;
+}
+
 }  // namespace
 
 std::size_t RowHash::operator()(const RowKey& k) const {
@@ -83,7 +91,11 @@ bool SectionAtoms::replay(const RowKey& key) {
   if (!shapes_) return false;
   auto it = memo_.rows.find(key);
   if (it == memo_.rows.end()) return false;
-  push(Atom(it->second));
+  if (tally_) {
+    fold(it->second);  // (no copy of the row to fold it)
+  } else {
+    push(Atom(it->second));
+  }
   return true;
 }
 
@@ -101,6 +113,10 @@ Atom SectionAtoms::new_atom() const {
 }
 
 void SectionAtoms::push(Atom&& atom) {
+  if (tally_) {
+    fold(atom);
+    return;
+  }
   if (after_heading_) atom.break_before = false;  // a heading never ends a page
   atom.follows_heading = after_heading_;
   if (after_figure_) atom.space_before = std::max(atom.space_before, s_.figure_space);
@@ -109,10 +125,31 @@ void SectionAtoms::push(Atom&& atom) {
   atoms_.push_back(std::move(atom));
 }
 
+void SectionAtoms::fold(const Atom& atom) {
+  const Fragment& c = atom.content;
+  fold(atom.space_before, atom.height, c.box_right_edge, c.text_right_edge, c.muted_left, atom.wrapped);
+}
+
+void SectionAtoms::fold(double space_before, double height, double box_right, double text_right, double muted_left,
+                        bool wrapped) {
+  // push()'s space, and span()'s and beside()'s sums
+  const double space = after_figure_ ? std::max(space_before, s_.figure_space) : space_before;
+  after_heading_ = false;
+  after_figure_ = false;
+  Tally& t = *tally_;
+  t.span += (t.count > 0 ? space : 0) + height;
+  if (t.count > 0) t.stacked += space;
+  t.stacked += height;
+  if (t.count == 0) t.first_space = space;
+  ++t.count;
+  if (in_column_) t.fits = t.fits && fits_column(right_, box_right, text_right, muted_left, wrapped);
+}
+
 void SectionAtoms::undo(const Mark& m) {
   atoms_.resize(m.atoms);
   after_heading_ = m.after_heading;
   after_figure_ = m.after_figure;
+  if (tally_) *tally_ = Tally{};
 }
 
 void SectionAtoms::build_section(int si) {
@@ -211,9 +248,9 @@ std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const F
     }
     return after_figure;
   };
-  const auto height = [&]() {
-    return span(atoms_, start.atoms, atoms_.size()) + (atoms_.size() > start.atoms ? atoms_[start.atoms].space_before : 0);
-  };
+  // The options are measured as tallies: their heights without their atoms.
+  Tally tally;
+  const auto height = [&]() { return tally.height(); };
   // Every option is built as shapes, to be measured, once for a figure at a scale; the best is
   // then built in the section's mode.
   const auto key = std::tuple{&f, bits(scale_), allow_side_};
@@ -228,7 +265,9 @@ std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const F
       if (o.split > 0) before_lines = &text_.wrapped(*before_text, s_.body_size, width_);
       const bool shapes = shapes_;
       shapes_ = true;
+      tally_ = &tally;
       const bool places = emit(o.beside_paragraphs, o.answers_beside, o.split).has_value();
+      tally_ = nullptr;
       shapes_ = shapes;
       if (places) known = memo_.options.emplace(key, o).first;
     }
@@ -236,6 +275,7 @@ std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const F
   if (known == memo_.options.end()) {
     const bool shapes = shapes_;
     shapes_ = true;
+    tally_ = &tally;
     LayoutMemo::Option best_option;
     emit(0, false);  // k = 0 always places
     double best = height() - kSideSaving * body_line_;  // the paragraphs beside must save something
@@ -273,6 +313,7 @@ std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const F
         }
       }
     }
+    tally_ = nullptr;
     shapes_ = shapes;
     known = memo_.options.emplace(key, best_option).first;
   }
@@ -355,6 +396,14 @@ void SectionAtoms::paragraph(int si, int bi, const RichText& text, bool emphasis
 void SectionAtoms::line_atoms(int si, int bi, const WrappedText& wrapped, std::size_t n,
                               const std::vector<std::vector<TextRun>>* lines) {
   const double size = s_.body_size;
+  if (tally_) {
+    // a line as fold() would read its atom: its space, height and (in a column) its right end
+    const Fragment none;  // a line's atom's extents but its text's right end
+    for (std::size_t i = 0; i < n; ++i)
+      fold(i == 0 ? s_.block_space : 0, body_line_, none.box_right_edge,
+           in_column_ ? left_ + wrapped.lines[i].width : none.text_right_edge, none.muted_left, false);
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     Atom a = new_atom();
     a.section = si;
@@ -435,10 +484,13 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
     // A narrow column keeps its boxes whole and wraps its long prompts instead.
     prompt_share_ = kSidePromptShare;
     in_column_ = true;
-    // Whether the column's atoms so far fit it: everything left of the question id (the one
-    // muted text of a row, set flush right), and no value wrapped to fit the column (worse than
-    // the answers under the figure). The first block that does not fit ends this width's try:
-    // the blocks after it would be built only to be dropped.
+    // Whether the column's atoms so far fit it (fits_column). The first block that does not fit
+    // ends this width's try: the blocks after it would be built only to be dropped. A shape's
+    // column is a tally, fold() testing each atom as it comes: a shape keeps only the pair's
+    // height.
+    Tally column_tally;
+    Tally* const outer = tally_;
+    if (shapes_) tally_ = &column_tally;
     bool fits = true;
     std::size_t checked = before.atoms;
     for (std::size_t n = 0; n < side_blocks.size() && fits; ++n) {
@@ -454,12 +506,10 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
         if (run_start) key_column_ = key_prompt_column(blocks, i);
         answer_line(si, b, std::get<AnswerLine>(blocks[i]), !run_start);
       }
+      if (shapes_) fits = column_tally.fits;
       for (; checked < atoms_.size(); ++checked) {
-        const Atom& atom = atoms_[checked];
-        const Fragment& content = atom.content;
-        const double room = std::min(right_, content.muted_left - kIdGap / 2);
-        fits = fits && content.box_right_edge <= room + kFitSlack && content.text_right_edge <= room + kFitSlack;
-        fits = fits && !atom.wrapped;
+        const Fragment& c = atoms_[checked].content;
+        fits = fits && fits_column(right_, c.box_right_edge, c.text_right_edge, c.muted_left, atoms_[checked].wrapped);
       }
     }
     const double column_left = left_;
@@ -467,11 +517,19 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
     width_ = full_width;
     prompt_share_ = s_.prompt_column_max;
     in_column_ = false;
+    if (shapes_) {
+      tally_ = outer;
+      after_heading_ = before.after_heading;
+      after_figure_ = before.after_figure;
+      if (!fits) continue;
+      if (column_tally.span > std::max(figure_size(f, figure_w).second, max_h)) return std::nullopt;
+      return Column{figure_w, column_left, {}, column_tally.stacked};
+    }
     if (!fits) {
       undo(before);
       continue;
     }
-    Column out{figure_w, column_left, {}};
+    Column out{figure_w, column_left, {}, 0};
     out.atoms.assign(std::make_move_iterator(atoms_.begin() + static_cast<std::ptrdiff_t>(before.atoms)),
                      std::make_move_iterator(atoms_.end()));
     undo(before);
@@ -500,7 +558,7 @@ bool SectionAtoms::beside(int si, int bi, const Figure& f, bool follows_paragrap
   a.space_before = s_.figure_space;
   a.break_before = !follows_paragraph;
   a.figure = true;
-  double y = 0;
+  double y = shapes_ ? column->height : 0;  // a shape's column is a tally, summed as below
   for (std::size_t k = 0; k < side.size(); ++k) {
     if (k > 0) y += side[k].space_before;
     if (!shapes_) {

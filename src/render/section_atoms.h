@@ -3,9 +3,9 @@
 // column's width and broken into the units a page may end between — a line of a paragraph, a
 // heading, a row of fields or of a key's table, a figure with what stands beside it. The options
 // for a figure and its neighbours (fields beside or under it, paragraphs beside it) are measured
-// as shapes (atoms with their geometry and no content) and only the shortest is built
-// (section_atoms.cpp); rows of fields and of a key's answers are made in field_rows.cpp. Putting
-// the atoms on pages is paginate.h's job.
+// as tallies (their atoms' heights summed as they come, no atom kept) and only the shortest is
+// built (section_atoms.cpp); rows of fields and of a key's answers are made in field_rows.cpp.
+// Putting the atoms on pages is paginate.h's job.
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -75,13 +75,31 @@ class SectionAtoms {
   // The column beside a figure, as measured: the figure's width and where the column starts.
   struct Column {
     double figure_w = 0, left = 0;
-    std::vector<Atom> atoms;
+    std::vector<Atom> atoms;  // none when measured as a tally
+    double height = 0;        // the column's atoms stacked, as beside() sets them
+  };
+  // What a measure needs of the atoms it pushes, kept instead of the atoms: an option's height
+  // (span() of its atoms and the first one's space), the column's two sums (column_beside's
+  // and beside()'s, in their orders of addition, so that the same doubles come out as from
+  // the atoms) and whether every atom of a column fits it. An option measured, or a column of
+  // a shape, is then made of no atom: the same sums, without making, moving and dropping one
+  // atom per line for every option and every width tried.
+  struct Tally {
+    std::size_t count = 0;
+    double first_space = 0;
+    double span = 0;     // layout_detail::span() of the atoms
+    double stacked = 0;  // beside()'s y: each atom's space before it, then its height
+    bool fits = true;    // (a column's) every atom left of its question id, none wrapped
+    double height() const { return span + (count > 0 ? first_space : 0); }
   };
 
   Mark mark() const { return {atoms_.size(), after_heading_, after_figure_}; }
   void undo(const Mark& m);
   Atom new_atom() const;
   void push(Atom&& atom);
+  // push() into the tally: the atom's space as push() would set it, its height and extents.
+  void fold(const Atom& atom);
+  void fold(double space_before, double height, double box_right, double text_right, double muted_left, bool wrapped);
   RowKey row_key(const void* block, double column, bool follows) const;
   bool replay(const RowKey& key);
   void remember(const RowKey& key, const Atom& a);
@@ -134,6 +152,7 @@ class SectionAtoms {
   bool allow_side_ = true, side_used_ = false;
   bool shapes_ = false;     // atoms with their geometry only: an option measured, or pages counted
   bool in_column_ = false;  // building the column beside a figure
+  Tally* tally_ = nullptr;  // set: push() folds its atoms into it instead of keeping them
   double field_column_ = 0, key_column_ = 0;
 };
 
