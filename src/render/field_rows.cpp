@@ -104,6 +104,8 @@ double SectionAtoms::measure_key_prompt_column(const std::vector<Block>& blocks,
 void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follows_field) {
   const RowKey key = row_key(&f, field_column_, follows_field);
   if (replay(key)) return;
+  const RowGeometry geometry{bits(left_), bits(width_), bits(right_), bits(field_column_), follows_field, in_column_};
+  if (shapes_ && reuse(rows_.find(f, geometry), key, si, bi)) return;
   const double size = s_.body_size;
   Atom a = new_atom();
   a.section = si;
@@ -288,6 +290,7 @@ void SectionAtoms::answer_field(int si, int bi, const AnswerField& f, bool follo
   if (id_w > 0) a.content.text_right(std::move(id), right_, prompt_above ? size * kBaseline : baseline, s_.id_size, Ink::muted);
   a.height = std::max(body_h, prompt_h);
   remember(key, a);
+  if (shapes_) rows_.add(f, geometry, a);
   push(std::move(a));
 }
 

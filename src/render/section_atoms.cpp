@@ -43,6 +43,7 @@ SectionAtoms::SectionAtoms(const Document& doc, const LayoutStyle& style, Layout
       s_(style),
       memo_(memo),
       text_(memo.text),
+      rows_(RowShapes::for_document(doc, style)),
       area_(doc, style),
       left_(area_.left),
       right_(area_.right),
@@ -96,6 +97,16 @@ bool SectionAtoms::replay(const RowKey& key) {
   } else {
     push(Atom(it->second));
   }
+  return true;
+}
+
+bool SectionAtoms::reuse(const Atom* shared, const RowKey& key, int si, int bi) {
+  if (!shared) return false;
+  Atom a(*shared);
+  a.section = si;
+  a.block = bi;
+  remember(key, a);
+  push(std::move(a));
   return true;
 }
 

@@ -17,6 +17,7 @@
 
 #include "render/layout.h"
 #include "render/layout_atoms.h"
+#include "render/row_shapes.h"
 #include "render/text_measure.h"
 
 namespace epure::render::layout_detail {
@@ -103,6 +104,9 @@ class SectionAtoms {
   RowKey row_key(const void* block, double column, bool follows) const;
   bool replay(const RowKey& key);
   void remember(const RowKey& key, const Atom& a);
+  // A row's shape from an earlier document (RowShapes), if any, pushed as this block's and
+  // remembered: true when pushed.
+  bool reuse(const Atom* shared, const RowKey& key, int si, int bi);
 
   void build_section(int si);
   std::size_t figure_with_neighbours(int si, std::size_t fi, const Figure& f, const std::vector<Block>& blocks);
@@ -135,6 +139,7 @@ class SectionAtoms {
   const LayoutStyle& s_;
   LayoutMemo& memo_;
   TextMeasure& text_;
+  RowShapes& rows_;  // field rows' shapes, shared with the thread's earlier documents
   const TextArea area_;
   // The text column; `beside` narrows left_ and width_ for the fields set beside a figure.
   double left_;

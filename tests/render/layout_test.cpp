@@ -992,3 +992,38 @@ TEST_CASE("layout: a text measured in an earlier document of the thread gives th
   CHECK(dump(layout_document(second)) == fresh);
   CHECK(after_first != fresh);  // the two texts do break differently: the test can tell
 }
+
+TEST_CASE("layout: a row measured in an earlier document of the thread gives the pages a fresh measure gives") {
+  // A thread keeps the shapes of answer rows by their content (row_shapes.h): fields alike but
+  // for their cells, and the same fields laid out with another style, must be told apart. The
+  // narrow combs fit beside their figures, the wide ones go under them: a wide row taken for a
+  // narrow one would have the page budget counted short, and no figure set smaller.
+  const auto document = [](int integer_cells) {
+    Document doc = sample(5);
+    for (auto& section : doc.sections)
+      for (auto& block : section.blocks)
+        if (auto* f = std::get_if<AnswerField>(&block); f && f->kind != AnswerField::Kind::choice) {
+          f->integer_cells = integer_cells;
+          f->decimals = 2;
+        }
+    return doc;
+  };
+  Document narrow = document(1), wide = document(6);
+  narrow.page_budget = wide.page_budget = static_cast<int>(layout_document(narrow).size());
+  LayoutStyle other;
+  other.comb_cell_width = 30;  // the narrow combs then go under their figures too
+  std::string fresh, fresh_other;
+  std::thread([&] {  // a thread that measured nothing yet
+    fresh = dump(layout_document(wide));
+    fresh_other = dump(layout_document(narrow, other));
+  }).join();
+  const std::string after_narrow = dump(layout_document(narrow));
+  CHECK(dump(layout_document(wide)) == fresh);
+  CHECK(dump(layout_document(narrow, other)) == fresh_other);
+  CHECK(dump(layout_document(narrow)) == after_narrow);
+  // The test can tell: the wide rows need the figures smaller to keep to the budget (a mutation
+  // that shares rows across cell counts, or across styles, fails the checks above).
+  Document unbounded = wide;
+  unbounded.page_budget = 0;
+  CHECK(dump(layout_document(unbounded)) != fresh);
+}
