@@ -153,6 +153,8 @@ constexpr std::size_t kShortGroup = 32;  // bytes, brackets included
 
 std::vector<Word> words(std::string_view rich) {
   std::vector<Word> out;
+  // a word a space at most: one allocation, not one for each doubling
+  out.reserve(static_cast<std::size_t>(std::count(rich.begin(), rich.end(), ' ')) + 1);
   std::size_t start = 0;
   bool glue_next = false;
   std::size_t group_end = npos;  // the closing bracket of the short group we are in
@@ -373,7 +375,9 @@ MeasuredText measure_text(std::string_view rich, double font_size, Weight weight
     const std::size_t nl = text.find('\n', start);
     const std::string_view piece = text.substr(start, nl == npos ? npos : nl - start);
     auto& out = m.pieces.emplace_back();
-    for (const Word& w : words(piece))
+    const std::vector<Word> ws = words(piece);
+    out.reserve(ws.size());
+    for (const Word& w : ws)
       out.push_back({static_cast<std::size_t>(w.text.data() - text.data()), w.text.size(),
                      word_width(w.text, font_size, face), w.glued});
     if (nl == npos) break;

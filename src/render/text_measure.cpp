@@ -97,6 +97,7 @@ std::shared_ptr<const TextMeasure::Measured> TextMeasure::shared(const RichText&
   const std::string_view all = m->text.text;
   for (const auto& words : m->text.pieces) {
     auto& ends = m->sentence_ends.emplace_back();
+    ends.reserve(words.size());
     for (const auto& w : words) {
       const std::string_view word = all.substr(w.offset, w.size);
       for (const char c : word) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
@@ -119,6 +120,7 @@ TextMeasure::Entry& TextMeasure::entry(const RichText& text, double size, double
   WrappedText& w = e.wrapped;
   w.measured = &m.text;
   w.lines = break_measured(m.text, width, from);
+  w.ends_sentence.reserve(w.lines.size());
   for (const MeasuredLine& line : w.lines) {
     w.widest = std::max(w.widest, line.width);
     w.ends_sentence.push_back(line.end > line.first && m.sentence_ends[line.piece][line.end - 1]);
