@@ -477,6 +477,16 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
                                                                 const std::vector<std::size_t>& side_blocks,
                                                                 bool natural_only,
                                                                 std::size_t first_from) {
+  // The width that fits is found as a shape finds it (a tally: the same extents, so the same
+  // width), and a column in full is built at that width only, not at the widths that fail first.
+  std::optional<std::uint64_t> only;
+  if (!shapes_) {
+    shapes_ = true;
+    const std::optional<Column> measured = column_beside(si, f, blocks, side_blocks, natural_only, first_from);
+    shapes_ = false;
+    if (!measured) return std::nullopt;
+    only = bits(measured->figure_w);
+  }
   const double full_left = left_, full_right = right_, full_width = width_;
   const double natural = figure_size(f, full_width * std::clamp(f.width_fraction, 0.05, 1.0) * scale_).first;
   const double max_h = (bottom_ - top_) * s_.figure_max_height;
@@ -489,6 +499,7 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
     // narrowed for a column would leave each a few centimetres wide, so it keeps its width
     // and the answers go under it when they do not fit beside it.
     if (f.scene.panels.size() > 1 && figure_w < natural - kFitSlack) break;
+    if (only && bits(figure_w) != *only) continue;
     const Mark before = mark();
     left_ = full_left + figure_w + kSideGap;
     width_ = full_right - left_;
