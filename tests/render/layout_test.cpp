@@ -1027,3 +1027,78 @@ TEST_CASE("layout: a row measured in an earlier document of the thread gives the
   unbounded.page_budget = 0;
   CHECK(dump(layout_document(unbounded)) != fresh);
 }
+
+TEST_CASE("layout: a row measured in a document of another language gives the pages a fresh measure gives") {
+  // A thread's rows are dropped when a document prints other yes/no words or another decimal
+  // separator (row_shapes.h): "oui" and "non" are wider than "yes" and "no", so a row of ticks
+  // that fits the column beside a figure in English may not in French, and the column is then
+  // set wider or under the figure. ',' and '.' are as wide as each other in the layout's font (a
+  // French comb measures as an English one), but a separator is any string: one as wide as a
+  // word reaches past its comb's last cell. The column's width is scanned through the figure's,
+  // so that somewhere a row fits with one document's words or separator and not with the other's.
+  const auto document = [](double figure_width, const std::string& separator, const std::string& yes,
+                           const std::string& no) {
+    Document doc = sample(3);
+    for (auto& section : doc.sections) {
+      std::vector<Block> blocks;
+      for (auto& block : section.blocks) {
+        if (auto* f = std::get_if<Figure>(&block)) f->width_fraction = figure_width;
+        if (auto* f = std::get_if<AnswerField>(&block)) {
+          if (f->kind != AnswerField::Kind::number) continue;
+          f->integer_cells = 2;  // "t = □□□,□": the separator before a single decimal cell
+          f->decimals = 1;
+        }
+        blocks.push_back(block);
+      }
+      section.blocks = std::move(blocks);
+      section.add(AnswerField{"b", "Inside?", AnswerField::Kind::boolean, {}});
+    }
+    doc.decimal_separator = separator;
+    doc.words.yes = yes;
+    doc.words.no = no;
+    return doc;
+  };
+  // Where the figures stand and how large: whether the rows went beside them, and at what width.
+  const auto figures = [](const std::vector<LaidOutPage>& pages) {
+    std::string out = fmt::format("{} pages\n", pages.size());
+    for (const auto& p : pages)
+      for (const auto& f : p.figures) out += fmt::format("figure {} {} {} {}\n", f.rect.x, f.rect.y, f.rect.width, f.rect.height);
+    return out;
+  };
+  // Pages laid out by a thread that measured nothing yet.
+  const auto fresh = [](const Document& doc) {
+    std::vector<LaidOutPage> pages;
+    std::thread([&] { pages = layout_document(doc); }).join();
+    return pages;
+  };
+  std::string differ;  // the documents laid out after another unlike their fresh measure
+  int told_words = 0, told_separator = 0;
+  for (int permille = 200; permille <= 950; permille += 2) {
+    const double w = permille / 1000.0;
+    const Document english = document(w, ".", "yes", "no"), french = document(w, ",", "oui", "non");
+    // Each unlike the one before it in one thing only: the thread's rows must be dropped for each.
+    const Document french_words = document(w, ".", "oui", "non");
+    const Document wide_separator = document(w, "une virgule", "oui", "non");
+    const std::vector<std::tuple<std::string, const Document*, const Document*>> pairs = {
+        {"French after English", &english, &french},
+        {"French words after English", &english, &french_words},
+        {"a wide separator after French", &french, &wide_separator}};
+    for (const auto& [name, earlier, later] : pairs) {
+      const Document& first = *earlier;
+      const Document& second = *later;
+      std::string after;
+      std::thread([&] {
+        (void)layout_document(first);
+        after = dump(layout_document(second));
+      }).join();
+      if (after != dump(fresh(second))) differ += fmt::format("{} at {}; ", name, w);
+    }
+    told_words += figures(fresh(english)) != figures(fresh(french_words));
+    told_separator += figures(fresh(french)) != figures(fresh(wide_separator));
+  }
+  CHECK(differ == "");
+  // The test can tell: at some widths the words, and the separator, set the figures otherwise
+  // (a mutation that keeps the rows across either fails the check above).
+  CHECK(told_words > 0);
+  CHECK(told_separator > 0);
+}
