@@ -1,6 +1,7 @@
 #include "render/section_atoms.h"
 
 #include <algorithm>
+#include <cassert>
 #include <iterator>
 #include <string>
 #include <variant>
@@ -205,8 +206,8 @@ void SectionAtoms::build_section(int si) {
 // shorter by more than half a line, the last paragraphs before the figure in the column beside it
 // too, above the answers (or with the answers under the figure): a statement read beside the
 // figure it describes, a key's last steps beside their construction. The figure keeps the width
-// its kind asks for. Every option is measured as shapes; only the shortest is built. Returns
-// the index of the atom after the figure's.
+// its kind asks for. Every option is measured as a tally (its height, without its atoms); only
+// the shortest is built. Returns the index of the atom after the figure's.
 std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const Figure& f, const std::vector<Block>& blocks) {
   const std::size_t run_end = answers_run_end(blocks, fi + 1);
   // The plain paragraphs right before the figure (not the heading, not a shaded box).
@@ -259,11 +260,10 @@ std::size_t SectionAtoms::figure_with_neighbours(int si, std::size_t fi, const F
     }
     return after_figure;
   };
-  // The options are measured as tallies: their heights without their atoms.
+  // The options are measured as tallies, once for a figure at a scale: their heights without
+  // their atoms. The best is then built in the section's mode.
   Tally tally;
   const auto height = [&]() { return tally.height(); };
-  // Every option is built as shapes, to be measured, once for a figure at a scale; the best is
-  // then built in the section's mode.
   const auto key = std::tuple{&f, bits(scale_), allow_side_};
   auto known = memo_.options.find(key);
   if (known == memo_.options.end() && scale_ != 1) {
@@ -547,6 +547,10 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
       if (column_tally.span > std::max(figure_size(f, figure_w).second, max_h)) return std::nullopt;
       return Column{figure_w, column_left, {}, column_tally.stacked};
     }
+    // Built in full only at the width the shapes found fitting, from the same extents: a column
+    // that does not fit it, or is too tall, is the two passes diverging (the column would
+    // silently go under the figure).
+    assert(fits);
     if (!fits) {
       undo(before);
       continue;
@@ -558,9 +562,12 @@ std::optional<SectionAtoms::Column> SectionAtoms::column_beside(int si, const Fi
 
     double height = 0;
     for (std::size_t k = 0; k < out.atoms.size(); ++k) height += (k > 0 ? out.atoms[k].space_before : 0) + out.atoms[k].height;
-    if (height > std::max(figure_size(f, figure_w).second, max_h)) return std::nullopt;  // a wider column would not be shorter by much
+    const double tallest = std::max(figure_size(f, figure_w).second, max_h);
+    assert(height <= tallest);  // (the shapes' span: the same sums in the same order)
+    if (height > tallest) return std::nullopt;  // a wider column would not be shorter by much
     return out;
   }
+  assert(shapes_);  // in full, the width the shapes found is always tried
   return std::nullopt;
 }
 
