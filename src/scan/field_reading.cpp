@@ -72,20 +72,24 @@ TickReading read_tick(const cv::Mat& g, const PageMap& map, const Rect& box, con
   int filled = 0, faint = 0, light = 0;
   // the middles of the four sides: rows 0-2 and 9-11 at columns 4-7, columns 0-2 and 9-11 at rows 4-7
   int side[4] = {0, 0, 0, 0}, light_side[4] = {0, 0, 0, 0};
+  double side_ink[4] = {0, 0, 0, 0}, diagonals = 0;
   for (int j = 0; j < kGrid; ++j)
     for (int i = 0; i < kGrid; ++i) {
       const double x = box.x + inset + (box.width - 2 * inset) * (i + 0.5) / kGrid;
       const double y = box.y + inset + (box.height - 2 * inset) * (j + 0.5) / kGrid;
       const double ink = levels.to_ink(sample_pt(g, map, x, y));
+      const double clamped = std::clamp(ink, 0.0, 1.0);
       const bool dark = ink > 0.5, lit = ink > kLightInk;
       filled += dark;
       faint += ink > 0.25;
       light += lit;
       const bool mid_i = i >= 4 && i <= 7, mid_j = j >= 4 && j <= 7;
       const int which = mid_i && j <= 2 ? 0 : mid_i && j >= 9 ? 1 : mid_j && i <= 2 ? 2 : mid_j && i >= 9 ? 3 : -1;
+      if (i == j || i + j == kGrid - 1) diagonals += clamped;  // 2 × kGrid samples, none shared (kGrid even)
       if (which >= 0) {
         side[which] += dark;
         light_side[which] += lit;
+        side_ink[which] += clamped;
       }
     }
   TickReading r;
@@ -94,13 +98,27 @@ TickReading read_tick(const cv::Mat& g, const PageMap& map, const Rect& box, con
   r.sides = static_cast<double>(*std::min_element(side, side + 4)) / 12;
   r.light = static_cast<double>(light) / (kGrid * kGrid);
   r.light_sides = static_cast<double>(*std::min_element(light_side, light_side + 4)) / 12;
-  if (r.filled >= kTickFilled && r.sides >= kSidesFilled) r.state = TickState::cancelled;
-  else if (r.filled >= kTickMarked && (r.filled < kTickFilled || r.sides < kSidesOpen)) r.state = TickState::ticked;
-  else if (r.filled < kTickMarked && r.light >= kTickLight && r.light_sides < kSidesOpen) r.state = TickState::ticked;
-  else if (r.filled <= kTickEmpty && r.faint < kTickFaint) r.state = TickState::empty;
-  else r.state = TickState::uncertain;
+  r.contrast = diagonals / (2 * kGrid) - *std::min_element(side_ink, side_ink + 4) / 12;
+  r.state = tick_state(r);
   return r;
 }
+
+}  // namespace
+
+TickState tick_state(const TickReading& r) {
+  const bool mark_shaped = r.contrast >= kMarkContrast;
+  if (r.filled >= kTickFilled) {
+    if (r.sides >= kSidesFilled && !mark_shaped) return TickState::cancelled;
+    if (r.sides < kSidesFilled && mark_shaped) return TickState::ticked;
+    return TickState::uncertain;
+  }
+  if (r.filled >= kTickMarked) return TickState::ticked;
+  if (r.light >= kTickLight && r.light_sides < kSidesOpen) return TickState::ticked;
+  if (r.filled <= kTickEmpty && r.faint < kTickFaint) return TickState::empty;
+  return TickState::uncertain;
+}
+
+namespace {
 
 void read_ticks(const cv::Mat& g, const PageMap& map, const FieldLayout& f, const InkLevels& levels, FieldReading& out) {
   std::vector<std::string> ticked;

@@ -23,20 +23,21 @@ key=$tmp/set/key.json
 # The bounds pinned on these small stacks (about 195 fields, 400 digits each), as measured with
 # the committed classifier: three networks of depth 2 (two convolutions a stage) trained on
 # MNIST's 58,004 digits, a second look from seven crops at cells read under 0.90, the sign cell
-# read as a minus or nothing, cells below 0.82 sent to review (2026-12-06, noon): silent errors 0
-# on each stack; fields sent to review 3.1 % (JPEG PDF), 7.6 % (bilevel), 3.5 % (300 dpi), 6.6 %
-# (150 dpi); digits 99.0-99.8 %. Before (a second look from five crops, no sign-cell reading):
+# read as a minus or nothing, cells below 0.82 sent to review, a heavily inked tick box told by its
+# shape (2026-12-06, afternoon): silent errors 0 on each stack; fields sent to review 3.1 % (JPEG
+# PDF), 7.6 % (bilevel), 3.5 % (300 dpi), 5.6 % (150 dpi; 6.6 % when two heavy crosses went to
+# review); digits 99.0-99.8 %. Before (a second look from five crops, no sign-cell reading):
 # 3.1, 8.6, 4.0 and 7.1 %; before that (no second look, below 0.85): the same but 4.5 % at 300 dpi
 # and 6.6 % at 150 dpi; before that (three networks of depth 1, cells below 0.80): silent 0,
 # review 3.1-11.6 %, digits 98.3-99.8 %. On stacks of 24 sheets (README, "epure scan") the
-# issue's silent errors (0.1 %) and digits (99 %) are met on four samples of four stacks; its
-# review (5 %) on three of them (4.66-4.95 %), not on the fourth (5.17 %).
+# issue's figures are met on five samples of four stacks: silent errors 0.02-0.09 %, digits
+# 99.40-99.65 %, fields to review 4.50-4.90 %.
 # Digits: about 400 a stack, so one standard deviation of the rate is 0.55 %; the bilevel stack's
 # rate is 98.8-99.2 % on 24 sheets with the depth-1 networks (bench/scan_accuracy.sh, two
 # samples): the bound is two deviations under the lower, not a figure one draw happened to reach.
 # Ticks (about 47 a stack, one in four a light pen's cross at 40 % ink, read as ticked since
-# 2026-12-06): 0-2 sent to review (heavy crosses at 150 dpi), bound 4; before, every light
-# cross went to review (about 12 a stack). Fields to review: bound 12 %, the bilevel stack's
+# 2026-12-06): none sent to review; bound 4 (heavy crosses at 150 dpi sent 0-2 until they were
+# told from fills by their shape; before that, every light cross went, about 12 a stack). Fields to review: bound 12 %, the bilevel stack's
 # 7.6 % with a margin (the depth-1 networks sent 11.6 %: under it, but not the 6 % together below).
 max_tick_review=${EPURE_SCAN_MAX_TICK_REVIEW:-0.09}
 max_silent=${EPURE_SCAN_MAX_SILENT:-0.008}
@@ -77,12 +78,14 @@ for spec in "pdf copier 200 --mess" "tiff-g4 bilevel 200" "pdf-flate copier 300"
   fi
 done
 
-# The four stacks together (about 790 fields, 1,630 digits): the issue's figures where they are
-# met (measured 2026-12-06, noon: digits 99.45 %, silent errors 0, ticks 184 right and 2 to
-# review of 186, none wrong), and the fields to review at 6 % (5.2 % measured; the second look
-# from five crops sent 5.7 %, the depth-1 networks 7.2 %; the issue's 5 % is not met on these
-# small stacks).
-python3 - "$tmp"/s1/figures.json "$tmp"/s2/figures.json "$tmp"/s3/figures.json "$tmp"/s4/figures.json <<'PY' && ok "the four stacks together: the issue's digits, silent errors and ticks, fields to review under 6 %" || fail=1
+# The four stacks together (788 fields, 1,622 digits): the issue's figures (measured 2026-12-06,
+# afternoon: digits 99.45 %, silent errors 0, ticks 186 right of 186, fields to review 39, 4.95 %).
+# These stacks are one deterministic draw, so the 5 % bound holds them with a field to spare (39
+# of at most 39.4): on the larger samples of bench/scan_accuracy.sh the rate is 4.50-4.90 %, and
+# a change that sends more fields to review here is to be measured there, not loosened here.
+# Before: 5.2 % (two heavy crosses to review), 5.7 % (a second look from five crops), 7.2 % (the
+# depth-1 networks), pinned at 6 % until the ticks were told by their shape.
+python3 - "$tmp"/s1/figures.json "$tmp"/s2/figures.json "$tmp"/s3/figures.json "$tmp"/s4/figures.json <<'PY' && ok "the four stacks together: the issue's digits, silent errors, ticks and fields to review (5 %)" || fail=1
 import json, sys
 t = {}
 for path in sys.argv[1:]:
@@ -97,8 +100,10 @@ print(f"together: {t['fields']} fields, digits {digits:.4f}, silent {t['silent']
 problems = []
 if digits < 0.99: problems.append(f"digits read right {digits:.4f} < 0.99")
 if silent > 0.001: problems.append(f"silent errors {silent:.4f} > 0.001")
-if t["review"] > 0.06 * t["fields"]: problems.append(f"fields to review {t['review'] / t['fields']:.4f} > 0.06")
-if tick_wrong > 0 or t["tick_right"] < 0.98 * t["tick_fields"]: problems.append(f"ticks: {tick_wrong} wrong, {t['tick_right']} of {t['tick_fields']} right")
+if t["review"] > 0.05 * t["fields"]: problems.append(f"fields to review {t['review'] / t['fields']:.4f} > 0.05")
+# ticks: none wrong; read right 186 of 186 (their 99.9 % cannot be resolved on 186 ticks: one to
+# review is 0.5 %, so at most one; on the 24-sheet samples 99.91-100 % right, 0-1 to review of 1,130)
+if tick_wrong > 0 or t["tick_right"] < 0.99 * t["tick_fields"]: problems.append(f"ticks: {tick_wrong} wrong, {t['tick_right']} of {t['tick_fields']} right")
 if problems:
     print("FAIL the four stacks together: " + "; ".join(problems))
     sys.exit(1)

@@ -186,3 +186,104 @@ TEST_CASE("comb cells: the sign cell is read as a minus or nothing, the other ce
   CHECK(r.cells[1].best == ring.best);
   CHECK(r.cells[1].confidence == ring.confidence);
 }
+
+TEST_CASE("tick boxes: a box inked from kTickFilled is told by its shape") {
+  auto heavy = [](double sides, double contrast) {
+    TickReading r;
+    r.filled = 0.82;
+    r.faint = 0.9;
+    r.light = 0.85;
+    r.sides = sides;
+    r.light_sides = sides;
+    r.contrast = contrast;
+    return tick_state(r);
+  };
+  // a fill: every side's middle inked, the diagonals no darker than the lightest of them
+  CHECK(heavy(1.0, 0.01) == TickState::cancelled);
+  CHECK(heavy(kSidesFilled, kMarkContrast - 0.01) == TickState::cancelled);
+  // a cross in a heavy pen: half of a side's middle white, the diagonals far darker
+  CHECK(heavy(0.5, 0.45) == TickState::ticked);
+  CHECK(heavy(0.0, kMarkContrast) == TickState::ticked);
+  // inked evenly but short of a fill's sides (a copier's speckle): neither
+  CHECK(heavy(0.45, 0.05) == TickState::uncertain);
+  CHECK(heavy(0.0, 0.1) == TickState::uncertain);
+  // every side's middle inked, yet one much lighter than the diagonals: neither
+  CHECK(heavy(0.75, 0.3) == TickState::uncertain);
+}
+
+namespace {
+
+// A row of tick boxes as generate prints them (10 pt, borders 0.7 pt) scanned at 150 dpi, the
+// lowest resolution scan reads, in full ink (0) on white paper.
+struct TickRow {
+  static constexpr double kScale = 150.0 / 72;
+  PageMap map;
+  FieldLayout field;
+  cv::Mat page;
+  explicit TickRow(int boxes) : page(60, 30 + 30 * boxes, CV_8U, cv::Scalar(255)) {
+    map.h = cv::Matx33d(kScale, 0, 0, 0, kScale, 0, 0, 0, 1);
+    field.question = "t";
+    field.type = FieldType::tick;
+    field.multiple = true;
+    for (int i = 0; i < boxes; ++i) {
+      field.cells.push_back(Rect{8.0 + 14 * i, 8, 10, 10});
+      field.values.push_back(std::to_string(i));
+    }
+  }
+  cv::Point2d px(double x, double y) const { return {x * kScale, y * kScale}; }
+  void borders() {
+    for (const Rect& c : field.cells)
+      cv::rectangle(page, cv::Point(px(c.x, c.y)), cv::Point(px(c.x + c.width, c.y + c.height)), cv::Scalar(0), 1, cv::LINE_AA);
+  }
+  // scan's blur, as a copier's optics give it
+  FieldReading read() {
+    cv::Mat blurred;
+    cv::GaussianBlur(page, blurred, cv::Size(0, 0), 0.6);
+    return read_field(blurred, map, field, 255, 0, ",", DigitClassifier::builtin());
+  }
+};
+
+}  // namespace
+
+TEST_CASE("tick boxes at 150 dpi: a cross in a heavy pen is read as ticked, a filled box as cancelled") {
+  // 3 px strokes (1.45 pt), corner to corner give or take 0.12 of the box (the suite's crosses)
+  constexpr int kCrosses = 24;
+  TickRow row(kCrosses + 2);
+  std::uint64_t state = 20261206;
+  auto jitter = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 1.2 * (static_cast<double>(state >> 40) / static_cast<double>(1ULL << 24) - 0.5) * 2;
+  };
+  for (int i = 0; i < kCrosses; ++i) {
+    const Rect& b = row.field.cells[static_cast<std::size_t>(i)];
+    const auto a0 = row.px(b.x + jitter(), b.y + jitter()), a1 = row.px(b.x + b.width + jitter(), b.y + b.height + jitter());
+    const auto b0 = row.px(b.x + b.width + jitter(), b.y + jitter()), b1 = row.px(b.x + jitter(), b.y + b.height + jitter());
+    cv::line(row.page, cv::Point(a0), cv::Point(a1), cv::Scalar(40), 3, cv::LINE_AA);
+    cv::line(row.page, cv::Point(b0), cv::Point(b1), cv::Scalar(40), 3, cv::LINE_AA);
+  }
+  for (int i = kCrosses; i < kCrosses + 2; ++i) {  // filled as a pen fills a box, a little over its edges
+    const Rect& b = row.field.cells[static_cast<std::size_t>(i)];
+    cv::rectangle(row.page, cv::Point(row.px(b.x - 0.5, b.y - 0.5)), cv::Point(row.px(b.x + b.width + 0.5, b.y + b.height + 0.5)), cv::Scalar(40), cv::FILLED);
+  }
+  row.borders();
+  const FieldReading r = row.read();
+  REQUIRE(r.ticks.size() == kCrosses + 2);
+  int heavy = 0, sides_half_inked = 0;
+  for (int i = 0; i < kCrosses; ++i) {
+    CAPTURE(i);
+    const TickReading& t = r.ticks[static_cast<std::size_t>(i)];
+    CAPTURE(t.filled);
+    CAPTURE(t.sides);
+    CAPTURE(t.contrast);
+    CHECK(t.state == TickState::ticked);
+    heavy += t.filled >= kTickFilled;
+    sides_half_inked += t.filled >= kTickFilled && t.sides >= kSidesOpen;  // what the share alone left in doubt
+  }
+  CHECK(heavy >= kCrosses / 2);
+  CHECK(sides_half_inked >= 3);
+  for (int i = kCrosses; i < kCrosses + 2; ++i) {
+    const TickReading& t = r.ticks[static_cast<std::size_t>(i)];
+    CAPTURE(t.contrast);
+    CHECK(t.state == TickState::cancelled);
+  }
+}
