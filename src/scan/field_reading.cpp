@@ -98,7 +98,10 @@ TickReading read_tick(const cv::Mat& g, const PageMap& map, const Rect& box, con
   r.sides = static_cast<double>(*std::min_element(side, side + 4)) / 12;
   r.light = static_cast<double>(light) / (kGrid * kGrid);
   r.light_sides = static_cast<double>(*std::min_element(light_side, light_side + 4)) / 12;
-  r.contrast = diagonals / (2 * kGrid) - *std::min_element(side_ink, side_ink + 4) / 12;
+  std::sort(side_ink, side_ink + 4);
+  r.open_side = side_ink[0] / 12;
+  r.contrast = diagonals / (2 * kGrid) - r.open_side;
+  r.cross_contrast = diagonals / (2 * kGrid) - side_ink[2] / 12;
   r.state = tick_state(r);
   return r;
 }
@@ -109,10 +112,11 @@ TickState tick_state(const TickReading& r) {
   const bool mark_shaped = r.contrast >= kMarkContrast;
   if (r.filled >= kTickFilled) {
     if (r.sides >= kSidesFilled && !mark_shaped) return TickState::cancelled;
-    if (r.sides < kSidesFilled && mark_shaped) return TickState::ticked;
+    if (r.sides < kSidesOpen && mark_shaped) return TickState::ticked;
+    if (r.sides < kSidesFilled && mark_shaped && r.cross_contrast >= kCrossContrast) return TickState::ticked;
     return TickState::uncertain;
   }
-  if (r.filled >= kTickMarked) return TickState::ticked;
+  if (r.filled >= kTickMarked) return r.open_side < kOpenSide ? TickState::ticked : TickState::uncertain;
   if (r.light >= kTickLight && r.light_sides < kSidesOpen) return TickState::ticked;
   if (r.filled <= kTickEmpty && r.faint < kTickFaint) return TickState::empty;
   return TickState::uncertain;

@@ -19,14 +19,18 @@
 // those, or a mark fainter still (what an eraser leaves), the box is uncertain and the field
 // goes to review: never guessed.
 //
-// A box inked from kTickFilled is told by its shape, not by its share: a pen's fill inks it
+// A box inked from kTickFilled is told by its shape as well as its share: a pen's fill inks it
 // evenly, while a mark, however heavy, leaves the middle of some side lighter than the box's
-// diagonals (a cross's four wedges, the top of a check mark). At 150 dpi a cross in a heavy pen
-// (strokes of 3 px in a box of 21) inks 80 % of the inside and half of some side's middle, which
-// the share alone could not tell from a fill gone short of the sides: 6 to 14 tick fields a
-// sample went to review for that. So it is ticked when the least inked side's middle is lighter
-// than the diagonals by kMarkContrast (and cancelled only when it is not); a box evenly inked but
-// short of a fill's sides (a copier's speckle over a light fill) stays uncertain.
+// diagonals (a cross's wedges, the top of a check mark). Such a box is cancelled only when every
+// side's middle is inked and none is lighter than the diagonals by kMarkContrast; ticked when
+// the least inked side's middle is under kSidesOpen dark and lighter than the diagonals by
+// kMarkContrast. Between those (a side's middle a third to half inked) lie both a cross in a heavy
+// pen at 150 dpi (strokes of 3 px in a box of 21 ink 80 % of the inside: 6 to 14 tick fields a
+// sample of 24-sheet stacks went to review for them) and a fill gone short of one side: a cross
+// leaves four wedges, so it is ticked there only when three of the four sides' middles are
+// lighter than the diagonals by kCrossContrast; a fill short of one side, or inked unevenly (a
+// copier's speckle over a light fill), is uncertain. Under kTickFilled a mark leaves some side's
+// middle nearly white (its mean ink under kOpenSide); a box inked evenly there is uncertain too.
 //
 // A comb cell: its crop (digit_classifier.h) read by the network; the field's value is
 // assembled from its cells (a sign cell, the integer digits, the decimals after the printed
@@ -51,12 +55,18 @@ inline constexpr double kTickEmpty = 0.03;   // at most this share inked: empty
 inline constexpr double kTickMarked = 0.07;  // from this share: a tick
 inline constexpr double kTickFilled = 0.7;   // from this share, the sides' middles inked too: filled
 inline constexpr double kSidesFilled = 0.6;  // the least inked side's middle of a filled box
-// kMarkContrast: the diagonals' mean ink less the least inked side middle's. Measured on five
-// samples of four stacks of 24 sheets (4,389 boxes inked past 0.4, every format, 2026-12-06):
-// 1,024 filled boxes 0.028 at most; 421 marks inked from kTickFilled 0.375 at least (all marks
-// 0.206 at least). Halfway, rounded down.
+// The shape's measures, from five samples of four stacks of 24 sheets (4,389 boxes inked past 0.4,
+// every format, 2026-12-06): kMarkContrast, the diagonals' mean ink less the least inked side
+// middle's: 1,024 filled boxes -0.008 to 0.028, the 421 marks inked from kTickFilled 0.374 up, every
+// mark 0.206 up; halfway, rounded down. kCrossContrast, the diagonals' mean ink less the third
+// least inked side middle's: the filled boxes -0.017 to 0.013, the 46 heavy crosses whose least
+// inked side is between kSidesOpen and kSidesFilled 0.213 to 0.455 (a fill short of one side has
+// three sides inked: under 0). kOpenSide, the least inked side middle's mean ink: every mark under
+// kTickFilled 0.253 at most; registration_test's bilevel light fill (60 % black speckle) 0.47.
 inline constexpr double kMarkContrast = 0.2;
-inline constexpr double kSidesOpen = 0.3;    // a light pen's tick leaves its sides' middles under this
+inline constexpr double kCrossContrast = 0.15;
+inline constexpr double kOpenSide = 0.4;
+inline constexpr double kSidesOpen = 0.3;    // a mark leaves the dark share of a side's middle under this
 inline constexpr double kTickFaint = 0.06;   // this share of faint ink (a quarter of the way) with no tick: uncertain
 // A light pen's tick: this share of the inside past kLightInk, the sides' middles under
 // kSidesOpen. Measured on the suite's four stacks of 24 sheets (221 crosses at 40 % ink, every
@@ -71,7 +81,9 @@ struct TickReading {
   double sides = 0;   // the least inked of the four sides' middles
   double light = 0;        // share past kLightInk
   double light_sides = 0;  // the least of the four sides' middles past kLightInk
-  double contrast = 0;     // the diagonals' mean ink less the least inked side middle's
+  double open_side = 0;       // the least inked side middle's mean ink
+  double contrast = 0;        // the diagonals' mean ink less open_side
+  double cross_contrast = 0;  // the diagonals' mean ink less the third least inked side middle's
 };
 
 // What a box's measures say it holds (the rules above).

@@ -38,7 +38,7 @@ key=$tmp/set/key.json
 # Ticks (about 47 a stack, one in four a light pen's cross at 40 % ink, read as ticked since
 # 2026-12-06): none sent to review; bound 4 (heavy crosses at 150 dpi sent 0-2 until they were
 # told from fills by their shape; before that, every light cross went, about 12 a stack). Fields to review: bound 12 %, the bilevel stack's
-# 7.6 % with a margin (the depth-1 networks sent 11.6 %: under it, but not the 6 % together below).
+# 7.6 % with a margin (the depth-1 networks sent 11.6 %: under it, but not the 5 % together below).
 max_tick_review=${EPURE_SCAN_MAX_TICK_REVIEW:-0.09}
 max_silent=${EPURE_SCAN_MAX_SILENT:-0.008}
 max_review=${EPURE_SCAN_MAX_REVIEW:-0.12}
@@ -80,9 +80,10 @@ done
 
 # The four stacks together (788 fields, 1,622 digits): the issue's figures (measured 2026-12-06,
 # afternoon: digits 99.45 %, silent errors 0, ticks 186 right of 186, fields to review 39, 4.95 %).
-# These stacks are one deterministic draw, so the 5 % bound holds them with a field to spare (39
-# of at most 39.4): on the larger samples of bench/scan_accuracy.sh the rate is 4.50-4.90 %, and
-# a change that sends more fields to review here is to be measured there, not loosened here.
+# These stacks are one deterministic draw and the 5 % bound leaves no field to spare (39 is the
+# most it lets through: a 40th is 5.08 %). On the larger samples of bench/scan_accuracy.sh the
+# rate is 4.50-4.90 %: a change that sends more fields to review here is to be measured there,
+# not loosened here.
 # Before: 5.2 % (two heavy crosses to review), 5.7 % (a second look from five crops), 7.2 % (the
 # depth-1 networks), pinned at 6 % until the ticks were told by their shape.
 python3 - "$tmp"/s1/figures.json "$tmp"/s2/figures.json "$tmp"/s3/figures.json "$tmp"/s4/figures.json <<'PY' && ok "the four stacks together: the issue's digits, silent errors, ticks and fields to review (5 %)" || fail=1
