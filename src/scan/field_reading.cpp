@@ -116,7 +116,7 @@ TickState tick_state(const TickReading& r) {
     if (r.sides < kSidesFilled && mark_shaped && r.cross_contrast >= kCrossContrast) return TickState::ticked;
     return TickState::uncertain;
   }
-  if (r.filled >= kTickMarked) return r.open_side < kOpenSide ? TickState::ticked : TickState::uncertain;
+  if (r.filled >= kTickMarked) return TickState::ticked;
   if (r.light >= kTickLight && r.light_sides < kSidesOpen) return TickState::ticked;
   if (r.filled <= kTickEmpty && r.faint < kTickFaint) return TickState::empty;
   return TickState::uncertain;

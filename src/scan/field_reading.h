@@ -29,8 +29,8 @@
 // sample of 24-sheet stacks went to review for them) and a fill gone short of one side: a cross
 // leaves four wedges, so it is ticked there only when three of the four sides' middles are
 // lighter than the diagonals by kCrossContrast; a fill short of one side, or inked unevenly (a
-// copier's speckle over a light fill), is uncertain. Under kTickFilled a mark leaves some side's
-// middle nearly white (its mean ink under kOpenSide); a box inked evenly there is uncertain too.
+// copier's speckle over a light fill), is uncertain. Under kTickFilled every mark is a tick: a
+// "+" or a circled box leaves no side's middle white, so the shape is not asked there.
 //
 // A comb cell: its crop (digit_classifier.h) read by the network; the field's value is
 // assembled from its cells (a sign cell, the integer digits, the decimals after the printed
@@ -61,11 +61,9 @@ inline constexpr double kSidesFilled = 0.6;  // the least inked side's middle of
 // mark 0.206 up; halfway, rounded down. kCrossContrast, the diagonals' mean ink less the third
 // least inked side middle's: the filled boxes -0.017 to 0.013, the 46 heavy crosses whose least
 // inked side is between kSidesOpen and kSidesFilled 0.213 to 0.455 (a fill short of one side has
-// three sides inked: under 0). kOpenSide, the least inked side middle's mean ink: every mark under
-// kTickFilled 0.253 at most; registration_test's bilevel light fill (60 % black speckle) 0.47.
+// three sides inked: under 0).
 inline constexpr double kMarkContrast = 0.2;
 inline constexpr double kCrossContrast = 0.15;
-inline constexpr double kOpenSide = 0.4;
 inline constexpr double kSidesOpen = 0.3;    // a mark leaves the dark share of a side's middle under this
 inline constexpr double kTickFaint = 0.06;   // this share of faint ink (a quarter of the way) with no tick: uncertain
 // A light pen's tick: this share of the inside past kLightInk, the sides' middles under
