@@ -4,7 +4,7 @@
 # no layout) and epure writing the class-set PDFs (sheets.pdf + keys.pdf, generation included),
 # for the same number of sheets, in the same run, run by run alternated:
 # - one core: the floor and `epure --jobs 1`, each pinned to one core (taskset), in CPU time,
-#   user + system (GNU time's %U and %S): target <= 1.3x the floor's CPU time a page;
+#   user + system (bench/cpu_time.py, in microseconds): target <= 1.3x the floor's CPU time a page;
 # - two jobs: `epure --jobs 2` on both cores, its wall time (what two cores buy is time, not CPU)
 #   against the floor's one-core CPU time a page: target <= 0.75x. Its CPU time is printed too.
 # The machine is shared: run it where nothing else runs, or read the spread between runs.
@@ -24,6 +24,7 @@ spec_args=()
 epure=${EPURE:-$build/epure}
 shared=${EPURE_SHARED_DIR:-$(dirname "$0")/../../shared}
 work=${BENCH_DIR:-$(mktemp -d)}
+bench=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 trap '[ -z "${BENCH_DIR:-}" ] && rm -rf "$work"' EXIT
 export SOURCE_DATE_EPOCH=1700000000
@@ -33,7 +34,7 @@ cc -O2 -std=gnu11 -o "$work/floor" "$shared/bench-floor/sheets.c" \
 
 once() {  # once LABEL COMMAND...: appends "wall user sys" of one run to LABEL.times
   local label=$1; shift
-  /usr/bin/time -f "%e %U %S" -o "$work/time" "$@" >/dev/null
+  python3 "$bench/cpu_time.py" "%e %U %S" "$work/time" "$@"
   cat "$work/time" >> "$work/$label.times"
 }
 : > "$work/floor.times"; : > "$work/one.times"; : > "$work/two.times"

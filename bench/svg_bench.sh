@@ -3,8 +3,9 @@
 # program of ../shared/bench-floor/ in `svg` mode (fprintf of a sheet page and a key page, two
 # files a sheet) and epure writing sheets/<id>.svg, keys/<id>.svg and key.json for the same
 # number of sheets, in the same run, each pinned to one core (taskset), the two alternated run by
-# run. Both are measured in CPU time, user + system (GNU time's %U and %S), not wall time: the
-# machine is shared, and the floor's wall time is mostly waiting for the file system. Prints each
+# run. Both are measured in CPU time, user + system (bench/cpu_time.py: the kernel's
+# microseconds, not GNU time's centiseconds, which read the floor's 0.04 s to ±25 %), not wall
+# time: the machine is shared, and the floor's wall time is mostly waiting for the file system. Prints each
 # run, the medians, and the ratio the target is stated in: epure's CPU time a page over the
 # floor's (target <= 2.0x).
 #
@@ -21,6 +22,7 @@ cpu=${CPU:-1}
 epure=${EPURE:-$build/epure}
 shared=${EPURE_SHARED_DIR:-$(dirname "$0")/../../shared}
 work=${BENCH_DIR:-$(mktemp -d)}
+bench=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 trap '[ -z "${BENCH_DIR:-}" ] && rm -rf "$work"' EXIT
 
@@ -32,7 +34,7 @@ spec_args=()
 once() {  # once LABEL OUTDIR COMMAND...: appends "user sys" of one run to LABEL.cpu
   local label=$1 out=$2; shift 2
   rm -rf "$out" && mkdir -p "$out"
-  /usr/bin/time -f "%U %S" -o "$work/time" "$@" >/dev/null
+  python3 "$bench/cpu_time.py" "%U %S" "$work/time" "$@"
   cat "$work/time" >> "$work/$label.cpu"
 }
 : > "$work/floor.cpu"; : > "$work/epure.cpu"
@@ -59,7 +61,7 @@ for i, ((fu, fs), (eu, es)) in enumerate(zip(floor, epure), 1):
     f, e = fu + fs, eu + es
     fpp, epp = 1000 * f / fp, 1000 * e / ep
     ratios.append(epp / fpp if fpp > 0 else float("inf"))
-    print(f"| {i} | {fu:.2f}+{fs:.2f} | {eu:.2f}+{es:.2f} | {fpp:.4f} | {epp:.4f} | {ratios[-1]:.2f}x |")
+    print(f"| {i} | {fu:.3f}+{fs:.3f} | {eu:.3f}+{es:.3f} | {fpp:.4f} | {epp:.4f} | {ratios[-1]:.2f}x |")
 f = statistics.median(u + s for u, s in floor)
 e = statistics.median(u + s for u, s in epure)
 print(f"median CPU: floor {1000 * f / fp:.4f} ms a page, epure {1000 * e / ep:.4f} ms a page: "
