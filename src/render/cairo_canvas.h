@@ -88,6 +88,10 @@ class CairoCanvas final : public Canvas {
   PendingText pending_;
 
   cairo_t* cr_;
+  // With a font map of its own (a document drawn on a thread of its own), faces of its own too:
+  // glyphs are set from the font file opened again on the thread that first sets text, a face
+  // no canvas first used on another thread shares (thread_face).
+  bool own_faces_;
   PangoContext* context_ = nullptr;
   // Runs shaped once and drawn as often as they occur (labels, axis numbers and the templates'
   // words repeat from sheet to sheet): shaping is most of the cost of text.

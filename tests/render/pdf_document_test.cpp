@@ -14,6 +14,7 @@
 #include <variant>
 #include <string>
 #include <string_view>
+#include <thread>
 
 #include "render/cairo_canvas.h"
 #include "render/text.h"
@@ -256,4 +257,43 @@ TEST_CASE("png: a page and a scene drawn as PNG images of the asked size") {
   const auto* figure = std::get_if<Figure>(&doc.sections[0].blocks[2]);
   REQUIRE(figure != nullptr);
   CHECK(scene_to_png(figure->scene, 300, 72).rfind("\x89PNG", 0) == 0);
+}
+
+// A canvas given a font map of its own (a document drawn on a thread of its own) sets its glyphs
+// from the font file opened again on its thread (cairo_canvas.cpp, thread_face), so that two
+// documents drawn at once share no cairo face nor the locks of its scaled fonts. The faces are
+// other objects, the PDF must be the same bytes: the same glyphs, widths and embedded subsets as
+// through the faces pango shares, whether the documents are drawn one after the other or at once.
+TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's shared faces, on two threads at once") {
+  auto pdf = [](bool own_faces) {
+    std::string bytes;
+    cairo_surface_t* surface = test::pdf_surface_into(bytes, 595, 842);
+    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
+    cairo_t* cr = cairo_create(surface);
+    PangoFontMap* fonts = own_faces ? pango_cairo_font_map_new() : nullptr;
+    {
+      CairoCanvas canvas(cr, fonts);
+      const std::vector<TextRun> runs[] = {
+          {{"Intersection d'un rayon ", Shift::none, false, false}, {"et d'un cercle", Shift::none, false, true}},
+          {{"t", Shift::none, false, false}, {"1", Shift::sub, false, false}, {" = 2,17 ≈ √(x² + y²)", Shift::none, false, false}},
+          {{"u∧v · t ≤ 1 → θ = −45° ", Shift::none, false, false}, {"中", Shift::none, false, false}, {" fin", Shift::none, false, false}},
+      };
+      for (int i = 0; i < 40; ++i) canvas.text(TextLine{{50, 40 + 18.0 * i}, Anchor::start, 10, runs[i % 3], Colour{}});
+    }
+    if (fonts != nullptr) g_object_unref(fonts);
+    cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    cairo_surface_destroy(surface);
+    return bytes;
+  };
+  const std::string shared = pdf(false);
+  REQUIRE(shared.size() > 2000);
+  CHECK(pdf(true) == shared);
+  // Four documents at once, two a thread, each with its font map: the same bytes again.
+  std::string drawn[4];
+  {
+    std::jthread a([&] { drawn[0] = pdf(true), drawn[1] = pdf(true); });
+    std::jthread b([&] { drawn[2] = pdf(true), drawn[3] = pdf(true); });
+  }
+  for (const std::string& d : drawn) CHECK(d == shared);
 }
