@@ -2,7 +2,7 @@
 """cpu_time.py FORMAT OUT COMMAND...: runs COMMAND (its stdout to /dev/null) and writes FORMAT to
 OUT with %e (wall), %U (user) and %S (system) in seconds at the kernel's resolution, as GNU time's
 -f does (same letters) but with microseconds: GNU time prints centiseconds, so the floor's CPU
-time for 500 SVG sheets (0.04 s) was read to ±25 %. The times are os.wait4's, the command's own
+time for 500 SVG sheets (0.05-0.08 s) was read to about ±20 %. The times are os.wait4's, the command's own
 and its threads' (taskset execs into the command). Exits with the command's status."""
 import os
 import sys

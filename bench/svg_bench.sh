@@ -4,10 +4,10 @@
 # files a sheet) and epure writing sheets/<id>.svg, keys/<id>.svg and key.json for the same
 # number of sheets, in the same run, each pinned to one core (taskset), the two alternated run by
 # run. Both are measured in CPU time, user + system (bench/cpu_time.py: the kernel's
-# microseconds, not GNU time's centiseconds, which read the floor's 0.04 s to ±25 %), not wall
-# time: the machine is shared, and the floor's wall time is mostly waiting for the file system. Prints each
-# run, the medians, and the ratio the target is stated in: epure's CPU time a page over the
-# floor's (target <= 2.0x).
+# microseconds, not GNU time's centiseconds, which read the floor's 0.05-0.08 s to about ±20 %),
+# not wall time: the machine is shared, and the floor's wall time is mostly waiting for the file
+# system. Prints each run, the medians, and the ratio the target is stated in: epure's CPU time
+# a page over the floor's (target <= 2.0x).
 #
 #   bench/svg_bench.sh [BUILD_DIR] [SHEETS] [RUNS] [SPEC]    e.g. bench/svg_bench.sh build 1000 5
 # SPEC defaults to the built-in course worksheet; bench/floor_like.toml holds the floor's four

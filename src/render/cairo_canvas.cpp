@@ -77,16 +77,24 @@ struct ThreadFaces {
 };
 
 // The font file pango chose for `font`, as a cairo face of the calling thread's (a reference
-// the caller owns), or null (then pango's face is used). cairo keys the faces it makes from
-// fontconfig by file, so two canvases drawing DejaVu Sans on two threads would otherwise share
-// one face and its scaled fonts, whose locks every glyph takes: issue 34 measured 7,326 futex
-// calls on 100 sheets of two jobs, 1,307 with faces of the thread's.
-cairo_font_face_t* thread_face(PangoFont* font) {
-  if (!PANGO_IS_FC_FONT(font)) return nullptr;
+// the caller owns), or null (then pango's face, `shared`, is used): also when pango's face is
+// more than the file, a bold made up from the regular (fontconfig's embolden, where no bold file
+// is installed) or a variable font's instance, which the file opened alone would not draw.
+// cairo keys the faces it makes from fontconfig by file, so two canvases drawing DejaVu Sans on
+// two threads would otherwise share one face and its scaled fonts, whose locks every glyph
+// takes: issue 34 measured 7,326 futex calls on 100 sheets of two jobs, 1,643 with faces of
+// the thread's.
+cairo_font_face_t* thread_face(PangoFont* font, cairo_font_face_t* shared) {
+  if (!PANGO_IS_FC_FONT(font) || cairo_font_face_get_type(shared) != CAIRO_FONT_TYPE_FT ||
+      cairo_ft_font_face_get_synthesize(shared) != 0)
+    return nullptr;
   FcPattern* pattern = pango_fc_font_get_pattern(PANGO_FC_FONT(font));
   FcChar8* file = nullptr;
+  FcChar8* variations = nullptr;
   int index = 0;
-  if (pattern == nullptr || FcPatternGetString(pattern, FC_FILE, 0, &file) != FcResultMatch) return nullptr;
+  if (pattern == nullptr || FcPatternGetString(pattern, FC_FILE, 0, &file) != FcResultMatch ||
+      FcPatternGetString(pattern, FC_FONT_VARIATIONS, 0, &variations) == FcResultMatch)
+    return nullptr;
   FcPatternGetInteger(pattern, FC_INDEX, 0, &index);
   thread_local ThreadFaces opened;
   auto key = std::make_pair(std::string(reinterpret_cast<const char*>(file)), index);
@@ -268,7 +276,7 @@ CairoCanvas::LoadedFace& CairoCanvas::face(bool bold) {
     pango_font_description_free(font);
     if (f.font != nullptr && PANGO_IS_CAIRO_FONT(f.font)) {
       f.scaled = pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(f.font));
-      if (f.scaled != nullptr && own_faces_) f.face = thread_face(f.font);
+      if (f.scaled != nullptr && own_faces_) f.face = thread_face(f.font, cairo_scaled_font_get_font_face(f.scaled));
       if (f.scaled != nullptr && f.face == nullptr)
         f.face = cairo_font_face_reference(cairo_scaled_font_get_font_face(f.scaled));
     }

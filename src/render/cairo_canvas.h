@@ -50,6 +50,11 @@ class CairoCanvas final : public Canvas {
   // (the tests compare them), or the PDF's text would not be where layout measured it.
   double set_width(const TextRun& run, double size);
 
+  // The cairo face glyphs are set from (regular or bold; null when DejaVu Sans is missing): the
+  // thread's own with a font map of the canvas's own, else pango's, which every thread shares.
+  // For the tests, which check that two documents on two threads share none.
+  cairo_font_face_t* glyph_face(bool bold) { return face(bold).face; }
+
  private:
   void fill_and_stroke(const Paint& paint);
   PangoLayout* shaped(const TextRun& run, double size);

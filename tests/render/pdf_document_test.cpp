@@ -7,6 +7,7 @@
 #include <pango/pangocairo.h>
 #include <fmt/format.h>
 
+#include <array>
 #include <cstdlib>
 #include <span>
 #include <vector>
@@ -265,7 +266,9 @@ TEST_CASE("png: a page and a scene drawn as PNG images of the asked size") {
 // other objects, the PDF must be the same bytes: the same glyphs, widths and embedded subsets as
 // through the faces pango shares, whether the documents are drawn one after the other or at once.
 TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's shared faces, on two threads at once") {
-  auto pdf = [](bool own_faces) {
+  // handed_over: the first lines set on one thread, which then ends, the rest on another, as
+  // keys.pdf's canvas is drawn by a thread a batch
+  auto pdf = [](bool own_faces, bool handed_over = false) {
     std::string bytes;
     cairo_surface_t* surface = test::pdf_surface_into(bytes, 595, 842);
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
@@ -278,7 +281,15 @@ TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's sh
           {{"t", Shift::none, false, false}, {"1", Shift::sub, false, false}, {" = 2,17 ≈ √(x² + y²)", Shift::none, false, false}},
           {{"u∧v · t ≤ 1 → θ = −45° ", Shift::none, false, false}, {"中", Shift::none, false, false}, {" fin", Shift::none, false, false}},
       };
-      for (int i = 0; i < 40; ++i) canvas.text(TextLine{{50, 40 + 18.0 * i}, Anchor::start, 10, runs[i % 3], Colour{}});
+      auto lines = [&](int from, int to) {
+        for (int i = from; i < to; ++i) canvas.text(TextLine{{50, 40 + 18.0 * i}, Anchor::start, 10, runs[i % 3], Colour{}});
+      };
+      if (handed_over) {
+        std::jthread([&] { lines(0, 20); }).join();
+        std::jthread([&] { lines(20, 40); }).join();
+      } else {
+        lines(0, 40);
+      }
     }
     if (fonts != nullptr) g_object_unref(fonts);
     cairo_destroy(cr);
@@ -289,6 +300,7 @@ TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's sh
   const std::string shared = pdf(false);
   REQUIRE(shared.size() > 2000);
   CHECK(pdf(true) == shared);
+  CHECK(pdf(true, true) == shared);
   // Four documents at once, two a thread, each with its font map: the same bytes again.
   std::string drawn[4];
   {
@@ -296,4 +308,45 @@ TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's sh
     std::jthread b([&] { drawn[2] = pdf(true), drawn[3] = pdf(true); });
   }
   for (const std::string& d : drawn) CHECK(d == shared);
+}
+
+TEST_CASE("pdf: canvases with font maps of their own share no face across threads, and one within a thread") {
+  // The faces each canvas sets its glyphs from, made on one thread (both canvases alive at once)
+  auto faces = [](bool own_maps) {
+    std::string bytes;
+    cairo_surface_t* surface = test::pdf_surface_into(bytes, 100, 100);
+    cairo_t* cr = cairo_create(surface);
+    PangoFontMap* maps[2] = {own_maps ? pango_cairo_font_map_new() : nullptr,
+                             own_maps ? pango_cairo_font_map_new() : nullptr};
+    std::array<cairo_font_face_t*, 4> seen{};
+    {
+      CairoCanvas a(cr, maps[0]), b(cr, maps[1]);
+      seen = {a.glyph_face(false), a.glyph_face(true), b.glyph_face(false), b.glyph_face(true)};
+      // held until compared: a face freed with its thread could leave its address to another's
+      for (cairo_font_face_t* f : seen) cairo_font_face_reference(f);
+    }
+    for (PangoFontMap* m : maps)
+      if (m != nullptr) g_object_unref(m);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    return seen;
+  };
+  std::array<cairo_font_face_t*, 4> here{}, there{}, pangos{};
+  {
+    std::jthread a([&] { here = faces(true); });
+  }
+  {
+    std::jthread b([&] { there = faces(true); });
+    pangos = faces(false);
+  }
+  for (cairo_font_face_t* f : here) REQUIRE(f != nullptr);
+  CHECK(here[0] != here[1]);                          // regular and bold
+  CHECK((here[0] == here[2] && here[1] == here[3]));  // one thread: one face a file
+  CHECK(there[0] != here[0]);                         // another thread: other faces
+  CHECK(there[1] != here[1]);
+  CHECK(pangos[0] != here[0]);                        // and not pango's
+  CHECK(pangos[0] == pangos[2]);
+  CHECK(cairo_font_face_get_type(here[0]) == CAIRO_FONT_TYPE_FT);
+  for (const auto* set : {&here, &there, &pangos})
+    for (cairo_font_face_t* f : *set) cairo_font_face_destroy(f);
 }
