@@ -38,9 +38,13 @@ class DocumentLayout {
     std::vector<int> levels(doc_.sections.size(), 0);  // a scale per section: 0 is full size
     const auto budget = static_cast<std::size_t>(std::max(doc_.page_budget, 0));
     // Counted on shapes; the options measured for them are not measured again when the pages
-    // are built.
+    // are built. The count takes each fallback as its page alone would (fast, for the trials),
+    // which can count a page more than the pages are built with (place() tries the fallbacks'
+    // combinations): a document found over its budget so is counted again as it will be
+    // placed, and keeps its figures at full size if that holds the budget.
     if (budget > 0 && !scales_.empty())
-      if (const std::size_t full = pages(levels); full > budget) levels = within_budget(budget, full);
+      if (const std::size_t full = pages(levels); full > budget && pages(levels, false) > budget)
+        levels = within_budget(budget, full);
     return build(levels);
   }
 
@@ -113,8 +117,9 @@ class DocumentLayout {
     return f;
   }
 
-  // The pages at these levels, counted from shapes (the fallbacks taken page by page).
-  std::size_t pages(const std::vector<int>& levels) {
+  // The pages at these levels, counted from shapes: the fallbacks taken page by page, or (not
+  // `page_by_page`) chosen as place() chooses them.
+  std::size_t pages(const std::vector<int>& levels, bool page_by_page = true) {
     if (!opening_) opening_ = sections_.opening(true);
     std::vector<bool> side_used;
     std::size_t n = opening_->size();
@@ -127,7 +132,7 @@ class DocumentLayout {
       atoms.insert(atoms.end(), built.atoms.begin(), built.atoms.end());
       side_used.push_back(built.side_used);
     }
-    return paginator_.count(std::move(atoms), fallbacks(levels, side_used), true);
+    return paginator_.count(std::move(atoms), fallbacks(levels, side_used), page_by_page);
   }
 
   std::vector<LaidOutPage> build(const std::vector<int>& levels) {

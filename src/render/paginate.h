@@ -30,8 +30,8 @@ class Paginator {
   // The atoms on pages, numbered, without header.
   std::vector<LaidOutPage> place(std::vector<Atom> atoms, const Fallbacks& fallbacks);
   // How many pages the atoms take; shapes are enough. With `page_by_page`, each fallback is
-  // taken as one page alone would choose, without trying every combination (at most as many
-  // pages as place() gives, for a budget's trials).
+  // taken as one page alone would choose, without trying every combination (for a budget's
+  // trials): that may count more pages than place() gives, which tries the combinations.
   std::size_t count(std::vector<Atom> atoms, const Fallbacks& fallbacks, bool page_by_page = false);
 
   // An atom without its content: what placing it needs.
