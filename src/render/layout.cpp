@@ -38,13 +38,8 @@ class DocumentLayout {
     std::vector<int> levels(doc_.sections.size(), 0);  // a scale per section: 0 is full size
     const auto budget = static_cast<std::size_t>(std::max(doc_.page_budget, 0));
     // Counted on shapes; the options measured for them are not measured again when the pages
-    // are built. The count takes each fallback as its page alone would (fast, for the trials),
-    // which can count a page more than the pages are built with (place() tries the fallbacks'
-    // combinations): a document found over its budget so is counted again as it will be
-    // placed, and keeps its figures at full size if that holds the budget.
-    if (budget > 0 && !scales_.empty())
-      if (const std::size_t full = pages(levels); full > budget && pages(levels, false) > budget)
-        levels = within_budget(budget, full);
+    // are built.
+    if (budget > 0 && !scales_.empty() && over(levels, budget)) levels = within_budget(budget, pages(levels));
     return build(levels);
   }
 
@@ -66,8 +61,9 @@ class DocumentLayout {
     int fewest_level = 0;
     std::size_t fewest = full;
     for (int level = 1; level <= lowest() && uniform == 0; ++level) {
-      const std::size_t count = pages(std::vector<int>(n, level));
-      if (count <= budget) uniform = level;
+      const std::vector<int> alike(n, level);
+      const std::size_t count = pages(alike);
+      if (!over(alike, budget)) uniform = level;
       if (count < fewest) fewest = count, fewest_level = level;
     }
     if (uniform == 0) {
@@ -78,7 +74,7 @@ class DocumentLayout {
     std::vector<int> levels(n, uniform);
     for (std::size_t si = 0; si < n; ++si) {
       levels[si] = 0;
-      if (pages(levels) > budget) levels[si] = uniform;
+      if (over(levels, budget)) levels[si] = uniform;
     }
     return levels;
   }
@@ -115,6 +111,15 @@ class DocumentLayout {
       return sections_.section(s, scale(levels[static_cast<std::size_t>(s)]), false, false).atoms;
     };
     return f;
+  }
+
+  // Whether the pages at these levels break the budget as they will be placed. Counted with
+  // each fallback taken as its page alone would (fast, for the trials) first; that can count a
+  // page more than place(), which tries the fallbacks' combinations, so a count over the budget
+  // is made again as place() chooses: no figure is set smaller for a page the pages would not
+  // take.
+  bool over(const std::vector<int>& levels, std::size_t budget) {
+    return pages(levels) > budget && pages(levels, false) > budget;
   }
 
   // The pages at these levels, counted from shapes: the fallbacks taken page by page, or (not
