@@ -39,7 +39,8 @@ class DocumentLayout {
     const auto budget = static_cast<std::size_t>(std::max(doc_.page_budget, 0));
     // Counted on shapes; the options measured for them are not measured again when the pages
     // are built.
-    if (budget > 0 && !scales_.empty() && over(levels, budget)) levels = within_budget(budget, pages(levels));
+    if (budget > 0 && !scales_.empty())
+      if (const Count full = count(levels, budget); full.over) levels = within_budget(budget, full.quick);
     return build(levels);
   }
 
@@ -62,9 +63,9 @@ class DocumentLayout {
     std::size_t fewest = full;
     for (int level = 1; level <= lowest() && uniform == 0; ++level) {
       const std::vector<int> alike(n, level);
-      const std::size_t count = pages(alike);
-      if (!over(alike, budget)) uniform = level;
-      if (count < fewest) fewest = count, fewest_level = level;
+      const Count c = count(alike, budget);
+      if (!c.over) uniform = level;
+      if (c.quick < fewest) fewest = c.quick, fewest_level = level;
     }
     if (uniform == 0) {
       if (fewest_level == 0) return std::vector<int>(n, 0);
@@ -74,7 +75,7 @@ class DocumentLayout {
     std::vector<int> levels(n, uniform);
     for (std::size_t si = 0; si < n; ++si) {
       levels[si] = 0;
-      if (over(levels, budget)) levels[si] = uniform;
+      if (count(levels, budget).over) levels[si] = uniform;
     }
     return levels;
   }
@@ -113,13 +114,18 @@ class DocumentLayout {
     return f;
   }
 
-  // Whether the pages at these levels break the budget as they will be placed. Counted with
-  // each fallback taken as its page alone would (fast, for the trials) first; that can count a
-  // page more than place(), which tries the fallbacks' combinations, so a count over the budget
-  // is made again as place() chooses: no figure is set smaller for a page the pages would not
-  // take.
-  bool over(const std::vector<int>& levels, std::size_t budget) {
-    return pages(levels) > budget && pages(levels, false) > budget;
+  // The pages at these levels against the budget. `quick` is counted with each fallback taken
+  // as its page alone would (fast, for the trials); that can count a page more than place(),
+  // which tries the fallbacks' combinations, so a quick count over the budget is made again as
+  // place() chooses, and `over` says whether the pages as they will be placed break the budget:
+  // no figure is set smaller for a page the pages would not take.
+  struct Count {
+    std::size_t quick;
+    bool over;
+  };
+  Count count(const std::vector<int>& levels, std::size_t budget) {
+    const std::size_t quick = pages(levels);
+    return {quick, quick > budget && pages(levels, false) > budget};
   }
 
   // The pages at these levels, counted from shapes: the fallbacks taken page by page, or (not

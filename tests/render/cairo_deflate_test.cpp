@@ -44,18 +44,15 @@ std::string inflated(const std::string& bytes) {
 TEST_CASE("cairo_deflate: cairo's PDF streams are compressed at the fast level, other levels as asked") {
   const std::uint64_t before = cairo_deflate_streams();
   std::string pdf;
-  cairo_surface_t* surface = test::pdf_surface_into(pdf, 200, 200);
-  cairo_pdf_surface_restrict_to_version(surface, CAIRO_PDF_VERSION_1_5);
-  cairo_t* cr = cairo_create(surface);
+  test::PdfInto into(pdf, 200, 200);
+  cairo_pdf_surface_restrict_to_version(into.surface(), CAIRO_PDF_VERSION_1_5);
+  cairo_t* cr = into.cr();
   for (int i = 0; i < 3000; ++i) {  // a content stream long enough for the levels to differ
     cairo_rectangle(cr, i % 137 + 0.25 * (i % 7), i % 153 + 0.125 * (i % 13), 3 + i % 5, 2 + i % 11);
     cairo_set_source_rgb(cr, (i % 4) / 4.0, 0, 0);
     cairo_fill(cr);
   }
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  REQUIRE(cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS);
-  cairo_surface_destroy(surface);
+  REQUIRE(into.finish() == CAIRO_STATUS_SUCCESS);
   CHECK(cairo_deflate_streams() > before);
 
   // The page's content stream: its bytes are what zlib writes at the fast level, not the default.

@@ -94,16 +94,13 @@ TEST_CASE("fixed_decimal: what glibc's %.*f writes") {
 TEST_CASE("cairo_printf: cairo's numbers reach the fast path, other formats reach glibc") {
   const std::uint64_t before = cairo_printf_fast_calls();
   std::string pdf;
-  cairo_surface_t* surface = test::pdf_surface_into(pdf, 100, 100);
-  cairo_pdf_surface_restrict_to_version(surface, CAIRO_PDF_VERSION_1_5);
-  cairo_t* cr = cairo_create(surface);
+  test::PdfInto into(pdf, 100, 100);
+  cairo_pdf_surface_restrict_to_version(into.surface(), CAIRO_PDF_VERSION_1_5);
+  cairo_t* cr = into.cr();
   cairo_move_to(cr, 10.125, 20.0625);
   cairo_line_to(cr, 0.0123456789, 90.5);
   cairo_stroke(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  REQUIRE(cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS);
-  cairo_surface_destroy(surface);
+  REQUIRE(into.finish() == CAIRO_STATUS_SUCCESS);
   CHECK(cairo_printf_fast_calls() > before);
   CHECK(pdf.rfind("%PDF-1.5", 0) == 0);
 

@@ -210,9 +210,9 @@ TEST_CASE("pdf: text set glyph by glyph looks as pango sets it, and pango still 
 TEST_CASE("pdf: text held back and drawn in one call writes the bytes of text drawn line by line") {
   auto pdf = [](bool line_by_line) {
     std::string bytes;
-    cairo_surface_t* surface = test::pdf_surface_into(bytes, 595, 842);
-    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
-    cairo_t* cr = cairo_create(surface);
+    test::PdfInto into(bytes, 595, 842);
+    cairo_pdf_surface_set_metadata(into.surface(), CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
+    cairo_t* cr = into.cr();
     {
       CairoCanvas canvas(cr);
       // Plain, bold, a subscript (another size), accents, symbols, and a character DejaVu Sans
@@ -232,9 +232,7 @@ TEST_CASE("pdf: text held back and drawn in one call writes the bytes of text dr
         if (i % 9 == 4) canvas.path(box, Paint{std::nullopt, Colour{0, 0, 200}, 1});
       }
     }
-    cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    cairo_surface_destroy(surface);
+    into.finish();
     return bytes;
   };
   const std::string held = pdf(false);
@@ -270,9 +268,9 @@ TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's sh
   // keys.pdf's canvas is drawn by a thread a batch
   auto pdf = [](bool own_faces, bool handed_over = false) {
     std::string bytes;
-    cairo_surface_t* surface = test::pdf_surface_into(bytes, 595, 842);
-    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
-    cairo_t* cr = cairo_create(surface);
+    test::PdfInto into(bytes, 595, 842);
+    cairo_pdf_surface_set_metadata(into.surface(), CAIRO_PDF_METADATA_CREATE_DATE, "2026-01-01T00:00:00Z");
+    cairo_t* cr = into.cr();
     PangoFontMap* fonts = own_faces ? pango_cairo_font_map_new() : nullptr;
     {
       CairoCanvas canvas(cr, fonts);
@@ -292,9 +290,7 @@ TEST_CASE("pdf: text in faces of the thread's own writes the bytes of pango's sh
       }
     }
     if (fonts != nullptr) g_object_unref(fonts);
-    cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    cairo_surface_destroy(surface);
+    into.finish();
     return bytes;
   };
   const std::string shared = pdf(false);
@@ -314,8 +310,8 @@ TEST_CASE("pdf: canvases with font maps of their own share no face across thread
   // The faces each canvas sets its glyphs from, made on one thread (both canvases alive at once)
   auto faces = [](bool own_maps) {
     std::string bytes;
-    cairo_surface_t* surface = test::pdf_surface_into(bytes, 100, 100);
-    cairo_t* cr = cairo_create(surface);
+    test::PdfInto into(bytes, 100, 100);
+    cairo_t* cr = into.cr();
     PangoFontMap* maps[2] = {own_maps ? pango_cairo_font_map_new() : nullptr,
                              own_maps ? pango_cairo_font_map_new() : nullptr};
     std::array<cairo_font_face_t*, 4> seen{};
@@ -327,8 +323,6 @@ TEST_CASE("pdf: canvases with font maps of their own share no face across thread
     }
     for (PangoFontMap* m : maps)
       if (m != nullptr) g_object_unref(m);
-    cairo_destroy(cr);
-    cairo_surface_destroy(surface);
     return seen;
   };
   std::array<cairo_font_face_t*, 4> here{}, there{}, pangos{};

@@ -17,4 +17,32 @@ inline cairo_surface_t* pdf_surface_into(std::string& bytes, double width_pt, do
       &bytes, width_pt, height_pt);
 }
 
+// A PDF surface writing into `bytes` and a cairo context on it, released however the test
+// leaves: finish() ends the PDF (the bytes are whole after it) and says how cairo fared.
+class PdfInto {
+ public:
+  PdfInto(std::string& bytes, double width_pt, double height_pt)
+      : surface_(pdf_surface_into(bytes, width_pt, height_pt)), cr_(cairo_create(surface_)) {}
+  PdfInto(const PdfInto&) = delete;
+  PdfInto& operator=(const PdfInto&) = delete;
+  ~PdfInto() {
+    if (cr_ != nullptr) cairo_destroy(cr_);
+    cairo_surface_destroy(surface_);
+  }
+
+  cairo_surface_t* surface() const { return surface_; }
+  cairo_t* cr() const { return cr_; }
+
+  cairo_status_t finish() {
+    if (cr_ != nullptr) cairo_destroy(cr_);
+    cr_ = nullptr;
+    cairo_surface_finish(surface_);
+    return cairo_surface_status(surface_);
+  }
+
+ private:
+  cairo_surface_t* surface_;
+  cairo_t* cr_;
+};
+
 }  // namespace epure::render::test
